@@ -1,0 +1,95 @@
+//! `bilinear`: the colour filter's bilinear unit, four 8-bit channels, `F` blend-factor bits (the rtl has F = 8).
+//! The same unit serves the height-map pipeline later (seed 001, units 65–68).
+//!
+//! exact: `a = t00·(2^F − u) + t10·u`, `b = t01·(2^F − u) + t11·u` (U(8+F), no rounding), then
+//! `r = round_half_up((a·(2^F − v) + b·v), 2F)` (U8). The rtl computes the same value as `a·2^F + (b − a)·v`.
+
+use crate::fixed::round_half_up;
+use crate::unit::{Port, UnitModel};
+
+pub const F: u32 = 8;
+
+pub const INPUTS: &[Port] = &[
+    Port::u("t00_r", 8), Port::u("t00_g", 8), Port::u("t00_b", 8), Port::u("t00_a", 8),
+    Port::u("t10_r", 8), Port::u("t10_g", 8), Port::u("t10_b", 8), Port::u("t10_a", 8),
+    Port::u("t01_r", 8), Port::u("t01_g", 8), Port::u("t01_b", 8), Port::u("t01_a", 8),
+    Port::u("t11_r", 8), Port::u("t11_g", 8), Port::u("t11_b", 8), Port::u("t11_a", 8),
+    Port::u("ublend", 8), Port::u("vblend", 8),
+];
+pub const OUTPUTS: &[Port] = &[Port::u("out_r", 8), Port::u("out_g", 8), Port::u("out_b", 8), Port::u("out_a", 8)];
+
+/// One channel with `f` blend-factor bits; `u`, `v` in 0..2^f (weight of the second texel is u/2^f).
+pub fn exact_channel(t00: i64, t10: i64, t01: i64, t11: i64, u: i64, v: i64, f: u32) -> i64 {
+    let one = 1i64 << f;
+    let a = t00 * (one - u) + t10 * u; // U(8+f)
+    let b = t01 * (one - u) + t11 * u; // U(8+f)
+    round_half_up(a * (one - v) + b * v, 2 * f) // U(8+2f) → U8, round half up
+}
+
+pub fn ideal_channel(t00: f64, t10: f64, t01: f64, t11: f64, u: f64, v: f64) -> f64 {
+    let a = t00 * (1.0 - u) + t10 * u;
+    let b = t01 * (1.0 - u) + t11 * u;
+    a * (1.0 - v) + b * v
+}
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    (0..4).map(|c| exact_channel(i[c], i[4 + c], i[8 + c], i[12 + c], i[16], i[17], F)).collect()
+}
+
+fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
+}
+
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    let mut v = vec![];
+    for (t, u, w) in [(0, 0, 0), (255, 255, 255), (255, 0, 0), (255, 128, 128), (255, 255, 0), (0, 255, 255)] {
+        let mut x = vec![0; 18];
+        for c in 0..4 {
+            x[c] = t;
+            x[4 + c] = 255 - t;
+            x[8 + c] = 255 - t;
+            x[12 + c] = t;
+        }
+        x[16] = u;
+        x[17] = w;
+        v.push(x);
+    }
+    // all-255 texels at the largest blend factors must stay 255; half-way rounds up
+    v.push([vec![255; 16], vec![255, 255]].concat());
+    v.push([vec![0, 0, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1, 1], vec![128, 0]].concat());
+    v
+}
+
+pub static MODEL: UnitModel = UnitModel {
+    name: "bilinear",
+    inputs: INPUTS,
+    outputs: OUTPUTS,
+    exact: exact_ports,
+    random,
+    exhaustive: None,
+    hard_cases,
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exact_is_the_ideal_rounded_half_up_for_every_f() {
+        let mut worst = 0.0f64;
+        for f in [4u32, 6, 8] {
+            let one = 1i64 << f;
+            for (t00, t10, t01, t11) in [(0, 255, 17, 200), (255, 255, 255, 255), (3, 250, 128, 0)] {
+                for u in 0..one {
+                    for v in 0..one {
+                        let e = exact_channel(t00, t10, t01, t11, u, v, f) as f64;
+                        let i = ideal_channel(t00 as f64, t10 as f64, t01 as f64, t11 as f64,
+                            u as f64 / one as f64, v as f64 / one as f64);
+                        worst = worst.max((e - i).abs());
+                    }
+                }
+            }
+        }
+        assert!(worst <= 0.5, "{worst}");
+    }
+}

@@ -1,0 +1,64 @@
+//! `dot3`: N·L of two Sq1.10 unit vectors (S12 each) → the seed's X, a 10-bit fraction (Uq0.10, 1023 ≈ 1.0).
+//! exact: `d = Σ n_i·l_i` (S25, Q2.20), `truncate` 10 bits (floor) to Q.10, `saturate` to 0..1023: a light behind
+//! the bump gives 0; a dot of 1.0 (1024) reads as 1023, the seed's 1.0.
+
+use crate::fixed::{saturate, truncate};
+use crate::unit::{Port, UnitModel};
+
+pub const INPUTS: &[Port] = &[
+    Port::s("n_x", 12), Port::s("n_y", 12), Port::s("n_z", 12),
+    Port::s("l_x", 12), Port::s("l_y", 12), Port::s("l_z", 12),
+];
+pub const OUTPUTS: &[Port] = &[Port::u("x", 10)];
+
+pub fn exact(n: [i64; 3], l: [i64; 3]) -> i64 {
+    let d = n[0] * l[0] + n[1] * l[1] + n[2] * l[2]; // S25, Q2.20
+    saturate(truncate(d, 10), 0, 1023) // floor to Q.10, then 0..1023
+}
+
+/// The dot in reals, in X units, clamped the same way.
+pub fn ideal(n: [i64; 3], l: [i64; 3]) -> f64 {
+    let d = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) as f64 / 1024.0;
+    d.clamp(0.0, 1023.0)
+}
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    vec![exact([i[0], i[1], i[2]], [i[3], i[4], i[5]])]
+}
+
+fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    use rand::Rng;
+    if rng.gen_range(0..2) == 0 {
+        INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
+    } else {
+        // unit-length pairs, as the normalisers deliver them
+        let mut v = vec![];
+        for _ in 0..2 {
+            let d = crate::cart_encode::random_hemisphere(rng);
+            v.extend(d.map(|c| (c * 1024.0).round() as i64));
+        }
+        v
+    }
+}
+
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    vec![
+        vec![0, 1024, 0, 0, 1024, 0],          // N = L: 1024 → 1023
+        vec![0, 1024, 0, 0, -1024, 0],         // opposite: 0
+        vec![-2048, -2048, -2048, -2048, -2048, -2048], // the most negative: largest positive sum
+        vec![-2048, -2048, -2048, 2047, 2047, 2047],    // the most negative sum
+        vec![1024, 0, 0, 0, 1024, 0],          // light on the horizon of the normal: 0
+        vec![0, 0, 0, 0, 0, 0],                // zero light from the normaliser
+        vec![1, 0, 0, 1023, 0, 0], vec![1, 0, 0, 1024, 0, 0],
+    ]
+}
+
+pub static MODEL: UnitModel = UnitModel {
+    name: "dot3",
+    inputs: INPUTS,
+    outputs: OUTPUTS,
+    exact: exact_ports,
+    random,
+    exhaustive: None,
+    hard_cases,
+};

@@ -1,0 +1,155 @@
+//! `normalise`: the inverse-square-root normaliser every pipeline shares. Three S10 components in (any common
+//! scale: the bump vector's Q8.0, the light's Q8.2) → a unit vector in Sq1.10 (S12, 1024 = 1.0).
+//!
+//! exact (the rtl has `TABLE_BITS` = 10, `NEWTON` = 0):
+//! 1. `s = x² + y² + z²` (U20: at most 3·512² < 2^20);
+//! 2. `e` = the largest shift with `s·4^e < 2^20`, `sn = s·4^e` ∈ [2^18, 2^20) (mantissa m = sn/2^18 ∈ [1, 4));
+//! 3. `r = table[sn >> (20 − T)]`, the table holding `round(2^12/√m)` at each bin's midpoint (U13);
+//!    optionally refined by Newton steps `r ← r·(3 − m·r²)/2` (model only, to measure what a step buys);
+//! 4. `n = round_half_away(c·2^e · r, 11)` per component: c·2^e fits S11 because |c|·2^e ≤ √sn < 2^10.
+//!
+//! A zero vector (s = 0: opposite vertex lights interpolated through their midpoint) gives (0, 0, 0), so that the
+//! dot product, and the shade, are 0: no light direction, no light. Defined and tested.
+
+use crate::fixed::round_half_away;
+use crate::unit::{Port, UnitModel};
+
+pub const TABLE_BITS: u32 = 10;
+pub const NEWTON: u32 = 0;
+/// Fraction bits of the table entries (2^12/√m, m ∈ [1, 4) → 2049..4096, U13).
+pub const R_FRAC: u32 = 12;
+
+pub const INPUTS: &[Port] = &[Port::s("vec_x", 10), Port::s("vec_y", 10), Port::s("vec_z", 10)];
+pub const OUTPUTS: &[Port] = &[Port::s("norm_x", 12), Port::s("norm_y", 12), Port::s("norm_z", 12)];
+
+/// Table entry `idx` of a `t`-bit seed table: 2^12/√m at the midpoint of the bin (entries below 2^(t−2) unused, 0).
+pub fn table_entry(idx: u64, t: u32) -> u64 {
+    if idx < (1 << (t - 2)) {
+        return 0;
+    }
+    let m = (idx as f64 + 0.5) / (1u64 << (t - 2)) as f64; // bin midpoint, [1, 4)
+    ((1u64 << R_FRAC) as f64 / m.sqrt()).round() as u64
+}
+
+/// Leading-zero pairs of a nonzero U20: the largest e with s·4^e < 2^20.
+pub fn norm_shift(s: u64) -> u32 {
+    let mut e = 0;
+    while s << (2 * (e + 1)) < (1 << 20) {
+        e += 1;
+    }
+    e
+}
+
+pub fn exact(v: [i64; 3]) -> [i64; 3] {
+    exact_with(v, TABLE_BITS, NEWTON)
+}
+
+pub fn exact_with(v: [i64; 3], t: u32, newton: u32) -> [i64; 3] {
+    let s = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) as u64; // U20
+    if s == 0 {
+        return [0, 0, 0];
+    }
+    let e = norm_shift(s);
+    let sn = s << (2 * e); // U20, [2^18, 2^20)
+    let mut r = table_entry(sn >> (20 - t), t) as i64; // U13, Q1.12
+    for _ in 0..newton {
+        let m = (sn >> 8) as i64; // Q2.10, truncated
+        let t2 = (m * r * r) >> 10; // Q.24, truncated
+        r = (r * (3 * (1 << 24) - t2)) >> 25; // Q1.12, truncated
+    }
+    v.map(|c| round_half_away((c << e) * r, 11)) // S11 × U13 → S24 → Sq1.10
+}
+
+/// The unit vector in reals, in Sq1.10 units.
+pub fn ideal(v: [i64; 3]) -> [f64; 3] {
+    let l = ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) as f64).sqrt();
+    if l == 0.0 {
+        return [0.0; 3];
+    }
+    v.map(|c| 1024.0 * c as f64 / l)
+}
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    exact([i[0], i[1], i[2]]).to_vec()
+}
+
+fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    use rand::Rng;
+    // scale spread over every exponent: short vectors are the hard ones
+    let bits = rng.gen_range(1..=10u32);
+    (0..3).map(|_| rng.gen_range(-(1i64 << (bits - 1))..(1i64 << (bits - 1)))).collect()
+}
+
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    vec![
+        vec![0, 0, 0], // zero length
+        vec![-512, -512, -512], // the most negative everywhere, the largest s
+        vec![511, 511, 511],
+        vec![-512, 0, 0], vec![511, 0, 0], vec![0, 1, 0], vec![0, -1, 0], vec![1, 1, 1], vec![-1, 0, 0],
+        vec![254, 1, 0], vec![0, 255, 0], vec![127, 1, 127], // decoded bumps: horizon, pole, guarded edge
+        vec![2, 254, 0], vec![1, 127, 0], // the seed's minimal step near the pole
+        vec![85, 85, 85], // the shortest L1-scaled bump, |v| = 1/3 of its L1 length
+    ]
+}
+
+pub static MODEL: UnitModel = UnitModel {
+    name: "normalise",
+    inputs: INPUTS,
+    outputs: OUTPUTS,
+    exact: exact_ports,
+    random,
+    exhaustive: None,
+    hard_cases,
+};
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_mantissa_lands_in_its_range_for_every_length() {
+        for s in 1..(1u64 << 20) {
+            let sn = s << (2 * norm_shift(s));
+            assert!((1 << 18..1 << 20).contains(&sn), "{s}");
+        }
+    }
+
+    #[test]
+    fn shifted_components_fit_s11() {
+        for x in (-512i64..512).step_by(3) {
+            for y in [-512i64, -3, 0, 1, 77, 511] {
+                let s = (x * x + y * y) as u64;
+                if s == 0 {
+                    continue;
+                }
+                let e = norm_shift(s);
+                assert!((-1024..1024).contains(&(x << e)) && (-1024..1024).contains(&(y << e)), "{x} {y}");
+            }
+        }
+    }
+
+    #[test]
+    fn zero_vector_gives_zero() {
+        assert_eq!(exact([0, 0, 0]), [0, 0, 0]);
+    }
+
+    #[test]
+    fn a_newton_step_beats_the_bare_table() {
+        let err = |t, n| {
+            let mut worst = 0.0f64;
+            for x in (-512i64..512).step_by(5) {
+                for y in (-512i64..512).step_by(37) {
+                    let v = [x, y, 100];
+                    let e = exact_with(v, t, n);
+                    let i = ideal(v);
+                    for c in 0..3 {
+                        worst = worst.max((e[c] as f64 - i[c]).abs());
+                    }
+                }
+            }
+            worst
+        };
+        assert!(err(6, 1) < err(6, 0));
+        assert!(err(10, 0) < err(6, 0));
+    }
+}
