@@ -1,1 +1,10 @@
-fn main(){}
+//! `bumprtl`: the command line over the bumprtl crates. Every failure is one line on stderr and a non-zero exit.
+
+mod cli;
+
+fn main() {
+    if let Err(e) = cli::main() {
+        eprintln!("bumprtl: {e}");
+        std::process::exit(1);
+    }
+}

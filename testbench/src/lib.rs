@@ -1,1 +1,190 @@
+//! This is the bumprtl testbench crate: one driver, one monitor and one checker for every streaming unit, run
+//! against rust-hdl's simulation and against the exported Verilog under Verilator and Icarus.
+//!
+//! - driver: `slots` turns model vectors into clock slots, with bubbles (idle cycles) or back to back;
+//! - monitor: `rtl::stream::Collected` (rust-hdl) or the external harness's output: what left the unit, and when;
+//! - checker: `check` compares every output with `exact()` and every latency with the unit's stated one.
 
+use rand::{Rng, SeedableRng};
+use rtl::stream::{Collected, Runner};
+use rtl::StreamUnit;
+use std::path::PathBuf;
+use synth::cosim::{self, Simulator};
+use vectors::fixed::{from_pattern, to_pattern};
+use vectors::UnitModel;
+
+/// How the driver spaces the vectors.
+#[derive(Clone, Copy, Debug)]
+pub enum Bubbles {
+    /// one vector every clock
+    BackToBack,
+    /// an idle cycle before a vector with probability 1/n, and occasional bursts of idles
+    Random { one_in: u32, seed: u64 },
+}
+
+/// The driver: model vectors → clock slots of bit patterns.
+pub fn slots(model: &UnitModel, inputs: &[Vec<i64>], bubbles: Bubbles) -> Vec<Option<Vec<u64>>> {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(match bubbles {
+        Bubbles::Random { seed, .. } => seed,
+        Bubbles::BackToBack => 0,
+    });
+    let mut s = Vec::with_capacity(inputs.len() * 5 / 4);
+    for v in inputs {
+        if let Bubbles::Random { one_in, .. } = bubbles {
+            if rng.gen_range(0..one_in) == 0 {
+                for _ in 0..rng.gen_range(1..4) {
+                    s.push(None);
+                }
+            }
+        }
+        s.push(Some(v.iter().zip(model.inputs).map(|(&x, p)| to_pattern(x, p.bits)).collect()));
+    }
+    s
+}
+
+/// What the checker found.
+#[derive(Debug, Default)]
+pub struct Report {
+    pub vectors: usize,
+    pub outputs: usize,
+    pub mismatches: usize,
+    pub latency_errors: usize,
+    pub first: Vec<String>,
+}
+
+impl Report {
+    pub fn assert_clean(&self, what: &str) {
+        assert!(
+            self.mismatches == 0 && self.latency_errors == 0 && self.outputs == self.vectors,
+            "{what}: {} vectors, {} outputs, {} mismatches, {} latency errors; first: {:#?}",
+            self.vectors, self.outputs, self.mismatches, self.latency_errors, self.first
+        );
+    }
+}
+
+/// The checker: every output against `exact()`, in order, and its cycle against the input's slot + latency − 1.
+pub fn check(model: &UnitModel, latency: usize, inputs: &[Vec<i64>], slots: &[Option<Vec<u64>>], got: &Collected) -> Report {
+    let issued: Vec<usize> = slots.iter().enumerate().filter(|(_, s)| s.is_some()).map(|(k, _)| k).collect();
+    let mut r = Report { vectors: inputs.len(), outputs: got.outputs.len(), ..Default::default() };
+    for (k, inp) in inputs.iter().enumerate() {
+        let want = (model.exact)(inp);
+        let Some(out) = got.outputs.get(k) else { break };
+        let have: Vec<i64> = out.iter().zip(model.outputs).map(|(&p, port)| from_pattern(p, port.bits, port.signed)).collect();
+        if have != want {
+            r.mismatches += 1;
+            if r.first.len() < 5 {
+                r.first.push(format!("inputs {inp:?}: rtl {have:?}, model {want:?}"));
+            }
+        }
+        if got.cycles[k] as usize != issued[k] + latency - 1 {
+            r.latency_errors += 1;
+            if r.first.len() < 5 {
+                r.first.push(format!("vector {k} issued in slot {} came out in cycle {}", issued[k], got.cycles[k]));
+            }
+        }
+    }
+    r
+}
+
+/// The rtl port list must be the model's, name for name and width for width.
+pub fn assert_ports_agree<U: StreamUnit>(model: &UnitModel) {
+    let m: Vec<(&str, usize)> = model.inputs.iter().map(|p| (p.name, p.bits as usize)).collect();
+    assert_eq!(U::INPUTS, m.as_slice(), "{} inputs", model.name);
+    let m: Vec<(&str, usize)> = model.outputs.iter().map(|p| (p.name, p.bits as usize)).collect();
+    assert_eq!(U::OUTPUTS, m.as_slice(), "{} outputs", model.name);
+}
+
+/// rust-hdl's simulation of the unit on these vectors.
+pub fn rust_hdl<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], bubbles: Bubbles) -> Report {
+    let s = slots(model, inputs, bubbles);
+    let got = Runner::<U>::new().run(s.iter().cloned());
+    check(model, U::LATENCY, inputs, &s, &got)
+}
+
+/// Where co-simulation builds live: under the workspace's target directory.
+pub fn work_dir(sim: &str, unit: &str) -> PathBuf {
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("target"));
+    target.join("cosim").join(sim).join(unit)
+}
+
+/// The exported Verilog of the unit under Verilator or Icarus on these vectors.
+pub fn external<U: StreamUnit>(sim: Simulator, model: &UnitModel, inputs: &[Vec<i64>], bubbles: Bubbles) -> Report {
+    let name = match sim {
+        Simulator::Verilator => "verilator",
+        Simulator::Icarus => "icarus",
+    };
+    let built = cosim::build::<U>(sim, &work_dir(name, U::NAME)).unwrap_or_else(|e| panic!("{e}"));
+    let s = slots(model, inputs, bubbles);
+    let got = built.run(&s).unwrap_or_else(|e| panic!("{e}"));
+    check(model, U::LATENCY, inputs, &s, &got)
+}
+
+/// The committed golden file of a unit, parsed; and whether the model still reproduces it byte for byte.
+pub fn golden(model: &UnitModel) -> (Vec<Vec<i64>>, bool) {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors/data").join(format!("{}.csv", model.name));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let file = vectors::csv::parse(model, &text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let n_in = model.inputs.len();
+    let inputs: Vec<Vec<i64>> = file.rows.iter().map(|r| r[..n_in].to_vec()).collect();
+    let command = text.lines().next().unwrap_or("").trim_start_matches("# generated by `").trim_end_matches("`, do not edit").to_string();
+    let again = vectors::csv::render(model, &inputs, &command);
+    (inputs, again == text)
+}
+
+/// Lint the unit's Verilog; returns the design warnings (there must be none).
+pub fn lint<U: StreamUnit>() -> Vec<String> {
+    let dir = work_dir("lint", U::NAME);
+    let v = synth::export::<U>();
+    let f = v.write(&dir).unwrap_or_else(|e| panic!("{e}"));
+    synth::lint::lint(&dir, &f, U::NAME).unwrap_or_else(|e| panic!("{e}")).design
+}
+
+/// The standard tests every unit gets: golden vectors, three-way identity, bubbles, lint.
+#[macro_export]
+macro_rules! unit_tests {
+    ($unit:ident, $block:ty, $model:expr) => {
+        mod standard {
+            use super::*;
+            use synth::cosim::Simulator;
+            use $crate::{Bubbles, assert_ports_agree, external, golden, lint, rust_hdl};
+
+            #[test]
+            fn ports_agree_with_the_model() {
+                assert_ports_agree::<$block>(&$model);
+            }
+
+            #[test]
+            fn matches_vectors() {
+                let (inputs, reproduced) = golden(&$model);
+                assert!(reproduced, "the model no longer reproduces vectors/data/{}.csv: regenerate it with `bumprtl vectors {}` if the change is meant", $model.name, $model.name);
+                rust_hdl::<$block>(&$model, &inputs, Bubbles::BackToBack).assert_clean("rust-hdl, golden vectors");
+            }
+
+            #[test]
+            fn hard_cases_with_bubbles() {
+                let inputs = ($model.hard_cases)();
+                rust_hdl::<$block>(&$model, &inputs, Bubbles::Random { one_in: 2, seed: 7 }).assert_clean("rust-hdl, hard cases, bubbles");
+            }
+
+            #[test]
+            fn verilog_lints() {
+                let design = lint::<$block>();
+                assert!(design.is_empty(), "design warnings:\n{}", design.join("\n"));
+            }
+
+            #[test]
+            fn verilator_matches_model() {
+                let (inputs, _) = golden(&$model);
+                external::<$block>(Simulator::Verilator, &$model, &inputs, Bubbles::Random { one_in: 5, seed: 3 }).assert_clean("verilator");
+            }
+
+            #[test]
+            fn icarus_matches_model() {
+                let (inputs, _) = golden(&$model);
+                external::<$block>(Simulator::Icarus, &$model, &inputs, Bubbles::Random { one_in: 5, seed: 4 }).assert_clean("icarus");
+            }
+        }
+    };
+}

@@ -1,0 +1,162 @@
+//! `gloss`: the seed's quadratic glossiness, `P = L + ((C·(Q − L)) >> 8)` with `L = max(0, 1023 − (k·(1023 − X)
+//! >> 3))`, `k = C + 8`, `Q = (L·L) >> 10`. Since Q ≤ L the signed step is done on the magnitude:
+//! `(C·(Q − L)) >> 8` (arithmetic, floor) = `−((C·(L − Q) + 255) >> 8)`, so every signal here is unsigned.
+//! Latency 8: k·t, the L clamp, L·L, L − Q, C·(L − Q), the ceiling shift and the final subtract each get a stage.
+
+use crate::stream_unit;
+use rust_hdl::prelude::*;
+
+type Uq0_10 = Bits<10>; // X, L, Q, P: 10-bit fractions, 1023 ≈ 1.0
+type Uq6_3 = Bits<9>; // k = C + 8, 3 fraction bits
+type U8 = Bits<8>;
+
+#[derive(LogicBlock)]
+pub struct Gloss {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub conc: Signal<In, U8>,
+    pub x: Signal<In, Uq0_10>,
+    pub valid_out: Signal<Out, Bit>,
+    pub p: Signal<Out, Uq0_10>,
+    // stage 1: k = C + 8, t = 1023 − X
+    s1_k: DFF<Uq6_3>,
+    s1_t: DFF<Uq0_10>,
+    s1_c: DFF<U8>,
+    // stage 2: m = k·t (U19)
+    s2_m: DFF<Bits<19>>,
+    s2_c: DFF<U8>,
+    // stage 3: L = max(0, 1023 − (m >> 3))
+    s3_l: DFF<Uq0_10>,
+    s3_c: DFF<U8>,
+    // stage 4: L·L (U20)
+    s4_ll: DFF<Bits<20>>,
+    s4_l: DFF<Uq0_10>,
+    s4_c: DFF<U8>,
+    // stage 5: L − Q, Q = (L·L) >> 10
+    s5_d: DFF<Uq0_10>,
+    s5_l: DFF<Uq0_10>,
+    s5_c: DFF<U8>,
+    // stage 6: C·(L − Q) (U18)
+    s6_prod: DFF<Bits<18>>,
+    s6_l: DFF<Uq0_10>,
+    // stage 7: ceil((C·(L − Q)) / 256)
+    s7_q: DFF<Uq0_10>,
+    s7_l: DFF<Uq0_10>,
+    // stage 8: P = L − that
+    s8_p: DFF<Uq0_10>,
+    valid: [DFF<Bit>; 8],
+    w_k: Signal<Local, Bits<16>>,
+    w_t: Signal<Local, Bits<16>>,
+    w_m: Signal<Local, Bits<32>>,
+    m3: Signal<Local, Bits<16>>,
+    m3_lo: Signal<Local, Uq0_10>,
+    w_l: Signal<Local, Bits<16>>,
+    w_ll: Signal<Local, Bits<32>>,
+    w_c: Signal<Local, Bits<16>>,
+    w_d: Signal<Local, Bits<16>>,
+    w_prod: Signal<Local, Bits<32>>,
+    ceil_sum: Signal<Local, Bits<18>>,
+}
+
+impl Default for Gloss {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            valid_in: Default::default(),
+            conc: Default::default(),
+            x: Default::default(),
+            valid_out: Default::default(),
+            p: Default::default(),
+            s1_k: Default::default(),
+            s1_t: Default::default(),
+            s1_c: Default::default(),
+            s2_m: Default::default(),
+            s2_c: Default::default(),
+            s3_l: Default::default(),
+            s3_c: Default::default(),
+            s4_ll: Default::default(),
+            s4_l: Default::default(),
+            s4_c: Default::default(),
+            s5_d: Default::default(),
+            s5_l: Default::default(),
+            s5_c: Default::default(),
+            s6_prod: Default::default(),
+            s6_l: Default::default(),
+            s7_q: Default::default(),
+            s7_l: Default::default(),
+            s8_p: Default::default(),
+            valid: Default::default(),
+            w_k: Default::default(),
+            w_t: Default::default(),
+            w_m: Default::default(),
+            m3: Default::default(),
+            m3_lo: Default::default(),
+            w_l: Default::default(),
+            w_ll: Default::default(),
+            w_c: Default::default(),
+            w_d: Default::default(),
+            w_prod: Default::default(),
+            ceil_sum: Default::default(),
+        }
+    }
+}
+
+impl Logic for Gloss {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s1_k, s1_t, s1_c, s2_m, s2_c, s3_l, s3_c, s4_ll, s4_l, s4_c, s5_d, s5_l, s5_c,
+            s6_prod, s6_l, s7_q, s7_l, s8_p);
+        for i in 0..8 {
+            self.valid[i].clock.next = self.clock.val();
+        }
+        self.valid[0].d.next = self.valid_in.val();
+        for i in 1..8 {
+            self.valid[i].d.next = self.valid[i - 1].q.val();
+        }
+        // stage 1
+        self.s1_k.d.next = bit_cast::<9, 8>(self.conc.val()) + 8; // U9, no overflow (≤ 263)
+        self.s1_t.d.next = 1023 - self.x.val(); // U10, X ≤ 1023
+        self.s1_c.d.next = self.conc.val();
+        // stage 2: k·t, 9 × 10 bits → 19 bits
+        self.w_k.next = bit_cast::<16, 9>(self.s1_k.q.val());
+        self.w_t.next = bit_cast::<16, 10>(self.s1_t.q.val());
+        self.w_m.next = self.w_k.val() * self.w_t.val();
+        self.s2_m.d.next = self.w_m.val().get_bits::<19>(0); // ≤ 263·1023 < 2^19: exact
+        self.s2_c.d.next = self.s1_c.q.val();
+        // stage 3: m >> 3 (floor), then 1023 − that, saturated at 0
+        self.m3.next = self.s2_m.q.val().get_bits::<16>(3);
+        self.m3_lo.next = self.m3.val().get_bits::<10>(0);
+        if self.m3.val() > 1023 {
+            self.s3_l.d.next = 0.into();
+        } else {
+            self.s3_l.d.next = 1023 - self.m3_lo.val();
+        }
+        self.s3_c.d.next = self.s2_c.q.val();
+        // stage 4: L·L, 10 × 10 bits → 20 bits
+        self.w_l.next = bit_cast::<16, 10>(self.s3_l.q.val());
+        self.w_ll.next = self.w_l.val() * self.w_l.val();
+        self.s4_ll.d.next = self.w_ll.val().get_bits::<20>(0);
+        self.s4_l.d.next = self.s3_l.q.val();
+        self.s4_c.d.next = self.s3_c.q.val();
+        // stage 5: d = L − Q, Q = (L·L) >> 10 (floor); Q ≤ L so d ≥ 0
+        self.s5_d.d.next = self.s4_l.q.val() - self.s4_ll.q.val().get_bits::<10>(10);
+        self.s5_l.d.next = self.s4_l.q.val();
+        self.s5_c.d.next = self.s4_c.q.val();
+        // stage 6: C·d, 8 × 10 bits → 18 bits
+        self.w_c.next = bit_cast::<16, 8>(self.s5_c.q.val());
+        self.w_d.next = bit_cast::<16, 10>(self.s5_d.q.val());
+        self.w_prod.next = self.w_c.val() * self.w_d.val();
+        self.s6_prod.d.next = self.w_prod.val().get_bits::<18>(0);
+        self.s6_l.d.next = self.s5_l.q.val();
+        // stage 7: ceil(C·d / 256) = (C·d + 255) >> 8, which is −((C·(Q − L)) >> 8)
+        self.ceil_sum.next = self.s6_prod.q.val() + 255; // ≤ 255·1023 + 255 < 2^18
+        self.s7_q.d.next = self.ceil_sum.val().get_bits::<10>(8);
+        self.s7_l.d.next = self.s6_l.q.val();
+        // stage 8: P = L − ceil(...)
+        self.s8_p.d.next = self.s7_l.q.val() - self.s7_q.q.val();
+        self.p.next = self.s8_p.q.val();
+        self.valid_out.next = self.valid[7].q.val();
+    }
+}
+
+stream_unit!(Gloss, "gloss", 8, inputs: [conc: 8, x: 10], outputs: [p: 10]);

@@ -1,0 +1,157 @@
+//! The streaming interface every unit block implements, so that one driver, one monitor and one Verilog harness
+//! serve them all. Values cross it as bit patterns (`u64`, two's complement for signed ports).
+
+use rust_hdl::prelude::*;
+
+pub trait StreamUnit: Block + Sized {
+    /// The unit's name, the same in every crate.
+    const NAME: &'static str;
+    /// Clock edges from an input vector to its output vector.
+    const LATENCY: usize;
+    /// Data input ports (name, width) in the order the model lists them.
+    const INPUTS: &'static [(&'static str, usize)];
+    /// Data output ports (name, width).
+    const OUTPUTS: &'static [(&'static str, usize)];
+    fn build() -> Self;
+    fn set_clock(&mut self, level: bool);
+    fn set_inputs(&mut self, valid: bool, values: &[u64]);
+    fn valid_out(&self) -> bool;
+    fn outputs(&self) -> Vec<u64>;
+}
+
+/// Implements `StreamUnit` from the block's port fields, so that the lists cannot drift from the struct.
+#[macro_export]
+macro_rules! stream_unit {
+    ($t:ty, $name:literal, $latency:expr, inputs: [$($i:ident : $iw:literal),* $(,)?], outputs: [$($o:ident : $ow:literal),* $(,)?]) => {
+        impl $crate::stream::StreamUnit for $t {
+            const NAME: &'static str = $name;
+            const LATENCY: usize = $latency;
+            const INPUTS: &'static [(&'static str, usize)] = &[$((stringify!($i), $iw)),*];
+            const OUTPUTS: &'static [(&'static str, usize)] = &[$((stringify!($o), $ow)),*];
+            fn build() -> Self {
+                <$t>::default()
+            }
+            fn set_clock(&mut self, level: bool) {
+                self.clock.next = Clock { clk: level };
+            }
+            #[allow(unused_assignments)]
+            fn set_inputs(&mut self, valid: bool, values: &[u64]) {
+                self.valid_in.next = valid;
+                let mut k = 0;
+                $( self.$i.next = Bits::<$iw>::from(values[k]); k += 1; )*
+                debug_assert_eq!(k, values.len());
+            }
+            fn valid_out(&self) -> bool {
+                self.valid_out.val()
+            }
+            fn outputs(&self) -> Vec<u64> {
+                vec![$( self.$o.val().to_u64() ),*]
+            }
+        }
+    };
+}
+
+/// One clocked run of a unit over a stream of (valid, values) slots: a plain loop calling rust-hdl's `simulate`
+/// (no threads), optionally tracing every signal to a VCD. Inputs are applied with the clock low, the rising edge
+/// is then simulated and the outputs sampled, so an input in slot `c` leaves in slot `c + LATENCY − 1`.
+pub struct Runner<U: StreamUnit> {
+    pub uut: U,
+    cycle: u64,
+    vcd: Option<rust_hdl::core::vcd_probe::VCDProbe<Box<dyn std::io::Write>>>,
+}
+
+/// What left the unit: the cycle each output vector was sampled in, and its values.
+#[derive(Clone, Debug, Default)]
+pub struct Collected {
+    pub cycles: Vec<u64>,
+    pub outputs: Vec<Vec<u64>>,
+}
+
+impl<U: StreamUnit> Runner<U> {
+    pub fn new() -> Self {
+        Self::with_vcd(None)
+    }
+
+    /// A runner that writes a VCD of every signal, one timestamp per clock phase (a 10 ns clock).
+    pub fn with_vcd(out: Option<Box<dyn std::io::Write>>) -> Self {
+        let mut uut = U::build();
+        uut.connect_all();
+        let vcd = out.map(|w| write_vcd_header(w, &uut));
+        let mut r = Runner { uut, cycle: 0, vcd };
+        r.uut.set_inputs(false, &vec![0; U::INPUTS.len()]);
+        r.uut.set_clock(false);
+        r.settle();
+        if let Some(v) = r.vcd.take() {
+            r.vcd = Some(write_vcd_dump(v, &r.uut));
+        }
+        r
+    }
+
+    fn settle(&mut self) {
+        assert!(simulate(&mut self.uut, 10_000), "{}: logic did not settle", U::NAME);
+    }
+
+    fn trace(&mut self, t: u64) {
+        if let Some(mut v) = self.vcd.take() {
+            v.timestamp(t).expect("VCD write");
+            self.vcd = Some(write_vcd_change(v, &self.uut));
+        }
+    }
+
+    /// One clock: apply a slot with the clock low, raise it, and return the output vector if one is valid.
+    pub fn step(&mut self, valid: bool, values: &[u64]) -> Option<Vec<u64>> {
+        self.uut.set_inputs(valid, values);
+        self.uut.set_clock(false);
+        self.settle();
+        self.trace(self.cycle * 10_000);
+        self.uut.set_clock(true);
+        self.settle();
+        self.trace(self.cycle * 10_000 + 5_000);
+        self.cycle += 1;
+        if self.uut.valid_out() {
+            Some(self.uut.outputs())
+        } else {
+            None
+        }
+    }
+
+    /// Feed a whole stream of slots (None = a bubble), then flush the pipeline; collect every valid output.
+    pub fn run(&mut self, slots: impl IntoIterator<Item = Option<Vec<u64>>>) -> Collected {
+        let zeros = vec![0u64; U::INPUTS.len()];
+        let mut c = Collected::default();
+        for s in slots {
+            let out = match s {
+                Some(v) => self.step(true, &v),
+                None => self.step(false, &zeros),
+            };
+            if let Some(o) = out {
+                c.cycles.push(self.cycle - 1);
+                c.outputs.push(o);
+            }
+        }
+        for _ in 0..U::LATENCY + 1 {
+            if let Some(o) = self.step(false, &zeros) {
+                c.cycles.push(self.cycle - 1);
+                c.outputs.push(o);
+            }
+        }
+        c
+    }
+
+    pub fn cycles(&self) -> u64 {
+        self.cycle
+    }
+
+    /// Close the VCD, flushing it.
+    pub fn finish(mut self) {
+        if let Some(v) = self.vcd.take() {
+            drop(v);
+        }
+    }
+}
+
+impl<U: StreamUnit> Default for Runner<U> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
