@@ -1,1 +1,102 @@
-//! placeholder
+//! `blend`: the shade as alpha, combined with colours. `mode` 0 modulates, `out = round(src·α/255)`; mode 1
+//! alpha-lerps, `out = round((src·α + dst·(255 − α))/255)`. The /255 is `t = num + 128; (t + (t >> 8)) >> 8`.
+//! Latency 4: weights; products; the sum + 128; the /255.
+
+use crate::stream_unit;
+use rust_hdl::prelude::*;
+
+type U8 = Bits<8>;
+type U16 = Bits<16>;
+
+#[derive(LogicBlock, Default)]
+pub struct Blend {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub alpha: Signal<In, U8>,
+    pub mode: Signal<In, Bits<1>>,
+    pub src_r: Signal<In, U8>,
+    pub src_g: Signal<In, U8>,
+    pub src_b: Signal<In, U8>,
+    pub dst_r: Signal<In, U8>,
+    pub dst_g: Signal<In, U8>,
+    pub dst_b: Signal<In, U8>,
+    pub valid_out: Signal<Out, Bit>,
+    pub out_r: Signal<Out, U8>,
+    pub out_g: Signal<Out, U8>,
+    pub out_b: Signal<Out, U8>,
+    // stage 1: the two weights, α and (mode ? 255 − α : 0), and the colours, widened to the multiplier's 16 bits
+    s1_wa: DFF<U16>,
+    s1_wd: DFF<U16>,
+    s1_src: [DFF<U16>; 3],
+    s1_dst: [DFF<U16>; 3],
+    // stage 2: src·α, dst·(255 − α), each ≤ 255·255 (U16)
+    s2_ps: [DFF<U16>; 3],
+    s2_pd: [DFF<U16>; 3],
+    // stage 3: t = src·α + dst·(255 − α) + 128 ≤ 65,153 (U16)
+    s3_t: [DFF<U16>; 3],
+    // stage 4: (t + (t >> 8)) >> 8, truncating: U8
+    s4_out: [DFF<U8>; 3],
+    valid: [DFF<Bit>; 4],
+    inv_alpha: Signal<Local, U8>,
+    w_ps: [Signal<Local, Bits<32>>; 3],
+    w_pd: [Signal<Local, Bits<32>>; 3],
+    w_sum: [Signal<Local, U16>; 3],
+    w_th: [Signal<Local, U16>; 3],
+    w_u: [Signal<Local, U16>; 3],
+}
+
+impl Logic for Blend {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s1_wa, s1_wd);
+        for i in 0..4 {
+            self.valid[i].clock.next = self.clock.val();
+        }
+        self.valid[0].d.next = self.valid_in.val();
+        for i in 1..4 {
+            self.valid[i].d.next = self.valid[i - 1].q.val();
+        }
+        // stage 1
+        self.inv_alpha.next = 255 - self.alpha.val();
+        self.s1_wa.d.next = bit_cast::<16, 8>(self.alpha.val());
+        if self.mode.val().any() {
+            self.s1_wd.d.next = bit_cast::<16, 8>(self.inv_alpha.val());
+        } else {
+            self.s1_wd.d.next = 0.into();
+        }
+        self.s1_src[0].d.next = bit_cast::<16, 8>(self.src_r.val());
+        self.s1_src[1].d.next = bit_cast::<16, 8>(self.src_g.val());
+        self.s1_src[2].d.next = bit_cast::<16, 8>(self.src_b.val());
+        self.s1_dst[0].d.next = bit_cast::<16, 8>(self.dst_r.val());
+        self.s1_dst[1].d.next = bit_cast::<16, 8>(self.dst_g.val());
+        self.s1_dst[2].d.next = bit_cast::<16, 8>(self.dst_b.val());
+        for i in 0..3 {
+            self.s1_src[i].clock.next = self.clock.val();
+            self.s1_dst[i].clock.next = self.clock.val();
+            self.s2_ps[i].clock.next = self.clock.val();
+            self.s2_pd[i].clock.next = self.clock.val();
+            self.s3_t[i].clock.next = self.clock.val();
+            self.s4_out[i].clock.next = self.clock.val();
+            // stage 2
+            self.w_ps[i].next = self.s1_src[i].q.val() * self.s1_wa.q.val();
+            self.w_pd[i].next = self.s1_dst[i].q.val() * self.s1_wd.q.val();
+            self.s2_ps[i].d.next = self.w_ps[i].val().get_bits::<16>(0);
+            self.s2_pd[i].d.next = self.w_pd[i].val().get_bits::<16>(0);
+            // stage 3
+            self.w_sum[i].next = self.s2_ps[i].q.val() + self.s2_pd[i].q.val();
+            self.s3_t[i].d.next = self.w_sum[i].val() + 128;
+            // stage 4
+            self.w_th[i].next = self.s3_t[i].q.val() >> 8;
+            self.w_u[i].next = self.s3_t[i].q.val() + self.w_th[i].val(); // ≤ 65,407: no wrap
+            self.s4_out[i].d.next = self.w_u[i].val().get_bits::<8>(8);
+        }
+        self.out_r.next = self.s4_out[0].q.val();
+        self.out_g.next = self.s4_out[1].q.val();
+        self.out_b.next = self.s4_out[2].q.val();
+        self.valid_out.next = self.valid[3].q.val();
+    }
+}
+
+stream_unit!(Blend, "blend", 4,
+    inputs: [alpha: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
+    outputs: [out_r: 8, out_g: 8, out_b: 8]);

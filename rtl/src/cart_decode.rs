@@ -1,1 +1,135 @@
-//! placeholder
+//! `cart_decode`: offset-8-bit TexelX, TexelZ → BumpX, BumpZ (INT9), BumpY (UINT8), with the guard documented in
+//! `vectors::cart_decode`: texels saturate at 254; outside the diamond, `|BumpX| = 127 + ax − az`,
+//! `|BumpZ| = 127 + az − ax`, `BumpY = 1`. Latency 4: |T − 127|; ax + az and ax − az; the guard mux; the signs.
+
+use crate::stream_unit;
+use rust_hdl::prelude::*;
+
+type U8 = Bits<8>;
+type Sq8_0 = Bits<9>; // INT9, two's complement
+
+#[derive(LogicBlock, Default)]
+pub struct CartDecode {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub texel_x: Signal<In, U8>,
+    pub texel_z: Signal<In, U8>,
+    pub valid_out: Signal<Out, Bit>,
+    pub bump_x: Signal<Out, Sq8_0>,
+    pub bump_y: Signal<Out, U8>,
+    pub bump_z: Signal<Out, Sq8_0>,
+    // stage 1: ax = |sat(T) − 127| (U7 in U8), sx = sat(T) < 127
+    s1_ax: DFF<U8>,
+    s1_az: DFF<U8>,
+    s1_sx: DFF<Bit>,
+    s1_sz: DFF<Bit>,
+    // stage 2: ax + az (U8), ax − az (S9)
+    s2_sum: DFF<U8>,
+    s2_dxz: DFF<Sq8_0>,
+    s2_ax: DFF<U8>,
+    s2_az: DFF<U8>,
+    s2_sx: DFF<Bit>,
+    s2_sz: DFF<Bit>,
+    // stage 3: magnitudes and BumpY, guarded or not
+    s3_mx: DFF<U8>,
+    s3_mz: DFF<U8>,
+    s3_by: DFF<U8>,
+    s3_sx: DFF<Bit>,
+    s3_sz: DFF<Bit>,
+    // stage 4: signs applied
+    s4_bx: DFF<Sq8_0>,
+    s4_by: DFF<U8>,
+    s4_bz: DFF<Sq8_0>,
+    valid: [DFF<Bit>; 4],
+    sat_x: Signal<Local, U8>,
+    sat_z: Signal<Local, U8>,
+    w_ax: Signal<Local, Sq8_0>,
+    w_az: Signal<Local, Sq8_0>,
+    twice_sum: Signal<Local, U8>,
+    g_mx: Signal<Local, Sq8_0>,
+    g_mz: Signal<Local, Sq8_0>,
+    w_mx: Signal<Local, Sq8_0>,
+    w_mz: Signal<Local, Sq8_0>,
+}
+
+impl Logic for CartDecode {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s1_ax, s1_az, s1_sx, s1_sz, s2_sum, s2_dxz, s2_ax, s2_az, s2_sx, s2_sz, s3_mx, s3_mz,
+            s3_by, s3_sx, s3_sz, s4_bx, s4_by, s4_bz);
+        for i in 0..4 {
+            self.valid[i].clock.next = self.clock.val();
+        }
+        self.valid[0].d.next = self.valid_in.val();
+        for i in 1..4 {
+            self.valid[i].d.next = self.valid[i - 1].q.val();
+        }
+        // stage 1: saturate 255 → 254, then the distance from 127 and its side
+        self.sat_x.next = self.texel_x.val();
+        if self.texel_x.val() > 254 {
+            self.sat_x.next = 254.into();
+        }
+        self.sat_z.next = self.texel_z.val();
+        if self.texel_z.val() > 254 {
+            self.sat_z.next = 254.into();
+        }
+        if self.sat_x.val() < 127 {
+            self.s1_ax.d.next = 127 - self.sat_x.val();
+            self.s1_sx.d.next = true;
+        } else {
+            self.s1_ax.d.next = self.sat_x.val() - 127;
+            self.s1_sx.d.next = false;
+        }
+        if self.sat_z.val() < 127 {
+            self.s1_az.d.next = 127 - self.sat_z.val();
+            self.s1_sz.d.next = true;
+        } else {
+            self.s1_az.d.next = self.sat_z.val() - 127;
+            self.s1_sz.d.next = false;
+        }
+        // stage 2: ax + az ≤ 254 (U8); ax − az ∈ −127..127 (S9)
+        self.s2_sum.d.next = self.s1_ax.q.val() + self.s1_az.q.val();
+        self.w_ax.next = bit_cast::<9, 8>(self.s1_ax.q.val());
+        self.w_az.next = bit_cast::<9, 8>(self.s1_az.q.val());
+        self.s2_dxz.d.next = self.w_ax.val() - self.w_az.val();
+        self.s2_ax.d.next = self.s1_ax.q.val();
+        self.s2_az.d.next = self.s1_az.q.val();
+        self.s2_sx.d.next = self.s1_sx.q.val();
+        self.s2_sz.d.next = self.s1_sz.q.val();
+        // stage 3: 2·(ax + az) > 255 ⟺ ax + az ≥ 128 ⟺ bit 7 of the sum
+        self.g_mx.next = 127 + self.s2_dxz.q.val(); // 0..254
+        self.g_mz.next = 127 - self.s2_dxz.q.val(); // 0..254
+        self.twice_sum.next = self.s2_sum.q.val() << 1; // unguarded: sum ≤ 127, so ≤ 254
+        if self.s2_sum.q.val().get_bit(7) {
+            self.s3_mx.d.next = self.g_mx.val().get_bits::<8>(0);
+            self.s3_mz.d.next = self.g_mz.val().get_bits::<8>(0);
+            self.s3_by.d.next = 1.into();
+        } else {
+            self.s3_mx.d.next = self.s2_ax.q.val() << 1;
+            self.s3_mz.d.next = self.s2_az.q.val() << 1;
+            self.s3_by.d.next = 255 - self.twice_sum.val();
+        }
+        self.s3_sx.d.next = self.s2_sx.q.val();
+        self.s3_sz.d.next = self.s2_sz.q.val();
+        // stage 4: restore the signs (INT9)
+        self.w_mx.next = bit_cast::<9, 8>(self.s3_mx.q.val());
+        self.w_mz.next = bit_cast::<9, 8>(self.s3_mz.q.val());
+        if self.s3_sx.q.val() {
+            self.s4_bx.d.next = !self.w_mx.val() + 1;
+        } else {
+            self.s4_bx.d.next = self.w_mx.val();
+        }
+        if self.s3_sz.q.val() {
+            self.s4_bz.d.next = !self.w_mz.val() + 1;
+        } else {
+            self.s4_bz.d.next = self.w_mz.val();
+        }
+        self.s4_by.d.next = self.s3_by.q.val();
+        self.bump_x.next = self.s4_bx.q.val();
+        self.bump_y.next = self.s4_by.q.val();
+        self.bump_z.next = self.s4_bz.q.val();
+        self.valid_out.next = self.valid[3].q.val();
+    }
+}
+
+stream_unit!(CartDecode, "cart_decode", 4, inputs: [texel_x: 8, texel_z: 8], outputs: [bump_x: 9, bump_y: 8, bump_z: 9]);

@@ -1,1 +1,115 @@
-//! placeholder
+//! `dot3`: N·L of two Sq1.10 vectors (S12) → X (Uq0.10): `saturate(truncate(Σ n·l, 10), 0, 1023)`.
+//! Latency 5: magnitudes; products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
+
+use crate::stream_unit;
+use rust_hdl::prelude::*;
+
+type Sq1_10 = Bits<12>; // two's complement, 1024 = 1.0
+type Sq2_20 = Bits<25>; // a product or the sum of three, two's complement
+
+#[derive(LogicBlock, Default)]
+pub struct Dot3 {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub n_x: Signal<In, Sq1_10>,
+    pub n_y: Signal<In, Sq1_10>,
+    pub n_z: Signal<In, Sq1_10>,
+    pub l_x: Signal<In, Sq1_10>,
+    pub l_y: Signal<In, Sq1_10>,
+    pub l_z: Signal<In, Sq1_10>,
+    pub valid_out: Signal<Out, Bit>,
+    pub x: Signal<Out, Bits<10>>,
+    s1_nm: [DFF<Bits<12>>; 3], // |n| ≤ 2048 (U12)
+    s1_lm: [DFF<Bits<12>>; 3],
+    s1_neg: [DFF<Bit>; 3],
+    s2_p: [DFF<Bits<23>>; 3], // |n|·|l| ≤ 2^22 (U23)
+    s2_neg: [DFF<Bit>; 3],
+    s3_t: [DFF<Sq2_20>; 3],
+    s4_sum: DFF<Sq2_20>,
+    s5_x: DFF<Bits<10>>,
+    valid: [DFF<Bit>; 5],
+    n_in: [Signal<Local, Sq1_10>; 3],
+    l_in: [Signal<Local, Sq1_10>; 3],
+    w_n: [Signal<Local, Bits<16>>; 3],
+    w_l: [Signal<Local, Bits<16>>; 3],
+    w_p: [Signal<Local, Bits<32>>; 3],
+    w_t: [Signal<Local, Sq2_20>; 3],
+    w_partial: Signal<Local, Sq2_20>,
+    w_q: Signal<Local, Bits<15>>,
+}
+
+impl Logic for Dot3 {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s4_sum, s5_x);
+        for i in 0..5 {
+            self.valid[i].clock.next = self.clock.val();
+        }
+        self.valid[0].d.next = self.valid_in.val();
+        for i in 1..5 {
+            self.valid[i].d.next = self.valid[i - 1].q.val();
+        }
+        self.n_in[0].next = self.n_x.val();
+        self.n_in[1].next = self.n_y.val();
+        self.n_in[2].next = self.n_z.val();
+        self.l_in[0].next = self.l_x.val();
+        self.l_in[1].next = self.l_y.val();
+        self.l_in[2].next = self.l_z.val();
+        // bit_cast cannot stand inside an hdl_gen loop (its width is taken outside the loop): unrolled
+        self.w_n[0].next = bit_cast::<16, 12>(self.s1_nm[0].q.val());
+        self.w_n[1].next = bit_cast::<16, 12>(self.s1_nm[1].q.val());
+        self.w_n[2].next = bit_cast::<16, 12>(self.s1_nm[2].q.val());
+        self.w_l[0].next = bit_cast::<16, 12>(self.s1_lm[0].q.val());
+        self.w_l[1].next = bit_cast::<16, 12>(self.s1_lm[1].q.val());
+        self.w_l[2].next = bit_cast::<16, 12>(self.s1_lm[2].q.val());
+        self.w_t[0].next = bit_cast::<25, 23>(self.s2_p[0].q.val());
+        self.w_t[1].next = bit_cast::<25, 23>(self.s2_p[1].q.val());
+        self.w_t[2].next = bit_cast::<25, 23>(self.s2_p[2].q.val());
+        for i in 0..3 {
+            self.s1_nm[i].clock.next = self.clock.val();
+            self.s1_lm[i].clock.next = self.clock.val();
+            self.s1_neg[i].clock.next = self.clock.val();
+            self.s2_p[i].clock.next = self.clock.val();
+            self.s2_neg[i].clock.next = self.clock.val();
+            self.s3_t[i].clock.next = self.clock.val();
+            // stage 1: magnitudes (−2048 → 2048 fits U12) and the product's sign
+            if self.n_in[i].val().get_bit(11) {
+                self.s1_nm[i].d.next = !self.n_in[i].val() + 1;
+            } else {
+                self.s1_nm[i].d.next = self.n_in[i].val();
+            }
+            if self.l_in[i].val().get_bit(11) {
+                self.s1_lm[i].d.next = !self.l_in[i].val() + 1;
+            } else {
+                self.s1_lm[i].d.next = self.l_in[i].val();
+            }
+            self.s1_neg[i].d.next = self.n_in[i].val().get_bit(11) ^ self.l_in[i].val().get_bit(11);
+            // stage 2: 12 × 12 → 23 bits
+            self.w_p[i].next = self.w_n[i].val() * self.w_l[i].val();
+            self.s2_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
+            self.s2_neg[i].d.next = self.s1_neg[i].q.val();
+            // stage 3: the sign back (S25)
+            if self.s2_neg[i].q.val() {
+                self.s3_t[i].d.next = !self.w_t[i].val() + 1;
+            } else {
+                self.s3_t[i].d.next = self.w_t[i].val();
+            }
+        }
+        // stage 4: the sum of three, |Σ| ≤ 3·2^22 < 2^24
+        self.w_partial.next = self.s3_t[0].q.val() + self.s3_t[1].q.val();
+        self.s4_sum.d.next = self.w_partial.val() + self.s3_t[2].q.val();
+        // stage 5: negative → 0; else floor(Σ / 1024), saturated at 1023
+        self.w_q.next = self.s4_sum.q.val().get_bits::<15>(10);
+        if self.s4_sum.q.val().get_bit(24) {
+            self.s5_x.d.next = 0.into();
+        } else if self.w_q.val() > 1023 {
+            self.s5_x.d.next = 1023.into();
+        } else {
+            self.s5_x.d.next = self.w_q.val().get_bits::<10>(0);
+        }
+        self.x.next = self.s5_x.q.val();
+        self.valid_out.next = self.valid[4].q.val();
+    }
+}
+
+stream_unit!(Dot3, "dot3", 5, inputs: [n_x: 12, n_y: 12, n_z: 12, l_x: 12, l_y: 12, l_z: 12], outputs: [x: 10]);

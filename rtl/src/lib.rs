@@ -12,6 +12,7 @@ pub mod bilinear;
 pub mod blend;
 pub mod cart_decode;
 pub mod cart_pipeline;
+pub mod delay;
 pub mod dot3;
 pub mod gloss;
 pub mod light_iter;

@@ -1,0 +1,31 @@
+//! `Delay`: N DFFs in a chain, to keep side-band values beside the pipeline stages they skip.
+
+use rust_hdl::prelude::*;
+
+#[derive(LogicBlock)]
+pub struct Delay<T: Synth, const N: usize> {
+    pub clock: Signal<In, Clock>,
+    pub d: Signal<In, T>,
+    pub q: Signal<Out, T>,
+    line: [DFF<T>; N],
+}
+
+impl<T: Synth, const N: usize> Default for Delay<T, N> {
+    fn default() -> Self {
+        Self { clock: Default::default(), d: Default::default(), q: Default::default(), line: std::array::from_fn(|_| DFF::default()) }
+    }
+}
+
+impl<T: Synth, const N: usize> Logic for Delay<T, N> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        for i in 0..N {
+            self.line[i].clock.next = self.clock.val();
+        }
+        self.line[0].d.next = self.d.val();
+        for i in 1..N {
+            self.line[i].d.next = self.line[i - 1].q.val();
+        }
+        self.q.next = self.line[N - 1].q.val();
+    }
+}
