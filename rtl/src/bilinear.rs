@@ -244,7 +244,11 @@ impl Logic for Bilinear {
     }
 }
 
-stream_unit!(Bilinear, "bilinear", 9,
+impl Bilinear {
+    pub const LATENCY_CONST: usize = 9;
+}
+
+stream_unit!(Bilinear, "bilinear", Bilinear::LATENCY_CONST,
     inputs: [t00_r: 8, t00_g: 8, t00_b: 8, t00_a: 8, t10_r: 8, t10_g: 8, t10_b: 8, t10_a: 8,
              t01_r: 8, t01_g: 8, t01_b: 8, t01_a: 8, t11_r: 8, t11_g: 8, t11_b: 8, t11_a: 8, ublend: 8, vblend: 8],
     outputs: [out_r: 8, out_g: 8, out_b: 8, out_a: 8]);

@@ -97,6 +97,10 @@ impl Logic for Blend {
     }
 }
 
-stream_unit!(Blend, "blend", 4,
+impl Blend {
+    pub const LATENCY_CONST: usize = 4;
+}
+
+stream_unit!(Blend, "blend", Blend::LATENCY_CONST,
     inputs: [alpha: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
     outputs: [out_r: 8, out_g: 8, out_b: 8]);

@@ -132,4 +132,8 @@ impl Logic for CartDecode {
     }
 }
 
-stream_unit!(CartDecode, "cart_decode", 4, inputs: [texel_x: 8, texel_z: 8], outputs: [bump_x: 9, bump_y: 8, bump_z: 9]);
+impl CartDecode {
+    pub const LATENCY_CONST: usize = 4;
+}
+
+stream_unit!(CartDecode, "cart_decode", CartDecode::LATENCY_CONST, inputs: [texel_x: 8, texel_z: 8], outputs: [bump_x: 9, bump_y: 8, bump_z: 9]);

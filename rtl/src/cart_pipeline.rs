@@ -1,1 +1,203 @@
-//! placeholder
+//! `cart_pipeline`: seed 000's second embodiment, one pixel per clock, built from the unit blocks themselves:
+//! bilinear(TexelX, TexelZ) → cart_decode → normalise ─────────────┐
+//! light_iter → (delay 7) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
+//! Side-band values (C, the colours, the mode, P) ride in delay lines beside the stages they skip.
+//! Latency 39 = bilinear 9 + cart_decode 4 + normalise 9 + dot3 5 + gloss 8 + blend 4.
+
+use crate::bilinear::Bilinear;
+use crate::blend::Blend;
+use crate::cart_decode::CartDecode;
+use crate::delay::Delay;
+use crate::dot3::Dot3;
+use crate::gloss::Gloss;
+use crate::light_iter::LightIter;
+use crate::normalise::Normalise;
+use crate::stream_unit;
+use rust_hdl::prelude::*;
+
+type U8 = Bits<8>;
+type S8 = Bits<8>;
+
+/// Cycles from the pipeline's input to each unit's input.
+pub const AT_NORMALISE: usize = Bilinear::LATENCY_CONST + CartDecode::LATENCY_CONST; // 13
+pub const LIGHT_DELAY: usize = AT_NORMALISE - LightIter::LATENCY_CONST; // 7
+pub const AT_GLOSS: usize = AT_NORMALISE + Normalise::LATENCY_CONST + Dot3::LATENCY_CONST; // 27
+pub const AT_BLEND: usize = AT_GLOSS + Gloss::LATENCY_CONST; // 35
+pub const LATENCY: usize = AT_BLEND + Blend::LATENCY_CONST; // 39
+
+#[derive(LogicBlock, Default)]
+pub struct CartPipeline {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub t00_x: Signal<In, U8>,
+    pub t00_z: Signal<In, U8>,
+    pub t10_x: Signal<In, U8>,
+    pub t10_z: Signal<In, U8>,
+    pub t01_x: Signal<In, U8>,
+    pub t01_z: Signal<In, U8>,
+    pub t11_x: Signal<In, U8>,
+    pub t11_z: Signal<In, U8>,
+    pub ublend: Signal<In, U8>,
+    pub vblend: Signal<In, U8>,
+    pub l0_x: Signal<In, S8>,
+    pub l0_y: Signal<In, S8>,
+    pub l0_z: Signal<In, S8>,
+    pub l1_x: Signal<In, S8>,
+    pub l1_y: Signal<In, S8>,
+    pub l1_z: Signal<In, S8>,
+    pub l2_x: Signal<In, S8>,
+    pub l2_y: Signal<In, S8>,
+    pub l2_z: Signal<In, S8>,
+    pub w1: Signal<In, Bits<9>>,
+    pub w2: Signal<In, Bits<9>>,
+    pub conc: Signal<In, U8>,
+    pub mode: Signal<In, Bits<1>>,
+    pub src_r: Signal<In, U8>,
+    pub src_g: Signal<In, U8>,
+    pub src_b: Signal<In, U8>,
+    pub dst_r: Signal<In, U8>,
+    pub dst_g: Signal<In, U8>,
+    pub dst_b: Signal<In, U8>,
+    pub valid_out: Signal<Out, Bit>,
+    pub p: Signal<Out, Bits<10>>,
+    pub out_r: Signal<Out, U8>,
+    pub out_g: Signal<Out, U8>,
+    pub out_b: Signal<Out, U8>,
+    pub filter: Bilinear,
+    pub decode: CartDecode,
+    pub bump_norm: Normalise,
+    pub light: LightIter,
+    pub light_norm: Normalise,
+    pub dot: Dot3,
+    pub gloss: Gloss,
+    pub blend: Blend,
+    light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
+    conc_dly: Delay<U8, AT_GLOSS>,
+    mode_dly: Delay<Bits<1>, AT_BLEND>,
+    colour_dly: [Delay<U8, AT_BLEND>; 6],
+    p_dly: Delay<Bits<10>, 4>,
+    bump_x10: Signal<Local, Bits<10>>,
+    bump_z10: Signal<Local, Bits<10>>,
+}
+
+impl Logic for CartPipeline {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.filter.clock.next = self.clock.val();
+        self.decode.clock.next = self.clock.val();
+        self.bump_norm.clock.next = self.clock.val();
+        self.light.clock.next = self.clock.val();
+        self.light_norm.clock.next = self.clock.val();
+        self.dot.clock.next = self.clock.val();
+        self.gloss.clock.next = self.clock.val();
+        self.blend.clock.next = self.clock.val();
+        self.conc_dly.clock.next = self.clock.val();
+        self.mode_dly.clock.next = self.clock.val();
+        self.p_dly.clock.next = self.clock.val();
+        for i in 0..3 {
+            self.light_dly[i].clock.next = self.clock.val();
+        }
+        for i in 0..6 {
+            self.colour_dly[i].clock.next = self.clock.val();
+        }
+        // filter: TexelX on red, TexelZ on green; blue and alpha unused (tied to 0, removed by synthesis)
+        self.filter.valid_in.next = self.valid_in.val();
+        self.filter.t00_r.next = self.t00_x.val();
+        self.filter.t00_g.next = self.t00_z.val();
+        self.filter.t10_r.next = self.t10_x.val();
+        self.filter.t10_g.next = self.t10_z.val();
+        self.filter.t01_r.next = self.t01_x.val();
+        self.filter.t01_g.next = self.t01_z.val();
+        self.filter.t11_r.next = self.t11_x.val();
+        self.filter.t11_g.next = self.t11_z.val();
+        self.filter.t00_b.next = 0.into();
+        self.filter.t00_a.next = 0.into();
+        self.filter.t10_b.next = 0.into();
+        self.filter.t10_a.next = 0.into();
+        self.filter.t01_b.next = 0.into();
+        self.filter.t01_a.next = 0.into();
+        self.filter.t11_b.next = 0.into();
+        self.filter.t11_a.next = 0.into();
+        self.filter.ublend.next = self.ublend.val();
+        self.filter.vblend.next = self.vblend.val();
+        // decode the filtered texel
+        self.decode.valid_in.next = self.filter.valid_out.val();
+        self.decode.texel_x.next = self.filter.out_r.val();
+        self.decode.texel_z.next = self.filter.out_g.val();
+        // normalise the bump: INT9 → S10 by sign extension, UINT8 → S10 by zero extension
+        self.bump_x10.next = bit_cast::<10, 9>(self.decode.bump_x.val());
+        if self.decode.bump_x.val().get_bit(8) {
+            self.bump_x10.next = self.bump_x10.val() | 0x200;
+        }
+        self.bump_z10.next = bit_cast::<10, 9>(self.decode.bump_z.val());
+        if self.decode.bump_z.val().get_bit(8) {
+            self.bump_z10.next = self.bump_z10.val() | 0x200;
+        }
+        self.bump_norm.valid_in.next = self.decode.valid_out.val();
+        self.bump_norm.vec_x.next = self.bump_x10.val();
+        self.bump_norm.vec_y.next = bit_cast::<10, 8>(self.decode.bump_y.val());
+        self.bump_norm.vec_z.next = self.bump_z10.val();
+        // the light: interpolate, wait for the bump path, normalise
+        self.light.valid_in.next = self.valid_in.val();
+        self.light.l0_x.next = self.l0_x.val();
+        self.light.l0_y.next = self.l0_y.val();
+        self.light.l0_z.next = self.l0_z.val();
+        self.light.l1_x.next = self.l1_x.val();
+        self.light.l1_y.next = self.l1_y.val();
+        self.light.l1_z.next = self.l1_z.val();
+        self.light.l2_x.next = self.l2_x.val();
+        self.light.l2_y.next = self.l2_y.val();
+        self.light.l2_z.next = self.l2_z.val();
+        self.light.w1.next = self.w1.val();
+        self.light.w2.next = self.w2.val();
+        self.light_dly[0].d.next = self.light.light_x.val();
+        self.light_dly[1].d.next = self.light.light_y.val();
+        self.light_dly[2].d.next = self.light.light_z.val();
+        self.light_norm.valid_in.next = self.decode.valid_out.val();
+        self.light_norm.vec_x.next = self.light_dly[0].q.val();
+        self.light_norm.vec_y.next = self.light_dly[1].q.val();
+        self.light_norm.vec_z.next = self.light_dly[2].q.val();
+        // N·L
+        self.dot.valid_in.next = self.bump_norm.valid_out.val();
+        self.dot.n_x.next = self.bump_norm.norm_x.val();
+        self.dot.n_y.next = self.bump_norm.norm_y.val();
+        self.dot.n_z.next = self.bump_norm.norm_z.val();
+        self.dot.l_x.next = self.light_norm.norm_x.val();
+        self.dot.l_y.next = self.light_norm.norm_y.val();
+        self.dot.l_z.next = self.light_norm.norm_z.val();
+        // glossiness
+        self.conc_dly.d.next = self.conc.val();
+        self.gloss.valid_in.next = self.dot.valid_out.val();
+        self.gloss.conc.next = self.conc_dly.q.val();
+        self.gloss.x.next = self.dot.x.val();
+        // blend: α = P >> 2 (U10 → U8, truncate)
+        self.mode_dly.d.next = self.mode.val();
+        self.colour_dly[0].d.next = self.src_r.val();
+        self.colour_dly[1].d.next = self.src_g.val();
+        self.colour_dly[2].d.next = self.src_b.val();
+        self.colour_dly[3].d.next = self.dst_r.val();
+        self.colour_dly[4].d.next = self.dst_g.val();
+        self.colour_dly[5].d.next = self.dst_b.val();
+        self.blend.valid_in.next = self.gloss.valid_out.val();
+        self.blend.alpha.next = self.gloss.p.val().get_bits::<8>(2);
+        self.blend.mode.next = self.mode_dly.q.val();
+        self.blend.src_r.next = self.colour_dly[0].q.val();
+        self.blend.src_g.next = self.colour_dly[1].q.val();
+        self.blend.src_b.next = self.colour_dly[2].q.val();
+        self.blend.dst_r.next = self.colour_dly[3].q.val();
+        self.blend.dst_g.next = self.colour_dly[4].q.val();
+        self.blend.dst_b.next = self.colour_dly[5].q.val();
+        self.p_dly.d.next = self.gloss.p.val();
+        self.valid_out.next = self.blend.valid_out.val();
+        self.p.next = self.p_dly.q.val();
+        self.out_r.next = self.blend.out_r.val();
+        self.out_g.next = self.blend.out_g.val();
+        self.out_b.next = self.blend.out_b.val();
+    }
+}
+
+stream_unit!(CartPipeline, "cart_pipeline", LATENCY,
+    inputs: [t00_x: 8, t00_z: 8, t10_x: 8, t10_z: 8, t01_x: 8, t01_z: 8, t11_x: 8, t11_z: 8, ublend: 8, vblend: 8,
+             l0_x: 8, l0_y: 8, l0_z: 8, l1_x: 8, l1_y: 8, l1_z: 8, l2_x: 8, l2_y: 8, l2_z: 8, w1: 9, w2: 9,
+             conc: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
+    outputs: [p: 10, out_r: 8, out_g: 8, out_b: 8]);

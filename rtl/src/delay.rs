@@ -26,6 +26,11 @@ impl<T: Synth, const N: usize> Logic for Delay<T, N> {
         for i in 1..N {
             self.line[i].d.next = self.line[i - 1].q.val();
         }
-        self.q.next = self.line[N - 1].q.val();
+        // the last element, written as a loop: rust-hdl's Verilog export cannot index with `N - 1`
+        // (it evaluates indices knowing only loop variables); the last assignment wins in both
+        self.q.next = self.line[0].q.val();
+        for i in 1..N {
+            self.q.next = self.line[i].q.val();
+        }
     }
 }

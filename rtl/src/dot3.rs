@@ -112,4 +112,8 @@ impl Logic for Dot3 {
     }
 }
 
-stream_unit!(Dot3, "dot3", 5, inputs: [n_x: 12, n_y: 12, n_z: 12, l_x: 12, l_y: 12, l_z: 12], outputs: [x: 10]);
+impl Dot3 {
+    pub const LATENCY_CONST: usize = 5;
+}
+
+stream_unit!(Dot3, "dot3", Dot3::LATENCY_CONST, inputs: [n_x: 12, n_y: 12, n_z: 12, l_x: 12, l_y: 12, l_z: 12], outputs: [x: 10]);

@@ -159,4 +159,8 @@ impl Logic for Gloss {
     }
 }
 
-stream_unit!(Gloss, "gloss", 8, inputs: [conc: 8, x: 10], outputs: [p: 10]);
+impl Gloss {
+    pub const LATENCY_CONST: usize = 8;
+}
+
+stream_unit!(Gloss, "gloss", Gloss::LATENCY_CONST, inputs: [conc: 8, x: 10], outputs: [p: 10]);

@@ -262,6 +262,10 @@ impl Logic for LightIter {
     }
 }
 
-stream_unit!(LightIter, "light_iter", 6,
+impl LightIter {
+    pub const LATENCY_CONST: usize = 6;
+}
+
+stream_unit!(LightIter, "light_iter", LightIter::LATENCY_CONST,
     inputs: [l0_x: 8, l0_y: 8, l0_z: 8, l1_x: 8, l1_y: 8, l1_z: 8, l2_x: 8, l2_y: 8, l2_z: 8, w1: 9, w2: 9],
     outputs: [light_x: 10, light_y: 10, light_z: 10]);

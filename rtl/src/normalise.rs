@@ -272,5 +272,9 @@ impl Logic for Normalise {
     }
 }
 
-stream_unit!(Normalise, "normalise", 9,
+impl Normalise {
+    pub const LATENCY_CONST: usize = 9;
+}
+
+stream_unit!(Normalise, "normalise", Normalise::LATENCY_CONST,
     inputs: [vec_x: 10, vec_y: 10, vec_z: 10], outputs: [norm_x: 12, norm_y: 12, norm_z: 12]);

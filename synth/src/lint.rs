@@ -15,7 +15,21 @@ pub const WAIVERS: &[(&str, &str)] = &[
     ("DECLFILENAME/dff", "rust-hdl writes every DFF as its own module (`unit$stage`) in the unit's one file"),
 ];
 
+/// The design's own unused signals, each named exactly, with its reason.
+pub const DESIGN_WAIVERS: &[(&str, &str)] = &[
+    ("'filter$out_b'", "the Cartesian path filters TexelX and TexelZ on red and green; blue and alpha are the same \
+        bilinear unit's other channels, tied to 0 and removed by synthesis"),
+    ("'filter$out_a'", "as above"),
+    ("'light$valid_out'", "the light path runs in lockstep with the bump path; the bump path's valid is used"),
+    ("'light_norm$valid_out'", "as above"),
+];
+
 fn classify(code: &str, msg: &str, src: &str) -> Option<&'static str> {
+    if code == "UNUSEDSIGNAL" {
+        if let Some((name, _)) = DESIGN_WAIVERS.iter().find(|(n, _)| msg.ends_with(n)) {
+            return Some(name);
+        }
+    }
     match code {
         "WIDTH" if src.contains("32'h") => Some(WAIVERS[0].0),
         "WIDTH" if src.contains(") & ") && src.contains("'h") => Some(WAIVERS[1].0),
