@@ -25,6 +25,63 @@ enum Cmd {
         #[arg(long)]
         out: Option<PathBuf>,
     },
+    /// Export a unit's Verilog into DIR/<unit>.v
+    Verilog {
+        unit: String,
+        #[arg(long)]
+        out: PathBuf,
+    },
+    /// Trace a unit in rust-hdl to a VCD (hard cases, then random vectors)
+    Wave {
+        unit: String,
+        #[arg(long)]
+        out: PathBuf,
+        #[arg(long, default_value_t = 64)]
+        count: usize,
+    },
+    /// yosys synth_ice40 -dsp and nextpnr-ice40 (UP5K, through a serial I/O wrapper): LUT, FF, DSP, fmax
+    Synth {
+        unit: String,
+        /// working folder for the tools' files
+        #[arg(long, default_value = "target/synth")]
+        dir: PathBuf,
+        /// the clock target given to nextpnr, MHz
+        #[arg(long, default_value_t = 50.0)]
+        freq: f64,
+    },
+    /// Exact against ideal for every unit, and the encoders' angular error
+    Accuracy {
+        /// random hemisphere directions per encoder
+        #[arg(long, default_value_t = 1_000_000)]
+        directions: usize,
+        #[arg(long, default_value_t = 200_000)]
+        samples: usize,
+    },
+    /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
+    Demo {
+        #[arg(long, default_value = "out/demo")]
+        out: PathBuf,
+        /// image side in pixels (16..=1024)
+        #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(16..=1024))]
+        size: u32,
+    },
+}
+
+/// Run `$body` with `U` bound to the rtl block of the unit called `$name`.
+macro_rules! with_unit {
+    ($name:expr, $u:ident => $body:expr) => {
+        match $name {
+            "cart_decode" => { type $u = rtl::cart_decode::CartDecode; $body }
+            "bilinear" => { type $u = rtl::bilinear::Bilinear; $body }
+            "light_iter" => { type $u = rtl::light_iter::LightIter; $body }
+            "normalise" => { type $u = rtl::normalise::Normalise; $body }
+            "dot3" => { type $u = rtl::dot3::Dot3; $body }
+            "gloss" => { type $u = rtl::gloss::Gloss; $body }
+            "blend" => { type $u = rtl::blend::Blend; $body }
+            "cart_pipeline" => { type $u = rtl::cart_pipeline::CartPipeline; $body }
+            other => Err(format!("`{other}` has no rtl block (cart_encode is software only)")),
+        }
+    };
 }
 
 pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
@@ -51,6 +108,28 @@ pub fn main() -> Result<(), String> {
                 None => print!("{text}"),
             }
         }
+        Cmd::Verilog { unit: name, out } => {
+            unit(&name)?;
+            let path = with_unit!(name.as_str(), U => synth::export::<U>().write(&out))?;
+            println!("{}", path.display());
+        }
+        Cmd::Wave { unit: name, out, count } => {
+            let u = unit(&name)?;
+            let inputs = vectors::unit::generate(u, false, count, 1)?;
+            with_unit!(name.as_str(), U => sim::wave::write_vcd::<U>(u, &inputs, &out))?;
+            println!("{} ({} vectors)", out.display(), inputs.len());
+        }
+        Cmd::Synth { unit: name, dir, freq } => {
+            unit(&name)?;
+            if !(1.0..=500.0).contains(&freq) {
+                return Err(format!("--freq {freq}: the clock target must be between 1 and 500 MHz"));
+            }
+            let d = dir.join(&name);
+            let r = with_unit!(name.as_str(), U => synth::ice40::synth_and_place::<U>(&d, freq))?;
+            crate::report::synth_row(&r);
+        }
+        Cmd::Accuracy { directions, samples } => crate::report::accuracy(directions, samples),
+        Cmd::Demo { out, size } => crate::demo::run(&out, size as usize)?,
     }
     Ok(())
 }

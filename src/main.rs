@@ -1,6 +1,8 @@
 //! `bumprtl`: the command line over the bumprtl crates. Every failure is one line on stderr and a non-zero exit.
 
 mod cli;
+mod demo;
+mod report;
 
 fn main() {
     if let Err(e) = cli::main() {

@@ -1,1 +1,6 @@
+//! This is the bumprtl simulation crate: scenes rendered through the f64 ideal, the bit-exact model, rust-hdl's
+//! simulation of the rtl and the Verilator build of its exported Verilog; PNG images, error heat maps and VCDs.
 
+pub mod accuracy;
+pub mod render;
+pub mod wave;

@@ -102,6 +102,7 @@ fn icarus_bench<U: StreamUnit>() -> String {
 /// Export the unit and build it under the simulator in `dir` (created; reused if the sources did not change).
 pub fn build<U: StreamUnit>(sim: Simulator, dir: &Path) -> Result<Built, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let dir = &std::fs::canonicalize(dir).map_err(|e| format!("cannot resolve {}: {e}", dir.display()))?;
     let v = export::<U>();
     let vfile = v.write(dir)?;
     let vname = vfile.file_name().unwrap().to_str().unwrap().to_string();

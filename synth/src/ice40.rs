@@ -28,6 +28,8 @@ pub struct SynthReport {
     pub lc: Option<u64>,
     pub fmax_mhz: Option<f64>,
     pub latency: usize,
+    /// why place-and-route failed, when it did (the design does not fit the UP5K, say)
+    pub place_error: Option<String>,
 }
 
 fn wrapper<U: StreamUnit>() -> String {
@@ -121,7 +123,15 @@ pub fn synth_and_place<U: StreamUnit>(dir: &Path, freq_mhz: f64) -> Result<Synth
     let out = tools::run(dir, "nextpnr-ice40", &[
         "--up5k", "--package", "sg48", "--json", "wrapped.json", "--pcf-allow-unconstrained",
         "--freq", &format!("{freq_mhz}"), "--seed", "1", "--asc", "wrapped.asc",
-    ])?;
+    ]);
+    let out = match out {
+        Ok(o) => o,
+        Err(e) => {
+            let why = e.lines().find(|l| l.contains("ERROR")).unwrap_or("nextpnr-ice40 failed").trim().to_string();
+            r.place_error = Some(why);
+            return Ok(r);
+        }
+    };
     let text = String::from_utf8_lossy(&out.stderr).to_string();
     write_atomic(&dir.join("nextpnr.log"), text.as_bytes())?;
     for l in text.lines() {

@@ -5,7 +5,7 @@
 //! and, beside it, the f64 ideal of every pixel.
 
 use crate::cart_encode::{self, Encoder};
-use crate::{blend, cart_pipeline, gloss, light_iter};
+use crate::{cart_pipeline, light_iter};
 
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -123,10 +123,10 @@ impl Scene {
                 x.push(ub);
                 x.push(vb);
                 // triangle (00, 10, 11) where u ≥ v, else (00, 11, 01); weights in 1/256, rounded
-                let (l, w1, w2) = if u >= v {
-                    ([q[0], q[1], q[3]], u - v, v)
+                let (l, lf, w1, w2) = if u >= v {
+                    ([q[0], q[1], q[3]], [corner[0], corner[1], corner[3]], u - v, v)
                 } else {
-                    ([q[0], q[3], q[2]], u, v - u)
+                    ([q[0], q[3], q[2]], [corner[0], corner[3], corner[2]], u, v - u)
                 };
                 for li in l {
                     x.extend_from_slice(&li);
@@ -150,14 +150,19 @@ impl Scene {
                 }
                 let ln = (nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]).sqrt();
                 nrm = nrm.map(|c| c / ln);
-                let ld = self.light_dir(u, v);
+                // the seed interpolates the vertex lights linearly and the pipeline renormalises: so does the ideal
+                let mut ld = [0.0; 3];
+                for c in 0..3 {
+                    ld[c] = lf[0][c] + (lf[1][c] - lf[0][c]) * w1 + (lf[2][c] - lf[0][c]) * w2;
+                }
+                let ll = (ld[0] * ld[0] + ld[1] * ld[1] + ld[2] * ld[2]).sqrt().max(1e-12);
+                ld = ld.map(|c| c / ll);
                 let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
                 let pi = gloss_ideal_real(self.conc, xd);
                 p.ideal_p.push(pi);
                 let a = pi / 1023.0 * 255.0;
                 p.ideal_rgb.push(std::array::from_fn(|c| {
-                    blend::ideal_channel(0, 1, self.src[c], self.dst[c]) * 0.0
-                        + (self.src[c] as f64 * a + self.dst[c] as f64 * (255.0 - a)) / 255.0
+                    (self.src[c] as f64 * a + self.dst[c] as f64 * (255.0 - a)) / 255.0
                 }));
                 p.ideal_normal.push(nrm);
             }
@@ -170,7 +175,6 @@ impl Scene {
 fn gloss_ideal_real(c: i64, x: f64) -> f64 {
     let (cf, xf) = (c as f64 / 256.0, x / 1023.0);
     let k = (c as f64 + 8.0) / 8.0;
-    let l = (1.0 - k * (1.0 - xf)).max(0.0);
-    let _ = gloss::ideal; // the same curve, on integers
+    let l = (1.0 - k * (1.0 - xf)).max(0.0); // the curve of `gloss::ideal`, on a real X
     1023.0 * (l + cf * (l * l - l))
 }

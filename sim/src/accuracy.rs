@@ -1,0 +1,136 @@
+//! Exact against ideal, for every unit: mean and max error and where the max occurs; the three encoders' angular
+//! error over random hemisphere directions; the normaliser's table-size / Newton trade-off.
+
+use rand::SeedableRng;
+use vectors::cart_encode::{self, Encoder};
+use vectors::stats::{angle_deg, ErrorStats};
+use vectors::{bilinear, blend, cart_decode, dot3, gloss, light_iter, normalise};
+
+pub struct Row {
+    pub unit: String,
+    pub metric: String,
+    pub stats: ErrorStats,
+}
+
+fn row(unit: &str, metric: &str, stats: ErrorStats) -> Row {
+    Row { unit: unit.into(), metric: metric.into(), stats }
+}
+
+pub fn units(samples: usize, seed: u64) -> Vec<Row> {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut rows = vec![];
+    // cart_decode: every texel, angle against what it means
+    let mut s = ErrorStats::default();
+    let mut c = ErrorStats::default();
+    for tx in 0..=255u8 {
+        for tz in 0..=255u8 {
+            let b = cart_decode::exact(tx, tz);
+            let i = cart_decode::ideal(tx, tz);
+            s.add(angle_deg([b.x as f64, b.y as f64, b.z as f64], i), || format!("texel ({tx}, {tz})"));
+            let b = cart_decode::exact_with_l1(tx, tz, 254);
+            c.add(angle_deg([b.x as f64, b.y as f64, b.z as f64], i), || format!("texel ({tx}, {tz})"));
+        }
+    }
+    rows.push(row("cart_decode", "degrees, seed decode (L1 = 255), all texels", s));
+    rows.push(row("cart_decode", "degrees, consistent decode (L1 = 254)", c));
+    // gloss: every (C, X)
+    let mut s = ErrorStats::default();
+    for cc in 0..256 {
+        for x in 0..1024 {
+            s.add((gloss::exact(cc, x) as f64 - gloss::ideal(cc, x)).abs(), || format!("C={cc} X={x}"));
+        }
+    }
+    rows.push(row("gloss", "10-bit LSB vs the recipe in reals, all 2^18", s));
+    // normalise: angle and length error, random vectors of every scale
+    let mut a = ErrorStats::default();
+    let mut l = ErrorStats::default();
+    let draw = |rng: &mut rand_chacha::ChaCha8Rng| {
+        let v = (normalise::MODEL.random)(rng);
+        [v[0], v[1], v[2]]
+    };
+    for _ in 0..samples {
+        let v = draw(&mut rng);
+        if v == [0, 0, 0] {
+            continue;
+        }
+        let e = normalise::exact(v);
+        let i = normalise::ideal(v);
+        let ef = [e[0] as f64, e[1] as f64, e[2] as f64];
+        let worst = (0..3).map(|k| (ef[k] - i[k]).abs()).fold(0.0, f64::max);
+        l.add(worst, || format!("{v:?}"));
+        a.add(angle_deg(ef, i), || format!("{v:?}"));
+    }
+    rows.push(row("normalise", "component error, Sq1.10 LSB (1/1024)", l));
+    rows.push(row("normalise", "degrees", a));
+    // dot3, light_iter, bilinear, blend: random vectors against the reals
+    let mut d = ErrorStats::default();
+    let mut li = ErrorStats::default();
+    let mut bi = ErrorStats::default();
+    let mut bl = ErrorStats::default();
+    for _ in 0..samples {
+        let v = (dot3::MODEL.random)(&mut rng);
+        let (n, lv) = ([v[0], v[1], v[2]], [v[3], v[4], v[5]]);
+        d.add((dot3::exact(n, lv) as f64 - dot3::ideal(n, lv).min(1023.0)).abs(), || format!("{v:?}"));
+        let v = (light_iter::MODEL.random)(&mut rng);
+        for k in 0..3 {
+            let e = light_iter::exact_component(v[k], v[3 + k], v[6 + k], v[9], v[10]) as f64;
+            let i = light_iter::ideal_component(v[k] as f64, v[3 + k] as f64, v[6 + k] as f64, v[9] as f64, v[10] as f64);
+            li.add((e - i.clamp(-512.0, 511.0)).abs(), || format!("{v:?}"));
+        }
+        let v = (bilinear::MODEL.random)(&mut rng);
+        let e = bilinear::exact_channel(v[0], v[4], v[8], v[12], v[16], v[17], 8) as f64;
+        let i = bilinear::ideal_channel(v[0] as f64, v[4] as f64, v[8] as f64, v[12] as f64, v[16] as f64 / 256.0, v[17] as f64 / 256.0);
+        bi.add((e - i).abs(), || format!("{v:?}"));
+        let v = (blend::MODEL.random)(&mut rng);
+        bl.add((blend::exact_channel(v[0], v[1], v[2], v[5]) as f64 - blend::ideal_channel(v[0], v[1], v[2], v[5])).abs(), || format!("{v:?}"));
+    }
+    rows.push(row("dot3", "10-bit LSB", d));
+    rows.push(row("light_iter", "Sq8.2 LSB", li));
+    rows.push(row("bilinear", "8-bit LSB", bi));
+    rows.push(row("blend", "8-bit LSB", bl));
+    rows
+}
+
+/// Encode then decode `n` random hemisphere directions with each encoder: degrees against the original.
+pub fn encoders(n: usize, seed: u64) -> Vec<Row> {
+    let mut rows = vec![];
+    for e in Encoder::ALL {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let mut s = ErrorStats::default();
+        for _ in 0..n {
+            let d = cart_encode::random_hemisphere(&mut rng);
+            s.add(angle_deg(d, cart_encode::decode(e, cart_encode::encode(e, d))), || format!("{d:.4?}"));
+        }
+        rows.push(row("cart_encode", &format!("degrees, {}", e.name()), s));
+    }
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut s = ErrorStats::default();
+    for _ in 0..n {
+        let d = cart_encode::random_hemisphere(&mut rng);
+        s.add(angle_deg(d, cart_encode::decode_consistent(cart_encode::encode(Encoder::Seed, d))), || format!("{d:.4?}"));
+    }
+    rows.push(row("cart_encode", "degrees, seed encoder + consistent L1 = 254 decode", s));
+    rows
+}
+
+/// The normaliser's seed-table size and Newton steps against its error (model only; the rtl is T = 10, N = 0).
+pub fn normaliser_tradeoff(samples: usize, seed: u64) -> Vec<(u32, u32, ErrorStats)> {
+    let mut out = vec![];
+    for (t, n) in [(6, 0), (8, 0), (10, 0), (12, 0), (6, 1), (8, 1)] {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let mut s = ErrorStats::default();
+        for _ in 0..samples {
+            let v = (normalise::MODEL.random)(&mut rng);
+            let v = [v[0], v[1], v[2]];
+            if v == [0, 0, 0] {
+                continue;
+            }
+            let e = normalise::exact_with(v, t, n);
+            let i = normalise::ideal(v);
+            let worst = (0..3).map(|k| (e[k] as f64 - i[k]).abs()).fold(0.0, f64::max);
+            s.add(worst, || format!("{v:?}"));
+        }
+        out.push((t, n, s));
+    }
+    out
+}

@@ -1,0 +1,20 @@
+//! Waveforms: a unit run in rust-hdl with every signal traced to a VCD (hierarchical names: `uut.s3_l.q`, ...).
+
+use rtl::stream::Runner;
+use rtl::StreamUnit;
+use std::path::Path;
+use vectors::fixed::to_pattern;
+use vectors::UnitModel;
+
+/// Trace `inputs` through the unit into `path` (written whole, or not at all). Returns the outputs seen.
+pub fn write_vcd<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<Vec<Vec<u64>>, String> {
+    let tmp = path.with_extension("vcd.partial");
+    let file = std::fs::File::create(&tmp).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    let w: Box<dyn std::io::Write> = Box::new(std::io::BufWriter::new(file));
+    let mut r = Runner::<U>::with_vcd(Some(w));
+    let slots = inputs.iter().map(|v| Some(v.iter().zip(model.inputs).map(|(&x, p)| to_pattern(x, p.bits)).collect()));
+    let got = r.run(slots);
+    r.finish();
+    std::fs::rename(&tmp, path).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(got.outputs)
+}
