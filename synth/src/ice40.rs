@@ -136,7 +136,10 @@ pub fn synth_and_place<U: StreamUnit>(dir: &Path, freq_mhz: f64) -> Result<Synth
     write_atomic(&dir.join("nextpnr.log"), text.as_bytes())?;
     for l in text.lines() {
         if let Some(rest) = l.split("ICESTORM_LC:").nth(1) {
-            r.lc = rest.trim().split('/').next().and_then(|x| x.trim().parse().ok());
+            // the utilisation table ("  224/ 5280  4%"), not the placer's progress lines
+            if let Some(n) = rest.trim().split('/').next().and_then(|x| x.trim().parse().ok()) {
+                r.lc = Some(n);
+            }
         }
         if l.contains("Max frequency for clock") && l.contains("clk") && !l.contains("PACKER") {
             r.fmax_mhz = l.split(':').nth(2).and_then(|x| x.split_whitespace().next()).and_then(|x| x.parse().ok());
