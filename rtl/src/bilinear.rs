@@ -5,8 +5,12 @@
 //! Intermediates are carried in 16/32-bit registers (hdl_gen cannot bit_cast inside a loop); their real widths
 //! are in the comments, and yosys removes the constant upper bits.
 
+use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 9;
 
 type U8 = Bits<8>;
 
@@ -81,7 +85,7 @@ pub struct Bilinear {
     s8_a: [DFF<Bits<32>>; 4],
     // stage 9: (a·256 + 2^15 ± q) >> 16
     s9_out: [DFF<U8>; 4],
-    valid: [DFF<Bit>; 9],
+    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     w_base0: [Signal<Local, Bits<32>>; 4],
     w_base1: [Signal<Local, Bits<32>>; 4],
     w_em: [Signal<Local, Bits<32>>; 4],
@@ -92,13 +96,8 @@ pub struct Bilinear {
 impl Logic for Bilinear {
     #[hdl_gen]
     fn update(&mut self) {
-        for i in 0..9 {
-            self.valid[i].clock.next = self.clock.val();
-        }
-        self.valid[0].d.next = self.valid_in.val();
-        for i in 1..9 {
-            self.valid[i].d.next = self.valid[i - 1].q.val();
-        }
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
         for i in 0..3 {
             self.u[i].clock.next = self.clock.val();
         }
@@ -240,15 +239,11 @@ impl Logic for Bilinear {
         self.out_g.next = self.s9_out[1].q.val();
         self.out_b.next = self.s9_out[2].q.val();
         self.out_a.next = self.s9_out[3].q.val();
-        self.valid_out.next = self.valid[8].q.val();
+        self.valid_out.next = self.valid.q.val();
     }
 }
 
-impl Bilinear {
-    pub const LATENCY_CONST: usize = 9;
-}
-
-stream_unit!(Bilinear, "bilinear", Bilinear::LATENCY_CONST,
+stream_unit!(Bilinear, "bilinear", LATENCY,
     inputs: [t00_r: 8, t00_g: 8, t00_b: 8, t00_a: 8, t10_r: 8, t10_g: 8, t10_b: 8, t10_a: 8,
              t01_r: 8, t01_g: 8, t01_b: 8, t01_a: 8, t11_r: 8, t11_g: 8, t11_b: 8, t11_a: 8, ublend: 8, vblend: 8],
     outputs: [out_r: 8, out_g: 8, out_b: 8, out_a: 8]);

@@ -2,8 +2,12 @@
 //! alpha-lerps, `out = round((src·α + dst·(255 − α))/255)`. The /255 is `t = num + 128; (t + (t >> 8)) >> 8`.
 //! Latency 4: weights; products; the sum + 128; the /255.
 
+use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 4;
 
 type U8 = Bits<8>;
 type U16 = Bits<16>;
@@ -36,7 +40,7 @@ pub struct Blend {
     s3_t: [DFF<U16>; 3],
     // stage 4: (t + (t >> 8)) >> 8, truncating: U8
     s4_out: [DFF<U8>; 3],
-    valid: [DFF<Bit>; 4],
+    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     inv_alpha: Signal<Local, U8>,
     w_ps: [Signal<Local, Bits<32>>; 3],
     w_pd: [Signal<Local, Bits<32>>; 3],
@@ -49,13 +53,8 @@ impl Logic for Blend {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_wa, s1_wd);
-        for i in 0..4 {
-            self.valid[i].clock.next = self.clock.val();
-        }
-        self.valid[0].d.next = self.valid_in.val();
-        for i in 1..4 {
-            self.valid[i].d.next = self.valid[i - 1].q.val();
-        }
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
         // stage 1
         self.inv_alpha.next = 255 - self.alpha.val();
         self.s1_wa.d.next = bit_cast::<16, 8>(self.alpha.val());
@@ -93,14 +92,10 @@ impl Logic for Blend {
         self.out_r.next = self.s4_out[0].q.val();
         self.out_g.next = self.s4_out[1].q.val();
         self.out_b.next = self.s4_out[2].q.val();
-        self.valid_out.next = self.valid[3].q.val();
+        self.valid_out.next = self.valid.q.val();
     }
 }
 
-impl Blend {
-    pub const LATENCY_CONST: usize = 4;
-}
-
-stream_unit!(Blend, "blend", Blend::LATENCY_CONST,
+stream_unit!(Blend, "blend", LATENCY,
     inputs: [alpha: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
     outputs: [out_r: 8, out_g: 8, out_b: 8]);

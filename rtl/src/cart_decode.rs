@@ -2,8 +2,12 @@
 //! `vectors::cart_decode`: texels saturate at 254; outside the diamond, `|BumpX| = 127 + ax − az`,
 //! `|BumpZ| = 127 + az − ax`, `BumpY = 1`. Latency 4: |T − 127|; ax + az and ax − az; the guard mux; the signs.
 
+use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 4;
 
 type U8 = Bits<8>;
 type Sq8_0 = Bits<9>; // INT9, two's complement
@@ -40,7 +44,7 @@ pub struct CartDecode {
     s4_bx: DFF<Sq8_0>,
     s4_by: DFF<U8>,
     s4_bz: DFF<Sq8_0>,
-    valid: [DFF<Bit>; 4],
+    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     sat_x: Signal<Local, U8>,
     sat_z: Signal<Local, U8>,
     w_ax: Signal<Local, Sq8_0>,
@@ -57,13 +61,8 @@ impl Logic for CartDecode {
     fn update(&mut self) {
         dff_setup!(self, clock, s1_ax, s1_az, s1_sx, s1_sz, s2_sum, s2_dxz, s2_ax, s2_az, s2_sx, s2_sz, s3_mx, s3_mz,
             s3_by, s3_sx, s3_sz, s4_bx, s4_by, s4_bz);
-        for i in 0..4 {
-            self.valid[i].clock.next = self.clock.val();
-        }
-        self.valid[0].d.next = self.valid_in.val();
-        for i in 1..4 {
-            self.valid[i].d.next = self.valid[i - 1].q.val();
-        }
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
         // stage 1: saturate 255 → 254, then the distance from 127 and its side
         self.sat_x.next = self.texel_x.val();
         if self.texel_x.val() > 254 {
@@ -128,12 +127,8 @@ impl Logic for CartDecode {
         self.bump_x.next = self.s4_bx.q.val();
         self.bump_y.next = self.s4_by.q.val();
         self.bump_z.next = self.s4_bz.q.val();
-        self.valid_out.next = self.valid[3].q.val();
+        self.valid_out.next = self.valid.q.val();
     }
 }
 
-impl CartDecode {
-    pub const LATENCY_CONST: usize = 4;
-}
-
-stream_unit!(CartDecode, "cart_decode", CartDecode::LATENCY_CONST, inputs: [texel_x: 8, texel_z: 8], outputs: [bump_x: 9, bump_y: 8, bump_z: 9]);
+stream_unit!(CartDecode, "cart_decode", LATENCY, inputs: [texel_x: 8, texel_z: 8], outputs: [bump_x: 9, bump_y: 8, bump_z: 9]);

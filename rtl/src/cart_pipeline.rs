@@ -19,11 +19,11 @@ type U8 = Bits<8>;
 type S8 = Bits<8>;
 
 /// Cycles from the pipeline's input to each unit's input.
-pub const AT_NORMALISE: usize = Bilinear::LATENCY_CONST + CartDecode::LATENCY_CONST; // 13
-pub const LIGHT_DELAY: usize = AT_NORMALISE - LightIter::LATENCY_CONST; // 7
-pub const AT_GLOSS: usize = AT_NORMALISE + Normalise::LATENCY_CONST + Dot3::LATENCY_CONST; // 27
-pub const AT_BLEND: usize = AT_GLOSS + Gloss::LATENCY_CONST; // 35
-pub const LATENCY: usize = AT_BLEND + Blend::LATENCY_CONST; // 39
+pub const AT_NORMALISE: usize = crate::bilinear::LATENCY + crate::cart_decode::LATENCY; // 13
+pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY; // 7
+pub const AT_GLOSS: usize = AT_NORMALISE + crate::normalise::LATENCY + crate::dot3::LATENCY; // 27
+pub const AT_BLEND: usize = AT_GLOSS + crate::gloss::LATENCY; // 35
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 39
 
 #[derive(LogicBlock, Default)]
 pub struct CartPipeline {

@@ -1,8 +1,12 @@
 //! `dot3`: N·L of two Sq1.10 vectors (S12) → X (Uq0.10): `saturate(truncate(Σ n·l, 10), 0, 1023)`.
 //! Latency 5: magnitudes; products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
 
+use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 5;
 
 type Sq1_10 = Bits<12>; // two's complement, 1024 = 1.0
 type Sq2_20 = Bits<25>; // a product or the sum of three, two's complement
@@ -27,7 +31,7 @@ pub struct Dot3 {
     s3_t: [DFF<Sq2_20>; 3],
     s4_sum: DFF<Sq2_20>,
     s5_x: DFF<Bits<10>>,
-    valid: [DFF<Bit>; 5],
+    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     n_in: [Signal<Local, Sq1_10>; 3],
     l_in: [Signal<Local, Sq1_10>; 3],
     w_n: [Signal<Local, Bits<16>>; 3],
@@ -42,13 +46,8 @@ impl Logic for Dot3 {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s4_sum, s5_x);
-        for i in 0..5 {
-            self.valid[i].clock.next = self.clock.val();
-        }
-        self.valid[0].d.next = self.valid_in.val();
-        for i in 1..5 {
-            self.valid[i].d.next = self.valid[i - 1].q.val();
-        }
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
         self.n_in[0].next = self.n_x.val();
         self.n_in[1].next = self.n_y.val();
         self.n_in[2].next = self.n_z.val();
@@ -108,12 +107,8 @@ impl Logic for Dot3 {
             self.s5_x.d.next = self.w_q.val().get_bits::<10>(0);
         }
         self.x.next = self.s5_x.q.val();
-        self.valid_out.next = self.valid[4].q.val();
+        self.valid_out.next = self.valid.q.val();
     }
 }
 
-impl Dot3 {
-    pub const LATENCY_CONST: usize = 5;
-}
-
-stream_unit!(Dot3, "dot3", Dot3::LATENCY_CONST, inputs: [n_x: 12, n_y: 12, n_z: 12, l_x: 12, l_y: 12, l_z: 12], outputs: [x: 10]);
+stream_unit!(Dot3, "dot3", LATENCY, inputs: [n_x: 12, n_y: 12, n_z: 12, l_x: 12, l_y: 12, l_z: 12], outputs: [x: 10]);

@@ -3,8 +3,12 @@
 //! `(C·(Q − L)) >> 8` (arithmetic, floor) = `−((C·(L − Q) + 255) >> 8)`, so every signal here is unsigned.
 //! Latency 8: k·t, the L clamp, L·L, L − Q, C·(L − Q), the ceiling shift and the final subtract each get a stage.
 
+use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 8;
 
 type Uq0_10 = Bits<10>; // X, L, Q, P: 10-bit fractions, 1023 ≈ 1.0
 type Uq6_3 = Bits<9>; // k = C + 8, 3 fraction bits
@@ -44,7 +48,7 @@ pub struct Gloss {
     s7_l: DFF<Uq0_10>,
     // stage 8: P = L − that
     s8_p: DFF<Uq0_10>,
-    valid: [DFF<Bit>; 8],
+    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     w_k: Signal<Local, Bits<16>>,
     w_t: Signal<Local, Bits<16>>,
     w_m: Signal<Local, Bits<32>>,
@@ -106,13 +110,8 @@ impl Logic for Gloss {
     fn update(&mut self) {
         dff_setup!(self, clock, s1_k, s1_t, s1_c, s2_m, s2_c, s3_l, s3_c, s4_ll, s4_l, s4_c, s5_d, s5_l, s5_c,
             s6_prod, s6_l, s7_q, s7_l, s8_p);
-        for i in 0..8 {
-            self.valid[i].clock.next = self.clock.val();
-        }
-        self.valid[0].d.next = self.valid_in.val();
-        for i in 1..8 {
-            self.valid[i].d.next = self.valid[i - 1].q.val();
-        }
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
         // stage 1
         self.s1_k.d.next = bit_cast::<9, 8>(self.conc.val()) + 8; // U9, no overflow (≤ 263)
         self.s1_t.d.next = 1023 - self.x.val(); // U10, X ≤ 1023
@@ -155,12 +154,8 @@ impl Logic for Gloss {
         // stage 8: P = L − ceil(...)
         self.s8_p.d.next = self.s7_l.q.val() - self.s7_q.q.val();
         self.p.next = self.s8_p.q.val();
-        self.valid_out.next = self.valid[7].q.val();
+        self.valid_out.next = self.valid.q.val();
     }
 }
 
-impl Gloss {
-    pub const LATENCY_CONST: usize = 8;
-}
-
-stream_unit!(Gloss, "gloss", Gloss::LATENCY_CONST, inputs: [conc: 8, x: 10], outputs: [p: 10]);
+stream_unit!(Gloss, "gloss", LATENCY, inputs: [conc: 8, x: 10], outputs: [p: 10]);

@@ -2,8 +2,12 @@
 //! `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Q8.8) → `truncate` 6 (floor) → `saturate` to S10 (Sq8.2).
 //! Latency 6: differences; magnitudes; products; signs; the sum; the shift and saturation.
 
+use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 6;
 
 type S8 = Bits<8>; // two's complement vertex components
 type Sq8_2 = Bits<10>; // the interpolated light, two's complement
@@ -56,7 +60,7 @@ pub struct LightIter {
     s5_acc: [DFF<Sq8_8>; 3],
     // stage 6: floor to Q8.2 and saturate to S10
     s6_out: [DFF<Sq8_2>; 3],
-    valid: [DFF<Bit>; 6],
+    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     e9_0: [Signal<Local, Bits<9>>; 3],
     e9_1: [Signal<Local, Bits<9>>; 3],
     e9_2: [Signal<Local, Bits<9>>; 3],
@@ -76,13 +80,8 @@ impl Logic for LightIter {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_w1, s1_w2, s2_w1, s2_w2);
-        for i in 0..6 {
-            self.valid[i].clock.next = self.clock.val();
-        }
-        self.valid[0].d.next = self.valid_in.val();
-        for i in 1..6 {
-            self.valid[i].d.next = self.valid[i - 1].q.val();
-        }
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
         self.s1_w1.d.next = bit_cast::<16, 9>(self.w1.val());
         self.s1_w2.d.next = bit_cast::<16, 9>(self.w2.val());
         self.s2_w1.d.next = self.s1_w1.q.val();
@@ -258,14 +257,10 @@ impl Logic for LightIter {
         self.light_x.next = self.s6_out[0].q.val();
         self.light_y.next = self.s6_out[1].q.val();
         self.light_z.next = self.s6_out[2].q.val();
-        self.valid_out.next = self.valid[5].q.val();
+        self.valid_out.next = self.valid.q.val();
     }
 }
 
-impl LightIter {
-    pub const LATENCY_CONST: usize = 6;
-}
-
-stream_unit!(LightIter, "light_iter", LightIter::LATENCY_CONST,
+stream_unit!(LightIter, "light_iter", LATENCY,
     inputs: [l0_x: 8, l0_y: 8, l0_z: 8, l1_x: 8, l1_y: 8, l1_z: 8, l2_x: 8, l2_y: 8, l2_z: 8, w1: 9, w2: 9],
     outputs: [light_x: 10, light_y: 10, light_z: 10]);

@@ -3,9 +3,13 @@
 //! vector (zero in, zero out). Latency 9: magnitudes; squares; their sum; the leading-zero pairs; the shifts and
 //! the table address; the table; the products; the rounding; the signs.
 
+use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 9;
 
 pub const TABLE_BITS: u32 = 10;
 type Sq9_0 = Bits<10>; // input components, two's complement (the bump's Q8.0 or the light's Q8.2)
@@ -72,7 +76,7 @@ pub struct Normalise {
     s8_neg: [DFF<Bit>; 3],
     // stage 9: the signs back
     s9_out: [DFF<Sq1_10>; 3],
-    valid: [DFF<Bit>; 9],
+    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     w_m: [Signal<Local, Bits<16>>; 3],
     w_sq: [Signal<Local, Bits<32>>; 3],
     w_part: Signal<Local, Bits<20>>,
@@ -82,7 +86,6 @@ pub struct Normalise {
     w_r: Signal<Local, Bits<16>>,
     w_p: [Signal<Local, Bits<32>>; 3],
     w_u: [Signal<Local, Bits<23>>; 3],
-    w_n12: [Signal<Local, Bits<12>>; 3],
 }
 
 impl Default for Normalise {
@@ -133,7 +136,6 @@ impl Default for Normalise {
             w_r: Default::default(),
             w_p: Default::default(),
             w_u: Default::default(),
-            w_n12: Default::default(),
         }
     }
 }
@@ -142,13 +144,8 @@ impl Logic for Normalise {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r);
-        for i in 0..9 {
-            self.valid[i].clock.next = self.clock.val();
-        }
-        self.valid[0].d.next = self.valid_in.val();
-        for i in 1..9 {
-            self.valid[i].d.next = self.valid[i - 1].q.val();
-        }
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
         for i in 0..3 {
             self.s1_m[i].clock.next = self.clock.val();
             self.s1_neg[i].clock.next = self.clock.val();
@@ -169,7 +166,7 @@ impl Logic for Normalise {
             self.s8_neg[i].clock.next = self.clock.val();
             self.s9_out[i].clock.next = self.clock.val();
         }
-        // ---- component x: magnitude and sign (stage 1), c·2^e (stage 5), sign back (stage 9)
+        // ---- component x: magnitude and sign (stage 1), widened for the multipliers
         self.s1_m[0].d.next = self.vec_x.val();
         if self.vec_x.val().get_bit(9) {
             self.s1_m[0].d.next = !self.vec_x.val() + 1;
@@ -177,8 +174,7 @@ impl Logic for Normalise {
         self.s1_neg[0].d.next = self.vec_x.val().get_bit(9);
         self.w_m[0].next = bit_cast::<16, 10>(self.s1_m[0].q.val());
         self.w_c[0].next = bit_cast::<16, 10>(self.s6_c[0].q.val());
-        self.w_n12[0].next = bit_cast::<12, 12>(self.s8_n[0].q.val());
-        // ---- component y: magnitude and sign (stage 1), c·2^e (stage 5), sign back (stage 9)
+        // ---- component y: magnitude and sign (stage 1), widened for the multipliers
         self.s1_m[1].d.next = self.vec_y.val();
         if self.vec_y.val().get_bit(9) {
             self.s1_m[1].d.next = !self.vec_y.val() + 1;
@@ -186,8 +182,7 @@ impl Logic for Normalise {
         self.s1_neg[1].d.next = self.vec_y.val().get_bit(9);
         self.w_m[1].next = bit_cast::<16, 10>(self.s1_m[1].q.val());
         self.w_c[1].next = bit_cast::<16, 10>(self.s6_c[1].q.val());
-        self.w_n12[1].next = bit_cast::<12, 12>(self.s8_n[1].q.val());
-        // ---- component z: magnitude and sign (stage 1), c·2^e (stage 5), sign back (stage 9)
+        // ---- component z: magnitude and sign (stage 1), widened for the multipliers
         self.s1_m[2].d.next = self.vec_z.val();
         if self.vec_z.val().get_bit(9) {
             self.s1_m[2].d.next = !self.vec_z.val() + 1;
@@ -195,7 +190,6 @@ impl Logic for Normalise {
         self.s1_neg[2].d.next = self.vec_z.val().get_bit(9);
         self.w_m[2].next = bit_cast::<16, 10>(self.s1_m[2].q.val());
         self.w_c[2].next = bit_cast::<16, 10>(self.s6_c[2].q.val());
-        self.w_n12[2].next = bit_cast::<12, 12>(self.s8_n[2].q.val());
         // stage 6 reads the table at the stage-5 address
         self.rsqrt.address.next = self.s5_addr.q.val();
         self.w_r.next = bit_cast::<16, 13>(self.s6_r.q.val());
@@ -226,9 +220,9 @@ impl Logic for Normalise {
             self.s8_neg[i].d.next = self.s7_neg[i].q.val();
             // stage 9
             if self.s8_neg[i].q.val() {
-                self.s9_out[i].d.next = !self.w_n12[i].val() + 1;
+                self.s9_out[i].d.next = !self.s8_n[i].q.val() + 1;
             } else {
-                self.s9_out[i].d.next = self.w_n12[i].val();
+                self.s9_out[i].d.next = self.s8_n[i].q.val();
             }
         }
         // stage 3: the sum of squares
@@ -268,13 +262,9 @@ impl Logic for Normalise {
         self.norm_x.next = self.s9_out[0].q.val();
         self.norm_y.next = self.s9_out[1].q.val();
         self.norm_z.next = self.s9_out[2].q.val();
-        self.valid_out.next = self.valid[8].q.val();
+        self.valid_out.next = self.valid.q.val();
     }
 }
 
-impl Normalise {
-    pub const LATENCY_CONST: usize = 9;
-}
-
-stream_unit!(Normalise, "normalise", Normalise::LATENCY_CONST,
+stream_unit!(Normalise, "normalise", LATENCY,
     inputs: [vec_x: 10, vec_y: 10, vec_z: 10], outputs: [norm_x: 12, norm_y: 12, norm_z: 12]);

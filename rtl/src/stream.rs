@@ -138,10 +138,6 @@ impl<U: StreamUnit> Runner<U> {
         c
     }
 
-    pub fn cycles(&self) -> u64 {
-        self.cycle
-    }
-
     /// Close the VCD, flushing it.
     pub fn finish(mut self) {
         if let Some(v) = self.vcd.take() {
