@@ -41,25 +41,8 @@ pub fn units(samples: usize, seed: u64) -> Vec<Row> {
         }
     }
     rows.push(row("gloss", "10-bit LSB vs the recipe in reals, all 2^18", s));
-    // normalise: angle and length error, random vectors of every scale
-    let mut a = ErrorStats::default();
-    let mut l = ErrorStats::default();
-    let draw = |rng: &mut rand_chacha::ChaCha8Rng| {
-        let v = (normalise::MODEL.random)(rng);
-        [v[0], v[1], v[2]]
-    };
-    for _ in 0..samples {
-        let v = draw(&mut rng);
-        if v == [0, 0, 0] {
-            continue;
-        }
-        let e = normalise::exact(v);
-        let i = normalise::ideal(v);
-        let ef = [e[0] as f64, e[1] as f64, e[2] as f64];
-        let worst = (0..3).map(|k| (ef[k] - i[k]).abs()).fold(0.0, f64::max);
-        l.add(worst, || format!("{v:?}"));
-        a.add(angle_deg(ef, i), || format!("{v:?}"));
-    }
+    // normalise: component and angle error, random vectors of every scale (the rtl's table, no Newton step)
+    let (l, a) = normalise_error(normalise::TABLE_BITS, normalise::NEWTON, samples, seed);
     rows.push(row("normalise", "component error, Sq1.10 LSB (1/1024)", l));
     rows.push(row("normalise", "degrees", a));
     // dot3, light_iter, bilinear, blend: random vectors against the reals
@@ -113,24 +96,29 @@ pub fn encoders(n: usize, seed: u64) -> Vec<Row> {
     rows
 }
 
+/// The normaliser with a `t`-bit seed table and `newton` steps against the ideal, over `samples` random vectors
+/// of every scale: the worst component error per vector (Sq1.10 LSB) and the angle (degrees).
+fn normalise_error(t: u32, newton: u32, samples: usize, seed: u64) -> (ErrorStats, ErrorStats) {
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let (mut comp, mut angle) = (ErrorStats::default(), ErrorStats::default());
+    for _ in 0..samples {
+        let v = (normalise::MODEL.random)(&mut rng);
+        let v = [v[0], v[1], v[2]];
+        if v == [0, 0, 0] {
+            continue;
+        }
+        let e = normalise::exact_with(v, t, newton).map(|c| c as f64);
+        let i = normalise::ideal(v);
+        comp.add((0..3).map(|k| (e[k] - i[k]).abs()).fold(0.0, f64::max), || format!("{v:?}"));
+        angle.add(angle_deg(e, i), || format!("{v:?}"));
+    }
+    (comp, angle)
+}
+
 /// The normaliser's seed-table size and Newton steps against its error (model only; the rtl is T = 10, N = 0).
 pub fn normaliser_tradeoff(samples: usize, seed: u64) -> Vec<(u32, u32, ErrorStats)> {
-    let mut out = vec![];
-    for (t, n) in [(6, 0), (8, 0), (10, 0), (12, 0), (6, 1), (8, 1)] {
-        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-        let mut s = ErrorStats::default();
-        for _ in 0..samples {
-            let v = (normalise::MODEL.random)(&mut rng);
-            let v = [v[0], v[1], v[2]];
-            if v == [0, 0, 0] {
-                continue;
-            }
-            let e = normalise::exact_with(v, t, n);
-            let i = normalise::ideal(v);
-            let worst = (0..3).map(|k| (e[k] as f64 - i[k]).abs()).fold(0.0, f64::max);
-            s.add(worst, || format!("{v:?}"));
-        }
-        out.push((t, n, s));
-    }
-    out
+    [(6, 0), (8, 0), (10, 0), (12, 0), (6, 1), (8, 1)]
+        .into_iter()
+        .map(|(t, n)| (t, n, normalise_error(t, n, samples, seed).0))
+        .collect()
 }

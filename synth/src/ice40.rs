@@ -12,7 +12,6 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 pub const UP5K_DSP: u64 = 8;
-pub const UP5K_LC: u64 = 5280;
 
 #[derive(Clone, Debug, Default)]
 pub struct SynthReport {
@@ -83,8 +82,7 @@ fn yosys(dir: &Path, top: &str, files: &[&str], dsp: bool, json: Option<&str>) -
         let _ = write!(script, " -json {j}");
     }
     script.push_str("; stat");
-    let out = tools::run(dir, "yosys", &["-q", "-p", &script, "-l", &format!("{top}.yosys.log")])?;
-    let _ = out;
+    tools::run(dir, "yosys", &["-q", "-p", &script, "-l", &format!("{top}.yosys.log")])?;
     std::fs::read_to_string(dir.join(format!("{top}.yosys.log"))).map_err(|e| format!("no yosys log: {e}"))
 }
 

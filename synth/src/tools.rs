@@ -3,11 +3,6 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
-/// Is `tool` on the PATH?
-pub fn have(tool: &str) -> bool {
-    Command::new("sh").arg("-c").arg(format!("command -v {tool}")).output().map(|o| o.status.success()).unwrap_or(false)
-}
-
 /// Run a command in `dir`; Err carries the tool name and the last lines of its output.
 pub fn run(dir: &Path, prog: &str, args: &[&str]) -> Result<Output, String> {
     let out = Command::new(prog)

@@ -18,7 +18,12 @@ pub fn exact(c: i64, x: i64) -> i64 {
 
 /// The recipe in reals (1023 = 1.0 as the seed's integers read it): the curve the integers approximate.
 pub fn ideal(c: i64, x: i64) -> f64 {
-    let (cf, xf) = (c as f64 / 256.0, x as f64 / 1023.0);
+    ideal_real(c, x as f64)
+}
+
+/// The same curve on a real-valued X (in 10-bit units), as a float pipeline feeds it.
+pub fn ideal_real(c: i64, x: f64) -> f64 {
+    let (cf, xf) = (c as f64 / 256.0, x / 1023.0);
     let k = (c as f64 + 8.0) / 8.0;
     let l = (1.0 - k * (1.0 - xf)).max(0.0);
     1023.0 * (l + cf * (l * l - l))

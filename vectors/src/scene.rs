@@ -5,7 +5,7 @@
 //! and, beside it, the f64 ideal of every pixel.
 
 use crate::cart_encode::{self, Encoder};
-use crate::{cart_pipeline, light_iter};
+use crate::{cart_pipeline, gloss, light_iter};
 
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -158,7 +158,7 @@ impl Scene {
                 let ll = (ld[0] * ld[0] + ld[1] * ld[1] + ld[2] * ld[2]).sqrt().max(1e-12);
                 ld = ld.map(|c| c / ll);
                 let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
-                let pi = gloss_ideal_real(self.conc, xd);
+                let pi = gloss::ideal_real(self.conc, xd);
                 p.ideal_p.push(pi);
                 let a = pi / 1023.0 * 255.0;
                 p.ideal_rgb.push(std::array::from_fn(|c| {
@@ -169,12 +169,4 @@ impl Scene {
         }
         p
     }
-}
-
-/// `gloss::ideal` on a real-valued X.
-fn gloss_ideal_real(c: i64, x: f64) -> f64 {
-    let (cf, xf) = (c as f64 / 256.0, x / 1023.0);
-    let k = (c as f64 + 8.0) / 8.0;
-    let l = (1.0 - k * (1.0 - xf)).max(0.0); // the curve of `gloss::ideal`, on a real X
-    1023.0 * (l + cf * (l * l - l))
 }
