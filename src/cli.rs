@@ -91,8 +91,32 @@ pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
     })
 }
 
+/// clap's own message for a bad command line, cut to one line: the error, then clap's tip if it has one.
+fn one_line(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+    let mut first = lines.next().unwrap_or("bad command line").trim_start_matches("error: ").to_string();
+    if first.ends_with(':') {
+        // "the following required arguments were not provided:" lists them on the lines after
+        let missing: Vec<&str> = lines.clone().take_while(|l| !l.starts_with("Usage:")).collect();
+        first = format!("{first} {}", missing.join(", "));
+    }
+    match lines.find(|l| l.starts_with("tip:")) {
+        Some(tip) => format!("{first} ({tip})"),
+        None => first,
+    }
+}
+
 pub fn main() -> Result<(), String> {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) if matches!(e.kind(), clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion
+            | clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand) => e.exit(),
+        Err(e) => {
+            eprintln!("bumprtl: {}", one_line(&e));
+            std::process::exit(2);
+        }
+    };
     match cli.cmd {
         Cmd::Vectors { unit: name, exhaustive, count, seed, out } => {
             let u = unit(&name)?;

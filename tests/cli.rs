@@ -44,13 +44,33 @@ fn unwritable_output_fails_cleanly_and_leaves_nothing() {
 fn bad_flag_values_are_refused() {
     let (code, _, err) = bumprtl(&["vectors", "gloss", "--count", "many"]);
     assert_ne!(code, 0);
+    assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("invalid value 'many'"), "{err}");
     let (code, _, err) = bumprtl(&["demo", "--size", "4"]);
     assert_ne!(code, 0);
+    assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("invalid value '4'"), "{err}");
     let (code, _, err) = bumprtl(&["synth", "gloss", "--freq", "0"]);
     assert_ne!(code, 0);
     assert!(err.contains("between 1 and 500 MHz"), "{err}");
+}
+
+#[test]
+fn bad_command_lines_are_one_line_each() {
+    for (args, says) in [
+        (&["demoo"][..], "a similar subcommand exists: 'demo'"),
+        (&["vectors"][..], "<UNIT>"),
+        (&["wave", "gloss", "--frobnicate"][..], "--frobnicate"),
+    ] {
+        let (code, out, err) = bumprtl(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.starts_with("bumprtl: ") && err.contains(says), "{args:?}: {err}");
+    }
+    let (code, out, _) = bumprtl(&["--help"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("Usage: bumprtl"), "{out}");
 }
 
 #[test]

@@ -1,7 +1,8 @@
 //! `cart_pipeline`: seed 000's second embodiment, one pixel per clock, built from the unit blocks themselves:
 //! bilinear(TexelX, TexelZ) → cart_decode → normalise ─────────────┐
 //! light_iter → (delay 7) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
-//! Side-band values (C, the colours, the mode, P) ride in delay lines beside the stages they skip.
+//! Side-band values ride beside the stages they skip: C and the six colours in block-RAM delay lines
+//! (`RamDelay`), the light, the mode and P in short DFF chains.
 //! Latency 39 = bilinear 9 + cart_decode 4 + normalise 9 + dot3 5 + gloss 8 + blend 4.
 
 use crate::bilinear::Bilinear;
@@ -12,6 +13,7 @@ use crate::dot3::Dot3;
 use crate::gloss::Gloss;
 use crate::light_iter::LightIter;
 use crate::normalise::Normalise;
+use crate::ram_delay::RamDelay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
@@ -72,9 +74,11 @@ pub struct CartPipeline {
     pub gloss: Gloss,
     pub blend: Blend,
     light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
-    conc_dly: Delay<U8, AT_GLOSS>,
+    conc_dly: RamDelay<8, 6, AT_GLOSS>,
     mode_dly: Delay<Bits<1>, AT_BLEND>,
-    colour_dly: [Delay<U8, AT_BLEND>; 6],
+    /// src_r, src_g, src_b, dst_r, dst_g, dst_b packed low to high: 48 bits, three SB_RAM40_4K
+    colour_dly: RamDelay<48, 6, AT_BLEND>,
+    colours: Signal<Local, Bits<48>>,
     p_dly: Delay<Bits<10>, 4>,
     bump_x10: Signal<Local, Bits<10>>,
     bump_z10: Signal<Local, Bits<10>>,
@@ -97,9 +101,7 @@ impl Logic for CartPipeline {
         for i in 0..3 {
             self.light_dly[i].clock.next = self.clock.val();
         }
-        for i in 0..6 {
-            self.colour_dly[i].clock.next = self.clock.val();
-        }
+        self.colour_dly.clock.next = self.clock.val();
         // filter: TexelX on red, TexelZ on green; blue and alpha unused (tied to 0, removed by synthesis)
         self.filter.valid_in.next = self.valid_in.val();
         self.filter.t00_r.next = self.t00_x.val();
@@ -172,21 +174,22 @@ impl Logic for CartPipeline {
         self.gloss.x.next = self.dot.x.val();
         // blend: α = P >> 2 (U10 → U8, truncate)
         self.mode_dly.d.next = self.mode.val();
-        self.colour_dly[0].d.next = self.src_r.val();
-        self.colour_dly[1].d.next = self.src_g.val();
-        self.colour_dly[2].d.next = self.src_b.val();
-        self.colour_dly[3].d.next = self.dst_r.val();
-        self.colour_dly[4].d.next = self.dst_g.val();
-        self.colour_dly[5].d.next = self.dst_b.val();
+        self.colours.next = bit_cast::<48, 8>(self.src_r.val());
+        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.src_g.val()) << 8);
+        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.src_b.val()) << 16);
+        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.dst_r.val()) << 24);
+        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.dst_g.val()) << 32);
+        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.dst_b.val()) << 40);
+        self.colour_dly.d.next = self.colours.val();
         self.blend.valid_in.next = self.gloss.valid_out.val();
         self.blend.alpha.next = self.gloss.p.val().get_bits::<8>(2);
         self.blend.mode.next = self.mode_dly.q.val();
-        self.blend.src_r.next = self.colour_dly[0].q.val();
-        self.blend.src_g.next = self.colour_dly[1].q.val();
-        self.blend.src_b.next = self.colour_dly[2].q.val();
-        self.blend.dst_r.next = self.colour_dly[3].q.val();
-        self.blend.dst_g.next = self.colour_dly[4].q.val();
-        self.blend.dst_b.next = self.colour_dly[5].q.val();
+        self.blend.src_r.next = self.colour_dly.q.val().get_bits::<8>(0);
+        self.blend.src_g.next = self.colour_dly.q.val().get_bits::<8>(8);
+        self.blend.src_b.next = self.colour_dly.q.val().get_bits::<8>(16);
+        self.blend.dst_r.next = self.colour_dly.q.val().get_bits::<8>(24);
+        self.blend.dst_g.next = self.colour_dly.q.val().get_bits::<8>(32);
+        self.blend.dst_b.next = self.colour_dly.q.val().get_bits::<8>(40);
         self.p_dly.d.next = self.gloss.p.val();
         self.valid_out.next = self.blend.valid_out.val();
         self.p.next = self.p_dly.q.val();

@@ -17,6 +17,7 @@ pub mod dot3;
 pub mod gloss;
 pub mod light_iter;
 pub mod normalise;
+pub mod ram_delay;
 pub mod stream;
 
 pub use stream::StreamUnit;

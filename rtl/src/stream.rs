@@ -14,6 +14,7 @@ pub trait StreamUnit: Block + Sized {
     const OUTPUTS: &'static [(&'static str, usize)];
     fn build() -> Self;
     fn set_clock(&mut self, level: bool);
+    fn clock_level(&self) -> bool;
     fn set_inputs(&mut self, valid: bool, values: &[u64]);
     fn valid_out(&self) -> bool;
     fn outputs(&self) -> Vec<u64>;
@@ -33,6 +34,9 @@ macro_rules! stream_unit {
             }
             fn set_clock(&mut self, level: bool) {
                 self.clock.next = Clock { clk: level };
+            }
+            fn clock_level(&self) -> bool {
+                self.clock.val().clk
             }
             #[allow(unused_assignments)]
             fn set_inputs(&mut self, valid: bool, values: &[u64]) {
@@ -150,4 +154,45 @@ impl<U: StreamUnit> Default for Runner<U> {
     fn default() -> Self {
         Self::new()
     }
+}
+
+/// The same stream through rust-hdl's own threaded `Simulation`: a clock thread and a testbench thread that pass the
+/// circuit between them over channels, the way rust-hdl's examples test blocks. Slots are applied with the clock
+/// low and outputs sampled after the rising edge, as `Runner` does, so both give the same `Collected`. Kept beside
+/// the loop to measure the two (`cargo bench -p sim --bench simulators`).
+pub fn run_threaded<U: StreamUnit + Send + 'static>(slots: Vec<Option<Vec<u64>>>) -> Result<Collected, String> {
+    use std::sync::{Arc, Mutex};
+    let n = slots.len();
+    let slots = Arc::new(slots);
+    let got = Arc::new(Mutex::new(Collected::default()));
+    let mut sim = Simulation::<U>::new();
+    sim.add_clock(5, |x: &mut Box<U>| {
+        let level = x.clock_level();
+        x.set_clock(!level)
+    });
+    let (feed, sink) = (slots.clone(), got.clone());
+    sim.add_testbench(move |mut sim: Sim<U>| {
+        let mut x = sim.init()?;
+        let zeros = vec![0u64; U::INPUTS.len()];
+        for cycle in 0..n + U::LATENCY + 1 {
+            x = sim.watch(|u: &U| !u.clock_level(), x)?;
+            match feed.get(cycle) {
+                Some(Some(v)) => x.set_inputs(true, v),
+                _ => x.set_inputs(false, &zeros),
+            }
+            x = sim.watch(|u: &U| u.clock_level(), x)?;
+            if x.valid_out() {
+                let mut c = sink.lock().expect("collector");
+                c.cycles.push(cycle as u64);
+                c.outputs.push(x.outputs());
+            }
+        }
+        sim.done(x)
+    });
+    let mut uut = U::build();
+    uut.connect_all();
+    let max_time = 10 * (n + U::LATENCY + 4) as u64;
+    sim.run(Box::new(uut), max_time).map_err(|e| format!("{}: rust-hdl Simulation failed: {e:?}", U::NAME))?;
+    let c = got.lock().expect("collector").clone();
+    Ok(c)
 }

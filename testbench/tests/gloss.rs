@@ -35,3 +35,12 @@ fn gloss_hard_cases() {
     // C=1, X=1000: k=9, 9·23 = 207 >> 3 = 25, L = 998, Q = 998² >> 10 = 972, P = 998 + ((1·(−26)) >> 8) = 997
     assert_eq!((MODEL.exact)(&[1, 1000]), vec![997]);
 }
+
+#[test]
+fn gloss_threaded_simulation_agrees() {
+    // rust-hdl's own threaded Simulation, on the golden vectors with bubbles: the same outputs, the same cycles
+    let (inputs, _) = testbench::golden(&MODEL);
+    let s = testbench::slots(&MODEL, &inputs, Bubbles::Random { one_in: 4, seed: 7 });
+    let got = rtl::stream::run_threaded::<Gloss>(s.clone()).unwrap_or_else(|e| panic!("{e}"));
+    testbench::check(&MODEL, <Gloss as rtl::StreamUnit>::LATENCY, &inputs, &s, &got).assert_clean("threaded Simulation");
+}
