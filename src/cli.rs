@@ -79,7 +79,11 @@ macro_rules! with_unit {
             "gloss" => { type $u = rtl::gloss::Gloss; $body }
             "blend" => { type $u = rtl::blend::Blend; $body }
             "cart_pipeline" => { type $u = rtl::cart_pipeline::CartPipeline; $body }
-            other => Err(format!("`{other}` has no rtl block (cart_encode is software only)")),
+            "sincos" => { type $u = rtl::sincos::SinCos; $body }
+            "polar_shade" => { type $u = rtl::polar_shade::PolarShade; $body }
+            "power" => { type $u = rtl::power::Power; $body }
+            "polar_pipeline" => { type $u = rtl::polar_pipeline::PolarPipeline; $body }
+            other => Err(format!("`{other}` has no rtl block (cart_encode and polar_encode are software only)")),
         }
     };
 }

@@ -13,7 +13,7 @@ use crate::dot3::Dot3;
 use crate::gloss::Gloss;
 use crate::light_iter::LightIter;
 use crate::normalise::Normalise;
-use crate::ram_delay::RamDelay;
+use crate::ram_delay::{ColourDelay, RamDelay};
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
@@ -76,9 +76,7 @@ pub struct CartPipeline {
     light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
     conc_dly: RamDelay<8, 6, AT_GLOSS>,
     mode_dly: Delay<Bits<1>, AT_BLEND>,
-    /// src_r, src_g, src_b, dst_r, dst_g, dst_b packed low to high: 48 bits, three SB_RAM40_4K
-    colour_dly: RamDelay<48, 6, AT_BLEND>,
-    colours: Signal<Local, Bits<48>>,
+    colour_dly: ColourDelay<6, AT_BLEND>,
     p_dly: Delay<Bits<10>, 4>,
     bump_x10: Signal<Local, Bits<10>>,
     bump_z10: Signal<Local, Bits<10>>,
@@ -174,22 +172,21 @@ impl Logic for CartPipeline {
         self.gloss.x.next = self.dot.x.val();
         // blend: α = P >> 2 (U10 → U8, truncate)
         self.mode_dly.d.next = self.mode.val();
-        self.colours.next = bit_cast::<48, 8>(self.src_r.val());
-        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.src_g.val()) << 8);
-        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.src_b.val()) << 16);
-        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.dst_r.val()) << 24);
-        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.dst_g.val()) << 32);
-        self.colours.next = self.colours.val() | (bit_cast::<48, 8>(self.dst_b.val()) << 40);
-        self.colour_dly.d.next = self.colours.val();
+        self.colour_dly.src_r.next = self.src_r.val();
+        self.colour_dly.src_g.next = self.src_g.val();
+        self.colour_dly.src_b.next = self.src_b.val();
+        self.colour_dly.dst_r.next = self.dst_r.val();
+        self.colour_dly.dst_g.next = self.dst_g.val();
+        self.colour_dly.dst_b.next = self.dst_b.val();
         self.blend.valid_in.next = self.gloss.valid_out.val();
         self.blend.alpha.next = self.gloss.p.val().get_bits::<8>(2);
         self.blend.mode.next = self.mode_dly.q.val();
-        self.blend.src_r.next = self.colour_dly.q.val().get_bits::<8>(0);
-        self.blend.src_g.next = self.colour_dly.q.val().get_bits::<8>(8);
-        self.blend.src_b.next = self.colour_dly.q.val().get_bits::<8>(16);
-        self.blend.dst_r.next = self.colour_dly.q.val().get_bits::<8>(24);
-        self.blend.dst_g.next = self.colour_dly.q.val().get_bits::<8>(32);
-        self.blend.dst_b.next = self.colour_dly.q.val().get_bits::<8>(40);
+        self.blend.src_r.next = self.colour_dly.src_r_q.val();
+        self.blend.src_g.next = self.colour_dly.src_g_q.val();
+        self.blend.src_b.next = self.colour_dly.src_b_q.val();
+        self.blend.dst_r.next = self.colour_dly.dst_r_q.val();
+        self.blend.dst_g.next = self.colour_dly.dst_g_q.val();
+        self.blend.dst_b.next = self.colour_dly.dst_b_q.val();
         self.p_dly.d.next = self.gloss.p.val();
         self.valid_out.next = self.blend.valid_out.val();
         self.p.next = self.p_dly.q.val();

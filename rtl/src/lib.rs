@@ -13,11 +13,17 @@ pub mod blend;
 pub mod cart_decode;
 pub mod cart_pipeline;
 pub mod delay;
+pub mod div255;
 pub mod dot3;
 pub mod gloss;
 pub mod light_iter;
 pub mod normalise;
+pub mod polar_pipeline;
+pub mod polar_shade;
+pub mod power;
 pub mod ram_delay;
+pub mod sincos;
 pub mod stream;
+pub mod tables;
 
 pub use stream::StreamUnit;

@@ -48,3 +48,45 @@ impl<const W: usize, const A: usize, const N: usize> Logic for RamDelay<W, A, N>
         self.q.next = self.ram.read_data.val();
     }
 }
+
+/// The six blend colours (src r, g, b, dst r, g, b) delayed N clocks in one 48-bit `RamDelay`: three
+/// SB_RAM40_4K instead of 48·N flip-flops. Both pipelines keep their colours here while the shade is computed.
+#[derive(LogicBlock, Default)]
+pub struct ColourDelay<const A: usize, const N: usize> {
+    pub clock: Signal<In, Clock>,
+    pub src_r: Signal<In, Bits<8>>,
+    pub src_g: Signal<In, Bits<8>>,
+    pub src_b: Signal<In, Bits<8>>,
+    pub dst_r: Signal<In, Bits<8>>,
+    pub dst_g: Signal<In, Bits<8>>,
+    pub dst_b: Signal<In, Bits<8>>,
+    pub src_r_q: Signal<Out, Bits<8>>,
+    pub src_g_q: Signal<Out, Bits<8>>,
+    pub src_b_q: Signal<Out, Bits<8>>,
+    pub dst_r_q: Signal<Out, Bits<8>>,
+    pub dst_g_q: Signal<Out, Bits<8>>,
+    pub dst_b_q: Signal<Out, Bits<8>>,
+    line: RamDelay<48, A, N>,
+    word: Signal<Local, Bits<48>>,
+}
+
+impl<const A: usize, const N: usize> Logic for ColourDelay<A, N> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.line.clock.next = self.clock.val();
+        // packed low to high: src r, g, b, dst r, g, b
+        self.word.next = bit_cast::<48, 8>(self.src_r.val());
+        self.word.next = self.word.val() | (bit_cast::<48, 8>(self.src_g.val()) << 8);
+        self.word.next = self.word.val() | (bit_cast::<48, 8>(self.src_b.val()) << 16);
+        self.word.next = self.word.val() | (bit_cast::<48, 8>(self.dst_r.val()) << 24);
+        self.word.next = self.word.val() | (bit_cast::<48, 8>(self.dst_g.val()) << 32);
+        self.word.next = self.word.val() | (bit_cast::<48, 8>(self.dst_b.val()) << 40);
+        self.line.d.next = self.word.val();
+        self.src_r_q.next = self.line.q.val().get_bits::<8>(0);
+        self.src_g_q.next = self.line.q.val().get_bits::<8>(8);
+        self.src_b_q.next = self.line.q.val().get_bits::<8>(16);
+        self.dst_r_q.next = self.line.q.val().get_bits::<8>(24);
+        self.dst_g_q.next = self.line.q.val().get_bits::<8>(32);
+        self.dst_b_q.next = self.line.q.val().get_bits::<8>(40);
+    }
+}

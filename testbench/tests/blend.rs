@@ -19,7 +19,6 @@ fn blend_random_vs_model_verilator() {
 fn blend_hard_cases() {
     rust_hdl::<Blend>(&MODEL, &(MODEL.hard_cases)(), Bubbles::BackToBack).assert_clean("hard cases");
     let e = |v: &[i64]| (MODEL.exact)(v);
-    let _ = e;
     // α = 0 and 255 in both modes; src 255 · α 128 / 255 = 128.0 → 128
     assert_eq!(e(&[0, 0, 255, 128, 1, 9, 9, 9]), vec![0, 0, 0]);
     assert_eq!(e(&[255, 0, 255, 128, 1, 9, 9, 9]), vec![255, 128, 1]);

@@ -13,7 +13,12 @@ pub mod fixed;
 pub mod gloss;
 pub mod light_iter;
 pub mod normalise;
+pub mod polar_encode;
+pub mod polar_pipeline;
+pub mod polar_shade;
+pub mod power;
 pub mod scene;
+pub mod sincos;
 pub mod stats;
 pub mod unit;
 

@@ -58,6 +58,10 @@ pub const UNITS: &[&UnitModel] = &[
     &crate::gloss::MODEL,
     &crate::blend::MODEL,
     &crate::cart_pipeline::MODEL,
+    &crate::sincos::MODEL,
+    &crate::polar_shade::MODEL,
+    &crate::power::MODEL,
+    &crate::polar_pipeline::MODEL,
 ];
 
 pub fn find(name: &str) -> Option<&'static UnitModel> {

@@ -1,0 +1,103 @@
+//! `polar_pipeline`: seed 000's first embodiment, one pixel per clock, built from the unit blocks themselves:
+//! polar_shade(S, R, Q, k1, k2, k3) → power(p) → α → blend(src, dst).
+//! p rides beside the shade unit in a DFF chain; the mode in another; the six colours in a block-RAM delay line.
+//! Latency 20 = polar_shade 10 + power 6 + blend 4.
+
+use crate::blend::Blend;
+use crate::delay::Delay;
+use crate::polar_shade::PolarShade;
+use crate::power::Power;
+use crate::ram_delay::ColourDelay;
+use crate::stream_unit;
+use rust_hdl::prelude::*;
+
+type U8 = Bits<8>;
+
+pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
+pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 16
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 20
+
+#[derive(LogicBlock, Default)]
+pub struct PolarPipeline {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub s: Signal<In, U8>,
+    pub r: Signal<In, U8>,
+    pub q: Signal<In, U8>,
+    pub k1: Signal<In, U8>,
+    pub k2: Signal<In, U8>,
+    pub k3: Signal<In, U8>,
+    pub pw: Signal<In, U8>,
+    pub mode: Signal<In, Bits<1>>,
+    pub src_r: Signal<In, U8>,
+    pub src_g: Signal<In, U8>,
+    pub src_b: Signal<In, U8>,
+    pub dst_r: Signal<In, U8>,
+    pub dst_g: Signal<In, U8>,
+    pub dst_b: Signal<In, U8>,
+    pub valid_out: Signal<Out, Bit>,
+    pub alpha: Signal<Out, U8>,
+    pub out_r: Signal<Out, U8>,
+    pub out_g: Signal<Out, U8>,
+    pub out_b: Signal<Out, U8>,
+    pub shader: PolarShade,
+    pub power: Power,
+    pub blend: Blend,
+    pw_dly: Delay<U8, AT_POWER>,
+    mode_dly: Delay<Bits<1>, AT_BLEND>,
+    colour_dly: ColourDelay<5, AT_BLEND>,
+    alpha_dly: Delay<U8, 4>,
+}
+
+impl Logic for PolarPipeline {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.shader.clock.next = self.clock.val();
+        self.power.clock.next = self.clock.val();
+        self.blend.clock.next = self.clock.val();
+        self.pw_dly.clock.next = self.clock.val();
+        self.mode_dly.clock.next = self.clock.val();
+        self.colour_dly.clock.next = self.clock.val();
+        self.alpha_dly.clock.next = self.clock.val();
+        // the shade
+        self.shader.valid_in.next = self.valid_in.val();
+        self.shader.s.next = self.s.val();
+        self.shader.r.next = self.r.val();
+        self.shader.q.next = self.q.val();
+        self.shader.k1.next = self.k1.val();
+        self.shader.k2.next = self.k2.val();
+        self.shader.k3.next = self.k3.val();
+        // the power
+        self.pw_dly.d.next = self.pw.val();
+        self.power.valid_in.next = self.shader.valid_out.val();
+        self.power.x.next = self.shader.shade.val();
+        self.power.pw.next = self.pw_dly.q.val();
+        // the blend, α = the powered shade
+        self.mode_dly.d.next = self.mode.val();
+        self.colour_dly.src_r.next = self.src_r.val();
+        self.colour_dly.src_g.next = self.src_g.val();
+        self.colour_dly.src_b.next = self.src_b.val();
+        self.colour_dly.dst_r.next = self.dst_r.val();
+        self.colour_dly.dst_g.next = self.dst_g.val();
+        self.colour_dly.dst_b.next = self.dst_b.val();
+        self.blend.valid_in.next = self.power.valid_out.val();
+        self.blend.alpha.next = self.power.y.val();
+        self.blend.mode.next = self.mode_dly.q.val();
+        self.blend.src_r.next = self.colour_dly.src_r_q.val();
+        self.blend.src_g.next = self.colour_dly.src_g_q.val();
+        self.blend.src_b.next = self.colour_dly.src_b_q.val();
+        self.blend.dst_r.next = self.colour_dly.dst_r_q.val();
+        self.blend.dst_g.next = self.colour_dly.dst_g_q.val();
+        self.blend.dst_b.next = self.colour_dly.dst_b_q.val();
+        self.alpha_dly.d.next = self.power.y.val();
+        self.valid_out.next = self.blend.valid_out.val();
+        self.alpha.next = self.alpha_dly.q.val();
+        self.out_r.next = self.blend.out_r.val();
+        self.out_g.next = self.blend.out_g.val();
+        self.out_b.next = self.blend.out_b.val();
+    }
+}
+
+stream_unit!(PolarPipeline, "polar_pipeline", LATENCY,
+    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8, pw: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
+    outputs: [alpha: 8, out_r: 8, out_g: 8, out_b: 8]);

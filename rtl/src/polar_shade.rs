@@ -1,0 +1,171 @@
+//! `polar_shade`: seed 000's FIG. 3 up to the clamp, `k1 + k2·sin S + k3·cos S·cos(R − Q)`, one texel per clock.
+//! See `vectors::polar_shade` for the recipe. Latency 10:
+//! 1 S, R − Q (mod 256, the subtractor [16]) and the k's registered;
+//! 2 the tables [10] and [18];
+//! 3 the products k2·sin S [12] and k3·cos S [14];
+//! 4–5 both divided by 255 (`Div255`);
+//! 6 the product t14·|cos(R − Q)| [20] and the adder k1 + t12 [22];
+//! 7–8 that product divided by 255;
+//! 9 add or subtract by the cosine's sign bit [24, 26]: S11;
+//! 10 the clamp to U8 [28].
+
+use crate::delay::Delay;
+use crate::div255::Div255;
+use crate::stream_unit;
+use crate::tables::{CosSignTable, ElevationTable};
+use rust_hdl::prelude::*;
+
+pub const LATENCY: usize = 10;
+
+type U8 = Bits<8>;
+type S11 = Bits<11>; // two's complement
+
+#[derive(LogicBlock, Default)]
+pub struct PolarShade {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub s: Signal<In, U8>,
+    pub r: Signal<In, U8>,
+    pub q: Signal<In, U8>,
+    pub k1: Signal<In, U8>,
+    pub k2: Signal<In, U8>,
+    pub k3: Signal<In, U8>,
+    pub valid_out: Signal<Out, Bit>,
+    pub sum: Signal<Out, S11>,
+    pub shade: Signal<Out, U8>,
+    sin_cos: ElevationTable,
+    cos_sign: CosSignTable,
+    // stage 1
+    s1_s: DFF<U8>,
+    s1_d: DFF<U8>,
+    s1_k1: DFF<U8>,
+    s1_k2: DFF<U8>,
+    s1_k3: DFF<U8>,
+    // stage 2: table words (sin | cos << 8) and (|cos| | negative << 8)
+    s2_e: DFF<Bits<16>>,
+    s2_c: DFF<Bits<9>>,
+    s2_k1: DFF<U8>,
+    s2_k2: DFF<U8>,
+    s2_k3: DFF<U8>,
+    // stage 3: k2·sin S, k3·cos S (U16)
+    s3_p12: DFF<Bits<16>>,
+    s3_p14: DFF<Bits<16>>,
+    s3_k1: DFF<U8>,
+    s3_cd: DFF<U8>,
+    s3_neg: DFF<Bit>,
+    // stages 4–5
+    div12: Div255,
+    div14: Div255,
+    k1_dly: Delay<U8, 2>,
+    cd_dly: Delay<U8, 2>,
+    neg_dly: Delay<Bit, 2>,
+    // stage 6: t14·|cos| (U16), a22 = k1 + t12 (U9)
+    s6_p20: DFF<Bits<16>>,
+    s6_a22: DFF<Bits<9>>,
+    s6_neg: DFF<Bit>,
+    // stages 7–8
+    div20: Div255,
+    a22_dly: Delay<Bits<9>, 2>,
+    neg2_dly: Delay<Bit, 2>,
+    // stage 9: S11
+    s9_sum: DFF<S11>,
+    // stage 10: the clamp
+    s10_shade: DFF<U8>,
+    s10_sum: DFF<S11>,
+    valid: Delay<Bit, LATENCY>,
+    w_d: Signal<Local, U8>,
+    w_a: [Signal<Local, Bits<16>>; 2],
+    w_b: [Signal<Local, Bits<16>>; 2],
+    w_p: [Signal<Local, Bits<32>>; 2],
+    w_c: Signal<Local, Bits<16>>,
+    w_cd: Signal<Local, Bits<16>>,
+    w_p20: Signal<Local, Bits<32>>,
+    w_a22: Signal<Local, S11>,
+    w_t20: Signal<Local, S11>,
+}
+
+impl Logic for PolarShade {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s1_s, s1_d, s1_k1, s1_k2, s1_k3, s2_e, s2_c, s2_k1, s2_k2, s2_k3, s3_p12, s3_p14,
+            s3_k1, s3_cd, s3_neg, s6_p20, s6_a22, s6_neg, s9_sum, s10_shade, s10_sum);
+        self.div12.clock.next = self.clock.val();
+        self.div14.clock.next = self.clock.val();
+        self.div20.clock.next = self.clock.val();
+        self.k1_dly.clock.next = self.clock.val();
+        self.cd_dly.clock.next = self.clock.val();
+        self.neg_dly.clock.next = self.clock.val();
+        self.a22_dly.clock.next = self.clock.val();
+        self.neg2_dly.clock.next = self.clock.val();
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
+        // stage 1: the subtractor [16], modulo 256 (the 8-bit difference wraps in both simulators)
+        self.w_d.next = self.r.val() - self.q.val();
+        self.s1_d.d.next = self.w_d.val();
+        self.s1_s.d.next = self.s.val();
+        self.s1_k1.d.next = self.k1.val();
+        self.s1_k2.d.next = self.k2.val();
+        self.s1_k3.d.next = self.k3.val();
+        // stage 2: the sine/cosine unit [10] and the cosine unit with its sign [18]
+        self.sin_cos.address.next = self.s1_s.q.val();
+        self.cos_sign.address.next = self.s1_d.q.val();
+        self.s2_e.d.next = self.sin_cos.data.val();
+        self.s2_c.d.next = self.cos_sign.data.val();
+        self.s2_k1.d.next = self.s1_k1.q.val();
+        self.s2_k2.d.next = self.s1_k2.q.val();
+        self.s2_k3.d.next = self.s1_k3.q.val();
+        // stage 3: multipliers [12] and [14], U8 × U8 → U16
+        self.w_a[0].next = bit_cast::<16, 8>(self.s2_k2.q.val());
+        self.w_b[0].next = bit_cast::<16, 8>(self.s2_e.q.val().get_bits::<8>(0));
+        self.w_a[1].next = bit_cast::<16, 8>(self.s2_k3.q.val());
+        self.w_b[1].next = bit_cast::<16, 8>(self.s2_e.q.val().get_bits::<8>(8));
+        self.w_p[0].next = self.w_a[0].val() * self.w_b[0].val();
+        self.w_p[1].next = self.w_a[1].val() * self.w_b[1].val();
+        self.s3_p12.d.next = self.w_p[0].val().get_bits::<16>(0);
+        self.s3_p14.d.next = self.w_p[1].val().get_bits::<16>(0);
+        self.s3_k1.d.next = self.s2_k1.q.val();
+        self.s3_cd.d.next = self.s2_c.q.val().get_bits::<8>(0);
+        self.s3_neg.d.next = self.s2_c.q.val().get_bit(8);
+        // stages 4–5: /255, rounded
+        self.div12.num.next = self.s3_p12.q.val();
+        self.div14.num.next = self.s3_p14.q.val();
+        self.k1_dly.d.next = self.s3_k1.q.val();
+        self.cd_dly.d.next = self.s3_cd.q.val();
+        self.neg_dly.d.next = self.s3_neg.q.val();
+        // stage 6: multiplier [20] and adder [22]
+        self.w_c.next = bit_cast::<16, 8>(self.div14.quot.val());
+        self.w_cd.next = bit_cast::<16, 8>(self.cd_dly.q.val());
+        self.w_p20.next = self.w_c.val() * self.w_cd.val();
+        self.s6_p20.d.next = self.w_p20.val().get_bits::<16>(0);
+        self.s6_a22.d.next = bit_cast::<9, 8>(self.k1_dly.q.val()) + bit_cast::<9, 8>(self.div12.quot.val());
+        self.s6_neg.d.next = self.neg_dly.q.val();
+        // stages 7–8: /255, rounded
+        self.div20.num.next = self.s6_p20.q.val();
+        self.a22_dly.d.next = self.s6_a22.q.val();
+        self.neg2_dly.d.next = self.s6_neg.q.val();
+        // stage 9: add/subtract [24] chosen by the sign bit [26]; 11-bit two's complement, no wrap (−255..765)
+        self.w_a22.next = bit_cast::<11, 9>(self.a22_dly.q.val());
+        self.w_t20.next = bit_cast::<11, 8>(self.div20.quot.val());
+        if self.neg2_dly.q.val() {
+            self.s9_sum.d.next = self.w_a22.val() - self.w_t20.val();
+        } else {
+            self.s9_sum.d.next = self.w_a22.val() + self.w_t20.val();
+        }
+        // stage 10: clamp [28]: negative → 0, above 255 → 255
+        if self.s9_sum.q.val().get_bit(10) {
+            self.s10_shade.d.next = 0.into();
+        } else if self.s9_sum.q.val().get_bits::<2>(8).any() {
+            self.s10_shade.d.next = 255.into();
+        } else {
+            self.s10_shade.d.next = self.s9_sum.q.val().get_bits::<8>(0);
+        }
+        self.s10_sum.d.next = self.s9_sum.q.val();
+        self.sum.next = self.s10_sum.q.val();
+        self.shade.next = self.s10_shade.q.val();
+        self.valid_out.next = self.valid.q.val();
+    }
+}
+
+stream_unit!(PolarShade, "polar_shade", LATENCY,
+    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8],
+    outputs: [sum: 11, shade: 8]);

@@ -1,0 +1,107 @@
+//! `power`: the power unit [30] of seed 000's FIG. 3, `y = 255·(x/255)^p` with p = pw/4 (U6.2), by a log table,
+//! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 6:
+//! 1 inputs registered; 2 L(x) (table); 3 e = pw·L; 4 g = round(e >> 6), n = min(g >> 8, 9), f = g mod 256;
+//! 5 E(f) (table); 6 y = ((E >> (n + 6)) + 1) >> 1, which is (E + 2^(n+6)) >> (n + 7), and x = 0 overrides.
+
+use crate::delay::Delay;
+use crate::stream_unit;
+use crate::tables::{ExpTable, LogTable};
+use rust_hdl::prelude::*;
+
+pub const LATENCY: usize = 6;
+
+type U8 = Bits<8>;
+
+#[derive(LogicBlock, Default)]
+pub struct Power {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub x: Signal<In, U8>,
+    pub pw: Signal<In, U8>,
+    pub valid_out: Signal<Out, Bit>,
+    pub y: Signal<Out, U8>,
+    log: LogTable,
+    exp: ExpTable,
+    s1_x: DFF<U8>,
+    s1_pw: DFF<U8>,
+    // stage 2: L(x), Uq3.12
+    s2_l: DFF<Bits<15>>,
+    s2_pw: DFF<U8>,
+    // stage 3: e = pw·L, Uq9.14 (U23)
+    s3_e: DFF<Bits<23>>,
+    // stage 4: n (0..9) and f
+    s4_n: DFF<Bits<4>>,
+    s4_f: DFF<U8>,
+    // stage 5: E(f) (U15) and the shift n + 6
+    s5_e: DFF<Bits<15>>,
+    s5_sh: DFF<Bits<4>>,
+    // stage 6
+    s6_y: DFF<U8>,
+    // x = 0 and pw = 0, beside the stages
+    zero_dly: Delay<Bit, 4>,
+    pw0_dly: Delay<Bit, 4>,
+    valid: Delay<Bit, LATENCY>,
+    w_l: Signal<Local, Bits<16>>,
+    w_p: Signal<Local, Bits<16>>,
+    w_e: Signal<Local, Bits<32>>,
+    w_g: Signal<Local, Bits<23>>,
+    w_n: Signal<Local, Bits<9>>,
+    w_w: Signal<Local, Bits<15>>,
+    w_w1: Signal<Local, Bits<15>>,
+    w_y: Signal<Local, Bits<15>>,
+}
+
+impl Logic for Power {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s1_x, s1_pw, s2_l, s2_pw, s3_e, s4_n, s4_f, s5_e, s5_sh, s6_y);
+        self.zero_dly.clock.next = self.clock.val();
+        self.pw0_dly.clock.next = self.clock.val();
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
+        // stage 1 (x = 0 and pw = 0 are flagged from the registered inputs, so their delay lines are 4 long)
+        self.s1_x.d.next = self.x.val();
+        self.s1_pw.d.next = self.pw.val();
+        self.zero_dly.d.next = !self.s1_x.q.val().any();
+        self.pw0_dly.d.next = !self.s1_pw.q.val().any();
+        // stage 2: the log table
+        self.log.address.next = self.s1_x.q.val();
+        self.s2_l.d.next = self.log.data.val();
+        self.s2_pw.d.next = self.s1_pw.q.val();
+        // stage 3: pw·L, U8 × U15 → U23
+        self.w_l.next = bit_cast::<16, 15>(self.s2_l.q.val());
+        self.w_p.next = bit_cast::<16, 8>(self.s2_pw.q.val());
+        self.w_e.next = self.w_l.val() * self.w_p.val();
+        self.s3_e.d.next = self.w_e.val().get_bits::<23>(0);
+        // stage 4: g = (e + 32) >> 6 (round half up; ≤ 2^23 − 1 + 32 fits U23 since e ≤ 255·32,745), split
+        self.w_g.next = self.s3_e.q.val() + 32;
+        self.s4_f.d.next = self.w_g.val().get_bits::<8>(6);
+        self.w_n.next = self.w_g.val().get_bits::<9>(14);
+        if self.w_n.val() > 9 {
+            self.s4_n.d.next = 9.into();
+        } else {
+            self.s4_n.d.next = self.w_n.val().get_bits::<4>(0);
+        }
+        // stage 5: the exp table; shift = n + 6 ≤ 15
+        self.exp.address.next = self.s4_f.q.val();
+        self.s5_e.d.next = self.exp.data.val();
+        self.s5_sh.d.next = self.s4_n.q.val() + 6;
+        // stage 6: round while shifting: ((E >> (n + 6)) + 1) >> 1
+        self.w_w.next = self.s5_e.q.val() >> self.s5_sh.q.val();
+        self.w_w1.next = self.w_w.val() + 1; // ≤ 511: no wrap
+        self.w_y.next = self.w_w1.val() >> 1;
+        if self.zero_dly.q.val() {
+            if self.pw0_dly.q.val() {
+                self.s6_y.d.next = 255.into(); // 0^0 = 1
+            } else {
+                self.s6_y.d.next = 0.into();
+            }
+        } else {
+            self.s6_y.d.next = self.w_y.val().get_bits::<8>(0);
+        }
+        self.y.next = self.s6_y.q.val();
+        self.valid_out.next = self.valid.q.val();
+    }
+}
+
+stream_unit!(Power, "power", LATENCY, inputs: [x: 8, pw: 8], outputs: [y: 8]);

@@ -1,0 +1,67 @@
+//! `polar_pipeline`: seed 000's first embodiment end to end, one pixel per clock (FIG. 1 and FIG. 3):
+//! texel (S, R) + surface (k1, k2, k3, Q, p) → polar_shade → power → α → blend(src, dst).
+//! Every stage is the unit of the same name; this file only wires them, as the rtl top does.
+
+use crate::polar_encode::Scale;
+use crate::unit::{Port, UnitModel};
+use crate::{blend, polar_shade, power};
+
+pub const INPUTS: &[Port] = &[
+    Port::u("s", 8), Port::u("r", 8), Port::u("q", 8),
+    Port::u("k1", 8), Port::u("k2", 8), Port::u("k3", 8), Port::u("pw", 8),
+    Port::u("mode", 1),
+    Port::u("src_r", 8), Port::u("src_g", 8), Port::u("src_b", 8),
+    Port::u("dst_r", 8), Port::u("dst_g", 8), Port::u("dst_b", 8),
+];
+pub const OUTPUTS: &[Port] = &[Port::u("alpha", 8), Port::u("out_r", 8), Port::u("out_g", 8), Port::u("out_b", 8)];
+
+/// The shade before the power unit, the alpha after it, and the blended colour.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Trace {
+    pub sum: i64,
+    pub shade: i64,
+    pub alpha: i64,
+    pub out: [i64; 3],
+}
+
+pub fn exact_trace(sc: Scale, i: &[i64]) -> Trace {
+    let (sum, shade) = polar_shade::exact(sc, i[0], i[1], i[2], i[3], i[4], i[5]);
+    let alpha = power::exact(shade, i[6]);
+    let out = std::array::from_fn(|c| blend::exact_channel(alpha, i[7], i[8 + c], i[11 + c]));
+    Trace { sum, shade, alpha, out }
+}
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    let t = exact_trace(Scale::Seed, i);
+    vec![t.alpha, t.out[0], t.out[1], t.out[2]]
+}
+
+fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
+}
+
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    let colours = [1, 200, 150, 100, 10, 20, 30];
+    let mut v = vec![];
+    for shade in polar_shade::hard_cases() {
+        for pw in [4, 255] {
+            let mut x = shade.clone();
+            x.push(pw);
+            x.extend_from_slice(&colours);
+            v.push(x);
+        }
+    }
+    // modulate mode with p = 0 (α = 255 whatever the shade)
+    v.push(vec![0, 128, 0, 0, 0, 255, 0, 0, 200, 150, 100, 10, 20, 30]);
+    v
+}
+
+pub static MODEL: UnitModel = UnitModel {
+    name: "polar_pipeline",
+    inputs: INPUTS,
+    outputs: OUTPUTS,
+    exact: exact_ports,
+    random,
+    exhaustive: None,
+    hard_cases,
+};
