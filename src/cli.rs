@@ -56,6 +56,9 @@ enum Cmd {
         directions: usize,
         #[arg(long, default_value_t = 200_000)]
         samples: usize,
+        /// also cost every sin/cos table size with yosys (iCE40 LUT4 / FF / BRAM)
+        #[arg(long)]
+        lut_cost: bool,
     },
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
@@ -64,7 +67,28 @@ enum Cmd {
         /// image side in pixels (16..=1024)
         #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(16..=1024))]
         size: u32,
+        /// angle scale of the polar path: the seed's (256 = 90°/360°) or the Dreamcast toolchains' (255)
+        #[arg(long, value_enum, default_value_t = PolarScale::Seed)]
+        polar_scale: PolarScale,
+        /// skip yosys and nextpnr (the hardware-cost rows; minutes on the first run, cached after)
+        #[arg(long)]
+        no_synth: bool,
     },
+}
+
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum PolarScale {
+    Seed,
+    Dc255,
+}
+
+impl From<PolarScale> for vectors::polar_encode::Scale {
+    fn from(s: PolarScale) -> Self {
+        match s {
+            PolarScale::Seed => vectors::polar_encode::Scale::Seed,
+            PolarScale::Dc255 => vectors::polar_encode::Scale::Dc255,
+        }
+    }
 }
 
 /// Run `$body` with `U` bound to the rtl block of the unit called `$name`.
@@ -80,9 +104,10 @@ macro_rules! with_unit {
             "blend" => { type $u = rtl::blend::Blend; $body }
             "cart_pipeline" => { type $u = rtl::cart_pipeline::CartPipeline; $body }
             "sincos" => { type $u = rtl::sincos::SinCos; $body }
-            "polar_shade" => { type $u = rtl::polar_shade::PolarShade; $body }
+            "polar_shade" => { type $u = rtl::polar_shade::PolarShade<false>; $body }
             "power" => { type $u = rtl::power::Power; $body }
-            "polar_pipeline" => { type $u = rtl::polar_pipeline::PolarPipeline; $body }
+            "polar_pipeline" => { type $u = rtl::polar_pipeline::PolarPipelineSeed; $body }
+            "polar_pipeline_dc" => { type $u = rtl::polar_pipeline::PolarPipelineDc; $body }
             other => Err(format!("`{other}` has no rtl block (cart_encode and polar_encode are software only)")),
         }
     };
@@ -156,8 +181,11 @@ pub fn main() -> Result<(), String> {
             let r = with_unit!(name.as_str(), U => synth::ice40::synth_and_place::<U>(&d, freq))?;
             crate::report::synth_row(&r);
         }
-        Cmd::Accuracy { directions, samples } => crate::report::accuracy(directions, samples),
-        Cmd::Demo { out, size } => crate::demo::run(&out, size as usize)?,
+        Cmd::Accuracy { directions, samples, lut_cost } => {
+            crate::report::accuracy(directions, samples);
+            crate::report::lut_sizes(lut_cost)?;
+        }
+        Cmd::Demo { out, size, polar_scale, no_synth } => crate::demo::run(&out, size as usize, polar_scale.into(), !no_synth)?,
     }
     Ok(())
 }

@@ -11,7 +11,7 @@ pub fn accuracy(directions: usize, samples: usize) {
     for r in sim::accuracy::units(samples, 1) {
         stat_line(&r.unit, &r.metric, &r.stats);
     }
-    for r in sim::accuracy::encoders(directions, 2) {
+    for r in sim::accuracy::encoders(directions, 2).into_iter().chain(sim::accuracy::polar_encoders(directions, 2)) {
         stat_line(&r.unit, &r.metric, &r.stats);
     }
     println!("\nnormalise seed table and Newton steps (model; the rtl has 10 table bits, no Newton step):");
@@ -19,6 +19,32 @@ pub fn accuracy(directions: usize, samples: usize) {
     for (t, n, s) in sim::accuracy::normaliser_tradeoff(samples, 3) {
         println!("{t:>11} {n:>7} {:>24.4} {:>9.4}", s.mean(), s.max);
     }
+}
+
+/// The sine/cosine LUT-size table: entries and width against error (every 10-bit angle) and, when `cost` is on,
+/// against what yosys makes of the table for iCE40 (a registered ROM of entries × 2·width bits).
+pub fn lut_sizes(cost: bool) -> Result<(), String> {
+    println!("\nsin/cos table size and width (elevation, 10-bit angle in; error in 8-bit LSB; the rtl has 256 × 8):");
+    println!("{:>8} {:>6} {:>10} {:>9} {:>7} {:>6} {:>5} {:>5}", "entries", "width", "mean", "max", "max at", "LUT4", "FF", "BRAM");
+    let dir = std::env::temp_dir().join(format!("bumprtl-lut-{}", std::process::id()));
+    for r in sim::accuracy::sincos_sizes() {
+        let c = if cost {
+            let tb = r.entries.trailing_zeros();
+            let table = vectors::sincos::elevation_table(vectors::polar_encode::Scale::Seed, tb, r.width);
+            let words: Vec<u64> = table.iter().map(|&e| vectors::sincos::pack_elevation(e, r.width)).collect();
+            Some(synth::ice40::synth_rom(&dir.join(format!("t{tb}w{}", r.width)), &words, tb as usize, 2 * r.width as usize)?)
+        } else {
+            None
+        };
+        let f = |x: Option<u64>| x.map(|v| v.to_string()).unwrap_or("-".into());
+        println!(
+            "{:>8} {:>6} {:>10.4} {:>9.4} {:>7} {:>6} {:>5} {:>5}",
+            r.entries, r.width, r.mean_lsb8, r.max_lsb8, r.max_at,
+            f(c.as_ref().map(|c| c.lut4)), f(c.as_ref().map(|c| c.ff)), f(c.as_ref().map(|c| c.bram))
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    Ok(())
 }
 
 pub fn synth_row(r: &synth::ice40::SynthReport) {

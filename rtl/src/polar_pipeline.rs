@@ -1,7 +1,7 @@
 //! `polar_pipeline`: seed 000's first embodiment, one pixel per clock, built from the unit blocks themselves:
 //! polar_shade(S, R, Q, k1, k2, k3) → power(p) → α → blend(src, dst).
 //! p rides beside the shade unit in a DFF chain; the mode in another; the six colours in a block-RAM delay line.
-//! Latency 20 = polar_shade 10 + power 6 + blend 4.
+//! Latency 21 = polar_shade 10 + power 7 + blend 4.
 
 use crate::blend::Blend;
 use crate::delay::Delay;
@@ -14,11 +14,12 @@ use rust_hdl::prelude::*;
 type U8 = Bits<8>;
 
 pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
-pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 16
-pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 20
+pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 17
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 21
 
+/// `DC`: the Dreamcast toolchains' angle scale in the shade unit's tables (unit `polar_pipeline_dc`).
 #[derive(LogicBlock, Default)]
-pub struct PolarPipeline {
+pub struct PolarPipeline<const DC: bool> {
     pub clock: Signal<In, Clock>,
     pub valid_in: Signal<In, Bit>,
     pub s: Signal<In, U8>,
@@ -40,7 +41,7 @@ pub struct PolarPipeline {
     pub out_r: Signal<Out, U8>,
     pub out_g: Signal<Out, U8>,
     pub out_b: Signal<Out, U8>,
-    pub shader: PolarShade,
+    pub shader: PolarShade<DC>,
     pub power: Power,
     pub blend: Blend,
     pw_dly: Delay<U8, AT_POWER>,
@@ -49,7 +50,7 @@ pub struct PolarPipeline {
     alpha_dly: Delay<U8, 4>,
 }
 
-impl Logic for PolarPipeline {
+impl<const DC: bool> Logic for PolarPipeline<DC> {
     #[hdl_gen]
     fn update(&mut self) {
         self.shader.clock.next = self.clock.val();
@@ -98,6 +99,13 @@ impl Logic for PolarPipeline {
     }
 }
 
-stream_unit!(PolarPipeline, "polar_pipeline", LATENCY,
+stream_unit!(PolarPipeline<false>, "polar_pipeline", LATENCY,
     inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8, pw: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
     outputs: [alpha: 8, out_r: 8, out_g: 8, out_b: 8]);
+stream_unit!(PolarPipeline<true>, "polar_pipeline_dc", LATENCY,
+    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8, pw: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
+    outputs: [alpha: 8, out_r: 8, out_g: 8, out_b: 8]);
+
+/// The polar pipeline in the seed's angle scale (the default) and in the Dreamcast toolchains'.
+pub type PolarPipelineSeed = PolarPipeline<false>;
+pub type PolarPipelineDc = PolarPipeline<true>;

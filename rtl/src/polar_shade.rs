@@ -20,8 +20,9 @@ pub const LATENCY: usize = 10;
 type U8 = Bits<8>;
 type S11 = Bits<11>; // two's complement
 
+/// `DC`: the Dreamcast toolchains' angle scale (255 steps) in both tables; the seed's (256) when false.
 #[derive(LogicBlock, Default)]
-pub struct PolarShade {
+pub struct PolarShade<const DC: bool> {
     pub clock: Signal<In, Clock>,
     pub valid_in: Signal<In, Bit>,
     pub s: Signal<In, U8>,
@@ -33,8 +34,8 @@ pub struct PolarShade {
     pub valid_out: Signal<Out, Bit>,
     pub sum: Signal<Out, S11>,
     pub shade: Signal<Out, U8>,
-    sin_cos: ElevationTable,
-    cos_sign: CosSignTable,
+    sin_cos: ElevationTable<DC>,
+    cos_sign: CosSignTable<DC>,
     // stage 1
     s1_s: DFF<U8>,
     s1_d: DFF<U8>,
@@ -84,7 +85,7 @@ pub struct PolarShade {
     w_t20: Signal<Local, S11>,
 }
 
-impl Logic for PolarShade {
+impl<const DC: bool> Logic for PolarShade<DC> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_s, s1_d, s1_k1, s1_k2, s1_k3, s2_e, s2_c, s2_k1, s2_k2, s2_k3, s3_p12, s3_p14,
@@ -166,6 +167,6 @@ impl Logic for PolarShade {
     }
 }
 
-stream_unit!(PolarShade, "polar_shade", LATENCY,
+stream_unit!(PolarShade<false>, "polar_shade", LATENCY,
     inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8],
     outputs: [sum: 11, shade: 8]);

@@ -17,7 +17,7 @@ pub struct SinCos {
     pub valid_out: Signal<Out, Bit>,
     pub sin: Signal<Out, Bits<8>>,
     pub cos: Signal<Out, Bits<8>>,
-    lut: ElevationTable,
+    lut: ElevationTable<false>,
     s1_addr: DFF<Bits<8>>,
     s2_e: DFF<Bits<16>>,
     valid: Delay<Bit, LATENCY>,

@@ -11,18 +11,23 @@ fn unorm8(x: f64) -> u64 {
     (x * 255.0).round() as u64
 }
 
-/// sin and cos of a quarter turn in 256 steps (seed scale: entry i is i·90°/256), UNORM8: sin low, cos high.
-pub fn elevation() -> Vec<u64> {
+/// Steps per quarter / full turn: 256 in the seed's scale, 255 in the Dreamcast toolchains' (`dc`).
+fn steps(dc: bool) -> f64 {
+    if dc { 255.0 } else { 256.0 }
+}
+
+/// sin and cos of a quarter turn in 256 entries (entry i is i·90°/steps), UNORM8: sin low, cos high.
+pub fn elevation(dc: bool) -> Vec<u64> {
     (0..256).map(|i| {
-        let a = i as f64 * FRAC_PI_2 / 256.0;
+        let a = i as f64 * FRAC_PI_2 / steps(dc);
         unorm8(a.sin()) | (unorm8(a.cos()) << 8)
     }).collect()
 }
 
-/// |cos| of a full turn in 256 steps, UNORM8, with the sign (cos < 0) in bit 8.
-pub fn cos_sign() -> Vec<u64> {
+/// |cos| of a full turn in 256 entries (entry d is d·360°/steps), UNORM8, with the sign (cos < 0) in bit 8.
+pub fn cos_sign(dc: bool) -> Vec<u64> {
     (0..256).map(|d| {
-        let c = (d as f64 * TAU / 256.0).cos();
+        let c = (d as f64 * TAU / steps(dc)).cos();
         unorm8(c.abs()) | (((c < 0.0) as u64) << 8)
     }).collect()
 }
@@ -35,6 +40,34 @@ pub fn log2() -> Vec<u64> {
 /// 255·2^(−f/256)·2^7, rounded (U15).
 pub fn exp2() -> Vec<u64> {
     (0..256).map(|f| (255.0 * (-(f as f64) / 256.0).exp2() * 128.0).round() as u64).collect()
+}
+
+/// A table whose contents depend on the angle scale: `DC` = the Dreamcast toolchains' 255 steps.
+macro_rules! scaled_table_block {
+    ($(#[$doc:meta])* $name:ident, $d:literal, $contents:path) => {
+        $(#[$doc])*
+        #[derive(LogicBlock)]
+        pub struct $name<const DC: bool> {
+            pub address: Signal<In, Bits<8>>,
+            pub data: Signal<Out, Bits<$d>>,
+            rom: ROM<Bits<$d>, 8>,
+        }
+
+        impl<const DC: bool> Default for $name<DC> {
+            fn default() -> Self {
+                let rom = ROM::from($contents(DC).into_iter().map(Bits::<$d>::from));
+                Self { address: Default::default(), data: Default::default(), rom }
+            }
+        }
+
+        impl<const DC: bool> Logic for $name<DC> {
+            #[hdl_gen]
+            fn update(&mut self) {
+                self.rom.address.next = self.address.val();
+                self.data.next = self.rom.data.val();
+            }
+        }
+    };
 }
 
 macro_rules! table_block {
@@ -64,10 +97,10 @@ macro_rules! table_block {
     };
 }
 
-table_block!(
+scaled_table_block!(
     /// The sine/cosine unit [10]: S → (sin S, cos S).
     ElevationTable, 16, elevation);
-table_block!(
+scaled_table_block!(
     /// The cosine unit with sign [18]: (R − Q) mod 256 → |cos|, sign.
     CosSignTable, 9, cos_sign);
 table_block!(

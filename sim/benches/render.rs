@@ -8,7 +8,7 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("demo scene 64x64");
     g.sample_size(10);
     g.bench_function("ideal (f64, scene set-up included)", |b| b.iter(|| scene.prepare().ideal_p.len()));
-    g.bench_function("bit-exact model", |b| b.iter(|| sim::render::model(&p).p.len()));
+    g.bench_function("bit-exact model", |b| b.iter(|| sim::render::model(&vectors::cart_pipeline::MODEL, p.size, &p.inputs).p.len()));
     g.finish();
 }
 

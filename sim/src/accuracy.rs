@@ -4,7 +4,8 @@
 use rand::SeedableRng;
 use vectors::cart_encode::{self, Encoder};
 use vectors::stats::{angle_deg, ErrorStats};
-use vectors::{bilinear, blend, cart_decode, dot3, gloss, light_iter, normalise};
+use vectors::polar_encode::{self, Scale};
+use vectors::{bilinear, blend, cart_decode, dot3, gloss, light_iter, normalise, polar_shade, power, sincos};
 
 pub struct Row {
     pub unit: String,
@@ -71,7 +72,59 @@ pub fn units(samples: usize, seed: u64) -> Vec<Row> {
     rows.push(row("light_iter", "Sq8.2 LSB", li));
     rows.push(row("bilinear", "8-bit LSB", bi));
     rows.push(row("blend", "8-bit LSB", bl));
+    rows.extend(polar_units(samples, seed));
     rows
+}
+
+/// The polar path's units against their ideals: the sine/cosine table on every 10-bit angle, the shade (S11
+/// before the clamp, and the clamped U8) against equation 3 on the angles the codes stand for, the power unit
+/// against `powf` on every (x, p).
+fn polar_units(samples: usize, seed: u64) -> Vec<Row> {
+    let mut rows = vec![];
+    let mut sc = ErrorStats::default();
+    for a in 0..1i64 << sincos::ANGLE_BITS {
+        let (s, c) = sincos::exact_with(Scale::Seed, sincos::TABLE_BITS, sincos::WIDTH, a);
+        let (is, ic) = sincos::ideal(a);
+        sc.add((s as f64 - is).abs().max((c as f64 - ic).abs()), || format!("angle {a}"));
+    }
+    rows.push(row("sincos", "8-bit LSB, every 10-bit angle, 256 entries", sc));
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed ^ 0x9e37);
+    for scale in [Scale::Seed, Scale::Dc255] {
+        let (mut pre, mut clamped) = (ErrorStats::default(), ErrorStats::default());
+        for _ in 0..samples {
+            let v = (polar_shade::MODEL.random)(&mut rng);
+            let (sum, shade) = polar_shade::exact(scale, v[0], v[1], v[2], v[3], v[4], v[5]);
+            let i = polar_shade::ideal(scale, v[0], v[1], v[2], v[3], v[4], v[5]);
+            pre.add((sum as f64 - i).abs(), || format!("{v:?}"));
+            clamped.add((shade as f64 - i.clamp(0.0, 255.0)).abs(), || format!("{v:?}"));
+        }
+        let tag = if scale == Scale::Seed { "seed scale" } else { "Dreamcast scale" };
+        rows.push(row("polar_shade", &format!("8-bit LSB, S11 before the clamp, {tag}"), pre));
+        rows.push(row("polar_shade", &format!("8-bit LSB, clamped shade, {tag}"), clamped));
+    }
+    let mut pw = ErrorStats::default();
+    for x in 0..256 {
+        for p in 0..256 {
+            pw.add((power::exact(x, p) as f64 - power::ideal(x, p)).abs(), || format!("x={x} p={}", p as f64 / 4.0));
+        }
+    }
+    rows.push(row("power", "8-bit LSB against powf, all 2^16 (x, p)", pw));
+    rows
+}
+
+/// Polar S8 R8 encoding, both scales: encode then decode `n` random hemisphere directions, degrees.
+pub fn polar_encoders(n: usize, seed: u64) -> Vec<Row> {
+    [Scale::Seed, Scale::Dc255]
+        .into_iter()
+        .map(|sc| row("polar_encode", &format!("degrees, {}", sc.name()), polar_encode::encoding_error(sc, n, seed)))
+        .collect()
+}
+
+/// The sine/cosine LUT sizes and widths of the LUT-size table, model error only (the cost comes from `synth`).
+pub const LUT_SIZES: &[(u32, u32)] = &[(6, 8), (8, 8), (10, 8), (6, 10), (8, 10), (10, 10), (6, 12), (8, 12), (10, 12)];
+
+pub fn sincos_sizes() -> Vec<sincos::SizeRow> {
+    LUT_SIZES.iter().map(|&(tb, w)| sincos::size_error(tb, w)).collect()
 }
 
 /// Encode then decode `n` random hemisphere directions with each encoder: degrees against the original.

@@ -1,16 +1,17 @@
-//! A scene through the four paths. The ideal and the model are computed here; rust-hdl runs the `cart_pipeline`
-//! block; Verilator runs its exported Verilog. The last three must agree bit for bit.
+//! A scene through the four paths. The ideal is the scene's; the model, the rust-hdl block and Verilator on the
+//! block's exported Verilog run a pipeline unit (`cart_pipeline` or `polar_pipeline`: a shade first, then the
+//! blended colour, as both name their outputs). The last three must agree bit for bit.
 
-use rtl::cart_pipeline::CartPipeline;
 use rtl::stream::Runner;
+use rtl::StreamUnit;
 use std::path::Path;
 use std::time::Instant;
 use synth::cosim::{self, Simulator};
-use vectors::cart_pipeline::MODEL;
 use vectors::fixed::to_pattern;
-use vectors::scene::Prepared;
+use vectors::UnitModel;
 
-/// One path's image: per pixel P (U10) and the blended colour.
+/// One path's image: per pixel the shade output (P, U10, for the Cartesian pipeline; α, U8, for the polar one)
+/// and the blended colour.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Image {
     pub size: usize,
@@ -25,8 +26,8 @@ impl Image {
     }
 }
 
-fn patterns(p: &Prepared) -> Vec<Option<Vec<u64>>> {
-    p.inputs.iter().map(|v| Some(v.iter().zip(MODEL.inputs).map(|(&x, port)| to_pattern(x, port.bits)).collect())).collect()
+fn patterns(m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Option<Vec<u64>>> {
+    inputs.iter().map(|v| Some(v.iter().zip(m.inputs).map(|(&x, port)| to_pattern(x, port.bits)).collect())).collect()
 }
 
 fn from_outputs(size: usize, outs: &[Vec<u64>], seconds: f64) -> Image {
@@ -38,33 +39,33 @@ fn from_outputs(size: usize, outs: &[Vec<u64>], seconds: f64) -> Image {
     }
 }
 
-pub fn model(p: &Prepared) -> Image {
+pub fn model(m: &UnitModel, size: usize, inputs: &[Vec<i64>]) -> Image {
     let t = Instant::now();
-    let outs: Vec<Vec<u64>> = p.inputs.iter().map(|v| (MODEL.exact)(v).iter().map(|&x| x as u64).collect()).collect();
-    from_outputs(p.size, &outs, t.elapsed().as_secs_f64())
+    let outs: Vec<Vec<u64>> = inputs.iter().map(|v| (m.exact)(v).iter().map(|&x| x as u64).collect()).collect();
+    from_outputs(size, &outs, t.elapsed().as_secs_f64())
 }
 
 /// rust-hdl, loop-driven; `tick` is called every 1,024 pixels.
-pub fn rust_hdl(p: &Prepared, tick: &dyn Fn(usize)) -> Image {
+pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> Image {
     let t = Instant::now();
-    let mut r = Runner::<CartPipeline>::new();
-    let slots = patterns(p);
+    let mut r = Runner::<U>::new();
+    let slots = patterns(m, inputs);
     let got = r.run(slots.into_iter().enumerate().map(|(k, s)| {
         if k % 1024 == 0 {
             tick(k);
         }
         s
     }));
-    from_outputs(p.size, &got.outputs, t.elapsed().as_secs_f64())
+    from_outputs(size, &got.outputs, t.elapsed().as_secs_f64())
 }
 
 /// The exported Verilog under Verilator (built in `dir`); the time counts the run, not the build.
-pub fn verilator(p: &Prepared, dir: &Path) -> Result<Image, String> {
-    let built = cosim::build::<CartPipeline>(Simulator::Verilator, dir)?;
-    let slots = patterns(p);
+pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path) -> Result<Image, String> {
+    let built = cosim::build::<U>(Simulator::Verilator, dir)?;
+    let slots = patterns(m, inputs);
     let t = Instant::now();
     let got = built.run(&slots)?;
-    Ok(from_outputs(p.size, &got.outputs, t.elapsed().as_secs_f64()))
+    Ok(from_outputs(size, &got.outputs, t.elapsed().as_secs_f64()))
 }
 
 /// Write an RGB image as PNG, whole or not at all.

@@ -1,6 +1,6 @@
 //! polar_shade: every (S, R − Q) pair under a sweep of k's (2^19 vectors) in rust-hdl and Verilator; hard cases
 //! (R − Q wrap, S at its ends, both S11 extremes, k's at 0 and max, a light on the horizon) with bubbles.
-use rtl::polar_shade::PolarShade;
+type PolarShade = rtl::polar_shade::PolarShade<false>;
 use synth::cosim::Simulator;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::polar_encode::Scale;

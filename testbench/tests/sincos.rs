@@ -30,10 +30,18 @@ fn sincos_exhaustive_icarus() {
 fn rtl_tables_are_the_models() {
     let e = vectors::sincos::elevation_table(Scale::Seed, 8, 8);
     let c = vectors::sincos::cos_sign_table(Scale::Seed, 8);
-    let (re, rc) = (rtl::tables::elevation(), rtl::tables::cos_sign());
+    let (re, rc) = (rtl::tables::elevation(false), rtl::tables::cos_sign(false));
     for k in 0..256 {
         assert_eq!(re[k], vectors::sincos::pack_elevation(e[k], 8), "elevation entry {k}");
         assert_eq!(rc[k], vectors::sincos::pack_cos_sign(c[k], 8), "cosine entry {k}");
+    }
+    // and the Dreamcast scale's
+    let e = vectors::sincos::elevation_table(Scale::Dc255, 8, 8);
+    let c = vectors::sincos::cos_sign_table(Scale::Dc255, 8);
+    let (re, rc) = (rtl::tables::elevation(true), rtl::tables::cos_sign(true));
+    for k in 0..256 {
+        assert_eq!(re[k], vectors::sincos::pack_elevation(e[k], 8), "Dreamcast elevation entry {k}");
+        assert_eq!(rc[k], vectors::sincos::pack_cos_sign(c[k], 8), "Dreamcast cosine entry {k}");
     }
     let (l, x) = (rtl::tables::log2(), rtl::tables::exp2());
     for k in 0..256 {

@@ -31,9 +31,17 @@ pub fn exact_trace(sc: Scale, i: &[i64]) -> Trace {
     Trace { sum, shade, alpha, out }
 }
 
-fn exact_ports(i: &[i64]) -> Vec<i64> {
-    let t = exact_trace(Scale::Seed, i);
+fn ports(sc: Scale, i: &[i64]) -> Vec<i64> {
+    let t = exact_trace(sc, i);
     vec![t.alpha, t.out[0], t.out[1], t.out[2]]
+}
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    ports(Scale::Seed, i)
+}
+
+fn exact_ports_dc(i: &[i64]) -> Vec<i64> {
+    ports(Scale::Dc255, i)
 }
 
 fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
@@ -65,3 +73,18 @@ pub static MODEL: UnitModel = UnitModel {
     exhaustive: None,
     hard_cases,
 };
+
+/// The same pipeline with the Dreamcast toolchains' angle scale in its tables: maps made by those tools shade as
+/// their authors saw them.
+pub static MODEL_DC: UnitModel = UnitModel {
+    name: "polar_pipeline_dc",
+    inputs: INPUTS,
+    outputs: OUTPUTS,
+    exact: exact_ports_dc,
+    random,
+    exhaustive: None,
+    hard_cases,
+};
+
+/// The pipeline's model for a scale, indexed by `Scale as usize`.
+pub static MODEL_FOR: [&UnitModel; 2] = [&MODEL, &MODEL_DC];

@@ -44,7 +44,12 @@ pub fn exact(x: i64, pw: i64) -> i64 {
 
 /// `powf`, ×255.
 pub fn ideal(x: i64, pw: i64) -> f64 {
-    255.0 * (x as f64 / 255.0).powf(pw as f64 / 4.0)
+    ideal_real(x as f64, pw)
+}
+
+/// `powf` on a real-valued x (8-bit units), as a float pipeline feeds it.
+pub fn ideal_real(x: f64, pw: i64) -> f64 {
+    255.0 * (x / 255.0).powf(pw as f64 / 4.0)
 }
 
 fn exact_ports(i: &[i64]) -> Vec<i64> {

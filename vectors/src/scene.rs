@@ -5,7 +5,8 @@
 //! and, beside it, the f64 ideal of every pixel.
 
 use crate::cart_encode::{self, Encoder};
-use crate::{cart_pipeline, gloss, light_iter};
+use crate::polar_encode::{self, Scale};
+use crate::{bilinear, cart_pipeline, gloss, light_iter, polar_pipeline};
 
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -96,14 +97,12 @@ impl Scene {
         [d[0] / l, d[1] / l, d[2] / l]
     }
 
-    pub fn prepare(&self) -> Prepared {
+    /// The rasteriser's work for every pixel, shared by both pipelines' set-up.
+    fn pixels(&self, normals: &[[f64; 3]]) -> Vec<Pixel> {
         let t = self.tex;
-        let normals: Vec<[f64; 3]> = (0..t * t).map(|k| self.texel_normal(k % t, k / t)).collect();
-        let texels: Vec<(u8, u8)> = normals.iter().map(|&n| cart_encode::encode(self.encoder, n)).collect();
         let corner = [self.light_dir(0.0, 0.0), self.light_dir(1.0, 0.0), self.light_dir(0.0, 1.0), self.light_dir(1.0, 1.0)];
-        let q: Vec<[i64; 3]> = corner.iter().map(|&d| light_iter::quantise_vertex(d)).collect();
         let n = self.size;
-        let mut p = Prepared { size: n, inputs: vec![], ideal_p: vec![], ideal_rgb: vec![], ideal_normal: vec![] };
+        let mut out = Vec::with_capacity(n * n);
         for py in 0..n {
             for px in 0..n {
                 let (u, v) = ((px as f64 + 0.5) / n as f64, (py as f64 + 0.5) / n as f64);
@@ -114,33 +113,9 @@ impl Scene {
                 let (i1, j1) = ((i0 + 1).min(t - 1), (j0 + 1).min(t - 1));
                 let ub = (((su - i0 as f64) * 256.0) as i64).min(255); // U8 blend factor, truncated
                 let vb = (((sv - j0 as f64) * 256.0) as i64).min(255);
-                let tx = |i: usize, j: usize| texels[j * t + i];
-                let mut x = vec![];
-                for (i, j) in [(i0, j0), (i1, j0), (i0, j1), (i1, j1)] {
-                    x.push(tx(i, j).0 as i64);
-                    x.push(tx(i, j).1 as i64);
-                }
-                x.push(ub);
-                x.push(vb);
-                // triangle (00, 10, 11) where u ≥ v, else (00, 11, 01); weights in 1/256, rounded
-                let (l, lf, w1, w2) = if u >= v {
-                    ([q[0], q[1], q[3]], [corner[0], corner[1], corner[3]], u - v, v)
-                } else {
-                    ([q[0], q[3], q[2]], [corner[0], corner[3], corner[2]], u, v - u)
-                };
-                for li in l {
-                    x.extend_from_slice(&li);
-                }
-                x.push((w1 * 256.0).round() as i64);
-                x.push((w2 * 256.0).round() as i64);
-                x.push(self.conc);
-                x.push(1);
-                x.extend_from_slice(&self.src);
-                x.extend_from_slice(&self.dst);
-                debug_assert_eq!(x.len(), cart_pipeline::INPUTS.len());
-                p.inputs.push(x);
-
-                // the ideal: the same bilinear blend of the float normals, the exact light at this point
+                // triangle (00, 10, 11) where u ≥ v, else (00, 11, 01)
+                let (tri, w1, w2) = if u >= v { ([0, 1, 3], u - v, v) } else { ([0, 3, 2], u, v - u) };
+                // the ideal normal: the same bilinear blend of the float normals, renormalised
                 let (fu, fv) = (ub as f64 / 256.0, vb as f64 / 256.0);
                 let nn = |i: usize, j: usize| normals[j * t + i];
                 let mut nrm = [0.0; 3];
@@ -150,23 +125,129 @@ impl Scene {
                 }
                 let ln = (nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]).sqrt();
                 nrm = nrm.map(|c| c / ln);
-                // the seed interpolates the vertex lights linearly and the pipeline renormalises: so does the ideal
+                // the seed interpolates the vertex lights linearly and renormalises: so does the ideal
+                let lf = tri.map(|k| corner[k]);
                 let mut ld = [0.0; 3];
                 for c in 0..3 {
                     ld[c] = lf[0][c] + (lf[1][c] - lf[0][c]) * w1 + (lf[2][c] - lf[0][c]) * w2;
                 }
                 let ll = (ld[0] * ld[0] + ld[1] * ld[1] + ld[2] * ld[2]).sqrt().max(1e-12);
                 ld = ld.map(|c| c / ll);
-                let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
-                let pi = gloss::ideal_real(self.conc, xd);
-                p.ideal_p.push(pi);
-                let a = pi / 1023.0 * 255.0;
-                p.ideal_rgb.push(std::array::from_fn(|c| {
-                    (self.src[c] as f64 * a + self.dst[c] as f64 * (255.0 - a)) / 255.0
-                }));
-                p.ideal_normal.push(nrm);
+                out.push(Pixel { corners: [(i0, j0), (i1, j0), (i0, j1), (i1, j1)], ub, vb, tri, w1, w2, normal: nrm, light: ld });
             }
+        }
+        out
+    }
+
+    fn normals(&self) -> Vec<[f64; 3]> {
+        let t = self.tex;
+        (0..t * t).map(|k| self.texel_normal(k % t, k / t)).collect()
+    }
+
+    fn blend_ideal(&self, alpha: f64) -> [f64; 3] {
+        std::array::from_fn(|c| (self.src[c] as f64 * alpha + self.dst[c] as f64 * (255.0 - alpha)) / 255.0)
+    }
+
+    pub fn prepare(&self) -> Prepared {
+        let t = self.tex;
+        let normals = self.normals();
+        let texels: Vec<(u8, u8)> = normals.iter().map(|&n| cart_encode::encode(self.encoder, n)).collect();
+        let corner = [self.light_dir(0.0, 0.0), self.light_dir(1.0, 0.0), self.light_dir(0.0, 1.0), self.light_dir(1.0, 1.0)];
+        let q: Vec<[i64; 3]> = corner.iter().map(|&d| light_iter::quantise_vertex(d)).collect();
+        let mut p = Prepared { size: self.size, inputs: vec![], ideal_p: vec![], ideal_rgb: vec![], ideal_normal: vec![] };
+        for px in self.pixels(&normals) {
+            let mut x = vec![];
+            for (i, j) in px.corners {
+                x.push(texels[j * t + i].0 as i64);
+                x.push(texels[j * t + i].1 as i64);
+            }
+            x.push(px.ub);
+            x.push(px.vb);
+            for k in px.tri {
+                x.extend_from_slice(&q[k]);
+            }
+            x.push((px.w1 * 256.0).round() as i64); // weights in 1/256, rounded
+            x.push((px.w2 * 256.0).round() as i64);
+            x.push(self.conc);
+            x.push(1);
+            x.extend_from_slice(&self.src);
+            x.extend_from_slice(&self.dst);
+            debug_assert_eq!(x.len(), cart_pipeline::INPUTS.len());
+            p.inputs.push(x);
+            let (nrm, ld) = (px.normal, px.light);
+            let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
+            let pi = gloss::ideal_real(self.conc, xd);
+            p.ideal_p.push(pi);
+            p.ideal_rgb.push(self.blend_ideal(pi / 1023.0 * 255.0));
+            p.ideal_normal.push(nrm);
         }
         p
     }
+
+    /// The same scene for the polar pipeline (seed 000, first embodiment): the same height map's normals
+    /// polar-encoded (S, R) in `scale`; the texture filtered the way the colour filter would, S and R bilinearly
+    /// blended as plain numbers (the seed's shortcoming 2: across R's 255 → 0 wrap this is wrong); one light per
+    /// surface (shortcoming 1: the hardware cannot interpolate polar lights), the direction at the quad's centre,
+    /// moved onto the horizon if below it (shortcoming 3), weight h; shade raised to p = pw/4. The ideal is the
+    /// Cartesian path's: the filtered float normal against the pixel's own light, max(0, (1 − h) + h·N·L)^p.
+    pub fn prepare_polar(&self, scale: Scale, pw: i64, h: f64) -> PreparedPolar {
+        let t = self.tex;
+        let normals = self.normals();
+        let codes: Vec<(i64, i64)> = normals.iter().map(|&n| polar_encode::encode_normal(scale, n)).collect();
+        let surface_dir = self.light_dir(0.5, 0.5);
+        let light = polar_encode::encode_light(scale, surface_dir, h);
+        let mut p = PreparedPolar {
+            size: self.size, light, surface_dir, inputs: vec![], ideal_alpha: vec![], ideal_rgb: vec![], straddles: vec![],
+            normal: vec![], light_dir: vec![],
+        };
+        for px in self.pixels(&normals) {
+            let c = px.corners.map(|(i, j)| codes[j * t + i]);
+            let s = bilinear::exact_channel(c[0].0, c[1].0, c[2].0, c[3].0, px.ub, px.vb, bilinear::F);
+            let r = bilinear::exact_channel(c[0].1, c[1].1, c[2].1, c[3].1, px.ub, px.vb, bilinear::F);
+            let (rmin, rmax) = c.iter().fold((255, 0), |(lo, hi), &(_, r)| (lo.min(r), hi.max(r)));
+            p.straddles.push(rmax - rmin > 128);
+            let mut x = vec![s, r, light.q, light.k1, light.k2, light.k3, pw, 1];
+            x.extend_from_slice(&self.src);
+            x.extend_from_slice(&self.dst);
+            debug_assert_eq!(x.len(), polar_pipeline::INPUTS.len());
+            p.inputs.push(x);
+            let (nrm, ld) = (px.normal, px.light);
+            let d = (1.0 - h) + h * (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]);
+            let a = 255.0 * d.clamp(0.0, 1.0).powf(pw as f64 / 4.0);
+            p.ideal_alpha.push(a);
+            p.ideal_rgb.push(self.blend_ideal(a));
+            p.normal.push(nrm);
+            p.light_dir.push(ld);
+        }
+        p
+    }
+}
+
+/// One pixel's rasterisation: the four texels and blend factors, the light triangle and weights, and the ideal
+/// normal and light.
+struct Pixel {
+    corners: [(usize, usize); 4],
+    ub: i64,
+    vb: i64,
+    tri: [usize; 3],
+    w1: f64,
+    w2: f64,
+    normal: [f64; 3],
+    light: [f64; 3],
+}
+
+/// The polar pipeline's inputs for every pixel, the surface's light, the ideal α (8-bit units) and colour, and
+/// which pixels filter across R's wrap.
+pub struct PreparedPolar {
+    pub size: usize,
+    /// the surface's one light, as encoded, and the direction it was encoded from (the quad centre's)
+    pub light: polar_encode::Light,
+    pub surface_dir: [f64; 3],
+    pub inputs: Vec<Vec<i64>>,
+    pub ideal_alpha: Vec<f64>,
+    pub ideal_rgb: Vec<[f64; 3]>,
+    pub straddles: Vec<bool>,
+    /// per pixel: the ideal (filtered float) normal and the pixel's own light direction
+    pub normal: Vec<[f64; 3]>,
+    pub light_dir: Vec<[f64; 3]>,
 }

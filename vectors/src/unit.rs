@@ -62,6 +62,7 @@ pub const UNITS: &[&UnitModel] = &[
     &crate::polar_shade::MODEL,
     &crate::power::MODEL,
     &crate::polar_pipeline::MODEL,
+    &crate::polar_pipeline::MODEL_DC,
 ];
 
 pub fn find(name: &str) -> Option<&'static UnitModel> {
