@@ -103,7 +103,7 @@ macro_rules! with_unit {
             "gloss" => { type $u = rtl::gloss::Gloss; $body }
             "blend" => { type $u = rtl::blend::Blend; $body }
             "cart_pipeline" => { type $u = rtl::cart_pipeline::CartPipeline; $body }
-            "sincos" => { type $u = rtl::sincos::SinCos; $body }
+            "sincos" => { type $u = rtl::sincos::SinCosUnit; $body }
             "polar_shade" => { type $u = rtl::polar_shade::PolarShade<false>; $body }
             "power" => { type $u = rtl::power::Power; $body }
             "polar_pipeline" => { type $u = rtl::polar_pipeline::PolarPipelineSeed; $body }

@@ -22,7 +22,7 @@ pub fn accuracy(directions: usize, samples: usize) {
 }
 
 /// The sine/cosine LUT-size table: entries and width against error (every 10-bit angle) and, when `cost` is on,
-/// against what yosys makes of the table for iCE40 (a registered ROM of entries × 2·width bits).
+/// against what yosys makes of the rtl block `SinCos<TB, W>` of that size for iCE40.
 pub fn lut_sizes(cost: bool) -> Result<(), String> {
     println!("\nsin/cos table size and width (elevation, 10-bit angle in; error in 8-bit LSB; the rtl has 256 × 8):");
     println!("{:>8} {:>6} {:>10} {:>9} {:>7} {:>6} {:>5} {:>5}", "entries", "width", "mean", "max", "max at", "LUT4", "FF", "BRAM");
@@ -30,9 +30,21 @@ pub fn lut_sizes(cost: bool) -> Result<(), String> {
     for r in sim::accuracy::sincos_sizes() {
         let c = if cost {
             let tb = r.entries.trailing_zeros();
-            let table = vectors::sincos::elevation_table(vectors::polar_encode::Scale::Seed, tb, r.width);
-            let words: Vec<u64> = table.iter().map(|&e| vectors::sincos::pack_elevation(e, r.width)).collect();
-            Some(synth::ice40::synth_rom(&dir.join(format!("t{tb}w{}", r.width)), &words, tb as usize, 2 * r.width as usize)?)
+            let d = dir.join(format!("t{tb}w{}", r.width));
+            use rtl::sincos::SinCos;
+            use synth::ice40::synth_unit;
+            Some(match (tb, r.width) {
+                (6, 8) => synth_unit::<SinCos<6, 8>>(&d),
+                (8, 8) => synth_unit::<SinCos<8, 8>>(&d),
+                (10, 8) => synth_unit::<SinCos<10, 8>>(&d),
+                (6, 10) => synth_unit::<SinCos<6, 10>>(&d),
+                (8, 10) => synth_unit::<SinCos<8, 10>>(&d),
+                (10, 10) => synth_unit::<SinCos<10, 10>>(&d),
+                (6, 12) => synth_unit::<SinCos<6, 12>>(&d),
+                (8, 12) => synth_unit::<SinCos<8, 12>>(&d),
+                (10, 12) => synth_unit::<SinCos<10, 12>>(&d),
+                other => return Err(format!("no rtl size {other:?} in the LUT-size table")),
+            }?)
         } else {
             None
         };

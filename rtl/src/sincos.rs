@@ -1,41 +1,116 @@
-//! `sincos`: the sine/cosine unit [10] of seed 000's FIG. 3 on its own: a 10-bit elevation angle (1024 = 90°)
-//! → sin and cos as UNORM8, from a 256-entry table (the ROM widget) addressed by the angle's top 8 bits
-//! (truncation). Latency 2: the address; the table.
+//! `sincos`: the sine/cosine unit [10] of seed 000's FIG. 3 on its own, with its table size and output width as
+//! parameters: a 10-bit elevation angle (1024 = 90°) → sin and cos as UNORM_W, from two 2^TB-entry tables (the
+//! ROM widget) addressed by the angle's top TB bits (truncation). Latency 2: the address; the tables.
+//! The unit `sincos` is `SinCos<8, 8>`, the size the polar shade unit uses; `bumprtl accuracy --lut-cost`
+//! synthesises the other sizes of the LUT-size table from this same block.
 
 use crate::delay::Delay;
-use crate::stream_unit;
-use crate::tables::ElevationTable;
 use rust_hdl::prelude::*;
+use rust_hdl::widgets::prelude::ROM;
+use std::f64::consts::FRAC_PI_2;
 
 pub const LATENCY: usize = 2;
+pub const ANGLE_BITS: usize = 10;
 
-#[derive(LogicBlock, Default)]
-pub struct SinCos {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub angle: Signal<In, Bits<10>>,
-    pub valid_out: Signal<Out, Bit>,
-    pub sin: Signal<Out, Bits<8>>,
-    pub cos: Signal<Out, Bits<8>>,
-    lut: ElevationTable<false>,
-    s1_addr: DFF<Bits<8>>,
-    s2_e: DFF<Bits<16>>,
-    valid: Delay<Bit, LATENCY>,
+/// Entry i of the tables, seed scale: (sin, cos) of i·90°/2^TB, rounded to UNORM_W. `vectors::sincos` computes
+/// the same independently; a test compares them for every size of the LUT-size table.
+pub fn entries(tb: usize, w: usize) -> Vec<(u64, u64)> {
+    let full = ((1u64 << w) - 1) as f64;
+    (0..1u64 << tb)
+        .map(|i| {
+            let a = i as f64 * FRAC_PI_2 / (1u64 << tb) as f64;
+            ((a.sin() * full).round() as u64, (a.cos() * full).round() as u64)
+        })
+        .collect()
 }
 
-impl Logic for SinCos {
+#[derive(LogicBlock)]
+pub struct SinCos<const TB: usize, const W: usize> {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub angle: Signal<In, Bits<ANGLE_BITS>>,
+    pub valid_out: Signal<Out, Bit>,
+    pub sin: Signal<Out, Bits<W>>,
+    pub cos: Signal<Out, Bits<W>>,
+    sin_rom: ROM<Bits<W>, TB>,
+    cos_rom: ROM<Bits<W>, TB>,
+    /// 10 − TB: the angle bits below the table's resolution
+    low_bits: Constant<Bits<4>>,
+    s1_addr: DFF<Bits<TB>>,
+    s2_sin: DFF<Bits<W>>,
+    s2_cos: DFF<Bits<W>>,
+    valid: Delay<Bit, LATENCY>,
+    w_top: Signal<Local, Bits<ANGLE_BITS>>,
+}
+
+impl<const TB: usize, const W: usize> Default for SinCos<TB, W> {
+    fn default() -> Self {
+        assert!(TB <= ANGLE_BITS && W <= 16, "SinCos<{TB}, {W}>: at most 2^10 entries of 16 bits");
+        let e = entries(TB, W);
+        Self {
+            clock: Default::default(),
+            valid_in: Default::default(),
+            angle: Default::default(),
+            valid_out: Default::default(),
+            sin: Default::default(),
+            cos: Default::default(),
+            sin_rom: ROM::from(e.iter().map(|x| Bits::<W>::from(x.0))),
+            cos_rom: ROM::from(e.iter().map(|x| Bits::<W>::from(x.1))),
+            low_bits: Constant::new(Bits::<4>::from((ANGLE_BITS - TB) as u64)),
+            s1_addr: Default::default(),
+            s2_sin: Default::default(),
+            s2_cos: Default::default(),
+            valid: Default::default(),
+            w_top: Default::default(),
+        }
+    }
+}
+
+impl<const TB: usize, const W: usize> Logic for SinCos<TB, W> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_addr, s2_e);
+        dff_setup!(self, clock, s1_addr, s2_sin, s2_cos);
         self.valid.clock.next = self.clock.val();
         self.valid.d.next = self.valid_in.val();
-        self.s1_addr.d.next = self.angle.val().get_bits::<8>(2); // top 8 bits: truncate
-        self.lut.address.next = self.s1_addr.q.val();
-        self.s2_e.d.next = self.lut.data.val();
-        self.sin.next = self.s2_e.q.val().get_bits::<8>(0);
-        self.cos.next = self.s2_e.q.val().get_bits::<8>(8);
+        // stage 1: the top TB bits (truncate)
+        self.w_top.next = self.angle.val() >> self.low_bits.val();
+        self.s1_addr.d.next = bit_cast::<TB, ANGLE_BITS>(self.w_top.val());
+        // stage 2: the tables
+        self.sin_rom.address.next = self.s1_addr.q.val();
+        self.cos_rom.address.next = self.s1_addr.q.val();
+        self.s2_sin.d.next = self.sin_rom.data.val();
+        self.s2_cos.d.next = self.cos_rom.data.val();
+        self.sin.next = self.s2_sin.q.val();
+        self.cos.next = self.s2_cos.q.val();
         self.valid_out.next = self.valid.q.val();
     }
 }
 
-stream_unit!(SinCos, "sincos", LATENCY, inputs: [angle: 10], outputs: [sin: 8, cos: 8]);
+impl<const TB: usize, const W: usize> crate::StreamUnit for SinCos<TB, W> {
+    const NAME: &'static str = "sincos";
+    const LATENCY: usize = LATENCY;
+    const INPUTS: &'static [(&'static str, usize)] = &[("angle", ANGLE_BITS)];
+    const OUTPUTS: &'static [(&'static str, usize)] = &[("sin", W), ("cos", W)];
+    fn build() -> Self {
+        Self::default()
+    }
+    fn set_clock(&mut self, level: bool) {
+        self.clock.next = Clock { clk: level };
+    }
+    fn clock_level(&self) -> bool {
+        self.clock.val().clk
+    }
+    fn set_inputs(&mut self, valid: bool, values: &[u64]) {
+        self.valid_in.next = valid;
+        self.angle.next = Bits::<ANGLE_BITS>::from(values[0]);
+    }
+    fn valid_out(&self) -> bool {
+        self.valid_out.val()
+    }
+    fn outputs(&self) -> Vec<u64> {
+        vec![self.sin.val().to_u64(), self.cos.val().to_u64()]
+    }
+}
+
+/// The unit `sincos`: the size the polar shade unit uses.
+pub type SinCosUnit = SinCos<8, 8>;

@@ -121,10 +121,8 @@ pub fn polar_encoders(n: usize, seed: u64) -> Vec<Row> {
 }
 
 /// The sine/cosine LUT sizes and widths of the LUT-size table, model error only (the cost comes from `synth`).
-pub const LUT_SIZES: &[(u32, u32)] = &[(6, 8), (8, 8), (10, 8), (6, 10), (8, 10), (10, 10), (6, 12), (8, 12), (10, 12)];
-
 pub fn sincos_sizes() -> Vec<sincos::SizeRow> {
-    LUT_SIZES.iter().map(|&(tb, w)| sincos::size_error(tb, w)).collect()
+    sincos::LUT_SIZES.iter().map(|&(tb, w)| sincos::size_error(tb, w)).collect()
 }
 
 /// Encode then decode `n` random hemisphere directions with each encoder: degrees against the original.

@@ -1,11 +1,11 @@
 //! sincos: the elevation sine/cosine table, every 10-bit angle three ways, and the rtl table against the model's.
-use rtl::sincos::SinCos;
+use rtl::sincos::{SinCos, SinCosUnit};
 use synth::cosim::Simulator;
 use testbench::{external, rust_hdl, unit_tests, Bubbles};
 use vectors::polar_encode::Scale;
 use vectors::sincos::MODEL;
 
-unit_tests!(sincos, SinCos, MODEL);
+unit_tests!(sincos, SinCosUnit, MODEL);
 
 fn all() -> Vec<Vec<i64>> {
     (MODEL.exhaustive.unwrap())()
@@ -13,17 +13,17 @@ fn all() -> Vec<Vec<i64>> {
 
 #[test]
 fn sincos_exhaustive_rust_hdl() {
-    rust_hdl::<SinCos>(&MODEL, &all(), Bubbles::Random { one_in: 3, seed: 2 }).assert_clean("rust-hdl, every angle");
+    rust_hdl::<SinCosUnit>(&MODEL, &all(), Bubbles::Random { one_in: 3, seed: 2 }).assert_clean("rust-hdl, every angle");
 }
 
 #[test]
 fn sincos_exhaustive_verilator() {
-    external::<SinCos>(Simulator::Verilator, &MODEL, &all(), Bubbles::BackToBack).assert_clean("verilator, every angle");
+    external::<SinCosUnit>(Simulator::Verilator, &MODEL, &all(), Bubbles::BackToBack).assert_clean("verilator, every angle");
 }
 
 #[test]
 fn sincos_exhaustive_icarus() {
-    external::<SinCos>(Simulator::Icarus, &MODEL, &all(), Bubbles::BackToBack).assert_clean("icarus, every angle");
+    external::<SinCosUnit>(Simulator::Icarus, &MODEL, &all(), Bubbles::BackToBack).assert_clean("icarus, every angle");
 }
 
 #[test]
@@ -47,5 +47,66 @@ fn rtl_tables_are_the_models() {
     for k in 0..256 {
         assert_eq!(l[k] as i64, vectors::power::log_table()[k], "log entry {k}");
         assert_eq!(x[k] as i64, vectors::power::exp_table()[k], "exp entry {k}");
+    }
+}
+
+// Two other sizes of the same block, every angle, three ways: 64 entries of 8 bits and 1,024 of 12.
+use vectors::{Port, UnitModel};
+
+fn exact_64x8(i: &[i64]) -> Vec<i64> {
+    let (s, c) = vectors::sincos::exact_with(Scale::Seed, 6, 8, i[0]);
+    vec![s, c]
+}
+
+fn exact_1024x12(i: &[i64]) -> Vec<i64> {
+    let (s, c) = vectors::sincos::exact_with(Scale::Seed, 10, 12, i[0]);
+    vec![s, c]
+}
+
+static M64X8: UnitModel = UnitModel {
+    name: "sincos",
+    inputs: vectors::sincos::INPUTS,
+    outputs: &[Port::u("sin", 8), Port::u("cos", 8)],
+    exact: exact_64x8,
+    random: MODEL.random,
+    exhaustive: MODEL.exhaustive,
+    hard_cases: MODEL.hard_cases,
+};
+
+static M1024X12: UnitModel = UnitModel {
+    name: "sincos",
+    inputs: vectors::sincos::INPUTS,
+    outputs: &[Port::u("sin", 12), Port::u("cos", 12)],
+    exact: exact_1024x12,
+    random: MODEL.random,
+    exhaustive: MODEL.exhaustive,
+    hard_cases: MODEL.hard_cases,
+};
+
+fn three_ways<U: rtl::StreamUnit>(m: &UnitModel, tag: &str) {
+    let inputs = all();
+    rust_hdl::<U>(m, &inputs, Bubbles::Random { one_in: 4, seed: 1 }).assert_clean(&format!("rust-hdl, {tag}"));
+    for (sim, name) in [(Simulator::Verilator, "verilator"), (Simulator::Icarus, "icarus")] {
+        let built = synth::cosim::build::<U>(sim, &testbench::work_dir(name, &format!("sincos_{tag}"))).unwrap();
+        let s = testbench::slots(m, &inputs, Bubbles::BackToBack);
+        testbench::check(m, U::LATENCY, &inputs, &s, &built.run(&s).unwrap()).assert_clean(&format!("{name}, {tag}"));
+    }
+}
+
+#[test]
+fn other_table_sizes_three_ways() {
+    three_ways::<SinCos<6, 8>>(&M64X8, "64x8");
+    three_ways::<SinCos<10, 12>>(&M1024X12, "1024x12");
+}
+
+#[test]
+fn rtl_entries_are_the_models_for_every_size_of_the_lut_table() {
+    for &(tb, w) in vectors::sincos::LUT_SIZES {
+        let m = vectors::sincos::elevation_table(Scale::Seed, tb, w);
+        let r = rtl::sincos::entries(tb as usize, w as usize);
+        assert_eq!(r.len(), m.len());
+        for k in 0..m.len() {
+            assert_eq!((r[k].0 as i64, r[k].1 as i64), m[k], "{}x{w}, entry {k}", 1 << tb);
+        }
     }
 }

@@ -116,6 +116,9 @@ pub static MODEL: UnitModel = UnitModel {
     hard_cases,
 };
 
+/// The (table bits, width) pairs of the LUT-size table: 64, 256 and 1,024 entries of 8, 10 and 12 bits.
+pub const LUT_SIZES: &[(u32, u32)] = &[(6, 8), (8, 8), (10, 8), (6, 10), (8, 10), (10, 10), (6, 12), (8, 12), (10, 12)];
+
 /// One row of the LUT-size table: max and mean |error| of sin and cos over every 10-bit angle, in LSBs of an
 /// 8-bit output (so widths compare), for a table of 2^tb entries of w bits.
 #[derive(Clone, Debug)]
