@@ -210,8 +210,16 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         println!("{:<34} {:>14} {:>14}", "UP5K (yosys -dsp; nextpnr)", "Cartesian", "polar");
         println!("{:<34} {:>14} {:>14}", "LUT4 / FF", format!("{} / {}", c.lut4, c.ff), format!("{} / {}", p.lut4, p.ff));
         println!("{:<34} {:>14} {:>14}", "DSP (UP5K has 8) / BRAM", format!("{} / {}", c.dsp, c.bram), format!("{} / {}", p.dsp, p.bram));
+        let lc = |r: &synth::ice40::SynthReport| r.lc.map(|x| x.to_string()).unwrap_or("-".into());
+        println!("{:<34} {:>14} {:>14}", "LC of 5,280 (with the I/O wrapper)", lc(c), lc(p));
         println!("{:<34} {:>14} {:>14}", "fmax (I/O wrapper, placed)", fit(c), fit(p));
         println!("{:<34} {:>14} {:>14}", "latency (clocks), 1 pixel/clock", c.latency, p.latency);
+        for (name, r) in [("Cartesian", c), ("polar", p)] {
+            if let Some(e) = &r.place_error {
+                let how = if r.dsp_fallback { "with its multipliers in LUTs (it needs more than 8 DSPs)" } else { "" };
+                println!("{name} does not place on the UP5K {how}: {e}");
+            }
+        }
         println!();
     }
     println!("{:<52} {:>9} {:>9}   {}", "error of the bit-exact models vs the scene's ideal", "mean", "max", "max at");
