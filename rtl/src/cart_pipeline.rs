@@ -1,19 +1,18 @@
 //! `cart_pipeline`: seed 000's second embodiment, one pixel per clock, built from the unit blocks themselves:
 //! bilinear(TexelX, TexelZ) → cart_decode → normalise ─────────────┐
 //! light_iter → (delay 7) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
-//! Side-band values ride beside the stages they skip: C and the six colours in block-RAM delay lines
-//! (`RamDelay`), the light, the mode and P in short DFF chains.
+//! Side-band values ride beside the stages they skip: C in a block-RAM delay line (`RamDelay`), the mode and the
+//! colours in the `DelayedBlend`, the light and P in short DFF chains.
 //! Latency 39 = bilinear 9 + cart_decode 4 + normalise 9 + dot3 5 + gloss 8 + blend 4.
 
 use crate::bilinear::Bilinear;
-use crate::blend::Blend;
 use crate::cart_decode::CartDecode;
 use crate::delay::Delay;
 use crate::dot3::Dot3;
 use crate::gloss::Gloss;
 use crate::light_iter::LightIter;
 use crate::normalise::Normalise;
-use crate::ram_delay::{ColourDelay, RamDelay};
+use crate::ram_delay::{DelayedBlend, RamDelay};
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
@@ -72,11 +71,9 @@ pub struct CartPipeline {
     pub light_norm: Normalise,
     pub dot: Dot3,
     pub gloss: Gloss,
-    pub blend: Blend,
     light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
     conc_dly: RamDelay<8, 6, AT_GLOSS>,
-    mode_dly: Delay<Bits<1>, AT_BLEND>,
-    colour_dly: ColourDelay<6, AT_BLEND>,
+    pub blend: DelayedBlend<6, AT_BLEND>,
     p_dly: Delay<Bits<10>, 4>,
     bump_x10: Signal<Local, Bits<10>>,
     bump_z10: Signal<Local, Bits<10>>,
@@ -94,12 +91,10 @@ impl Logic for CartPipeline {
         self.gloss.clock.next = self.clock.val();
         self.blend.clock.next = self.clock.val();
         self.conc_dly.clock.next = self.clock.val();
-        self.mode_dly.clock.next = self.clock.val();
         self.p_dly.clock.next = self.clock.val();
         for i in 0..3 {
             self.light_dly[i].clock.next = self.clock.val();
         }
-        self.colour_dly.clock.next = self.clock.val();
         // filter: TexelX on red, TexelZ on green; blue and alpha unused (tied to 0, removed by synthesis)
         self.filter.valid_in.next = self.valid_in.val();
         self.filter.t00_r.next = self.t00_x.val();
@@ -171,22 +166,15 @@ impl Logic for CartPipeline {
         self.gloss.conc.next = self.conc_dly.q.val();
         self.gloss.x.next = self.dot.x.val();
         // blend: α = P >> 2 (U10 → U8, truncate)
-        self.mode_dly.d.next = self.mode.val();
-        self.colour_dly.src_r.next = self.src_r.val();
-        self.colour_dly.src_g.next = self.src_g.val();
-        self.colour_dly.src_b.next = self.src_b.val();
-        self.colour_dly.dst_r.next = self.dst_r.val();
-        self.colour_dly.dst_g.next = self.dst_g.val();
-        self.colour_dly.dst_b.next = self.dst_b.val();
+        self.blend.mode.next = self.mode.val();
+        self.blend.src_r.next = self.src_r.val();
+        self.blend.src_g.next = self.src_g.val();
+        self.blend.src_b.next = self.src_b.val();
+        self.blend.dst_r.next = self.dst_r.val();
+        self.blend.dst_g.next = self.dst_g.val();
+        self.blend.dst_b.next = self.dst_b.val();
         self.blend.valid_in.next = self.gloss.valid_out.val();
         self.blend.alpha.next = self.gloss.p.val().get_bits::<8>(2);
-        self.blend.mode.next = self.mode_dly.q.val();
-        self.blend.src_r.next = self.colour_dly.src_r_q.val();
-        self.blend.src_g.next = self.colour_dly.src_g_q.val();
-        self.blend.src_b.next = self.colour_dly.src_b_q.val();
-        self.blend.dst_r.next = self.colour_dly.dst_r_q.val();
-        self.blend.dst_g.next = self.colour_dly.dst_g_q.val();
-        self.blend.dst_b.next = self.colour_dly.dst_b_q.val();
         self.p_dly.d.next = self.gloss.p.val();
         self.valid_out.next = self.blend.valid_out.val();
         self.p.next = self.p_dly.q.val();

@@ -1,13 +1,12 @@
 //! `polar_pipeline`: seed 000's first embodiment, one pixel per clock, built from the unit blocks themselves:
 //! polar_shade(S, R, Q, k1, k2, k3) → power(p) → α → blend(src, dst).
-//! p rides beside the shade unit in a DFF chain; the mode in another; the six colours in a block-RAM delay line.
+//! p rides beside the shade unit in a DFF chain; the mode and the colours wait in the `DelayedBlend`.
 //! Latency 21 = polar_shade 10 + power 7 + blend 4.
 
-use crate::blend::Blend;
 use crate::delay::Delay;
 use crate::polar_shade::PolarShade;
 use crate::power::Power;
-use crate::ram_delay::ColourDelay;
+use crate::ram_delay::DelayedBlend;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
@@ -43,10 +42,8 @@ pub struct PolarPipeline<const DC: bool> {
     pub out_b: Signal<Out, U8>,
     pub shader: PolarShade<DC>,
     pub power: Power,
-    pub blend: Blend,
     pw_dly: Delay<U8, AT_POWER>,
-    mode_dly: Delay<Bits<1>, AT_BLEND>,
-    colour_dly: ColourDelay<5, AT_BLEND>,
+    pub blend: DelayedBlend<5, AT_BLEND>,
     alpha_dly: Delay<U8, 4>,
 }
 
@@ -57,8 +54,6 @@ impl<const DC: bool> Logic for PolarPipeline<DC> {
         self.power.clock.next = self.clock.val();
         self.blend.clock.next = self.clock.val();
         self.pw_dly.clock.next = self.clock.val();
-        self.mode_dly.clock.next = self.clock.val();
-        self.colour_dly.clock.next = self.clock.val();
         self.alpha_dly.clock.next = self.clock.val();
         // the shade
         self.shader.valid_in.next = self.valid_in.val();
@@ -74,22 +69,15 @@ impl<const DC: bool> Logic for PolarPipeline<DC> {
         self.power.x.next = self.shader.shade.val();
         self.power.pw.next = self.pw_dly.q.val();
         // the blend, α = the powered shade
-        self.mode_dly.d.next = self.mode.val();
-        self.colour_dly.src_r.next = self.src_r.val();
-        self.colour_dly.src_g.next = self.src_g.val();
-        self.colour_dly.src_b.next = self.src_b.val();
-        self.colour_dly.dst_r.next = self.dst_r.val();
-        self.colour_dly.dst_g.next = self.dst_g.val();
-        self.colour_dly.dst_b.next = self.dst_b.val();
+        self.blend.mode.next = self.mode.val();
+        self.blend.src_r.next = self.src_r.val();
+        self.blend.src_g.next = self.src_g.val();
+        self.blend.src_b.next = self.src_b.val();
+        self.blend.dst_r.next = self.dst_r.val();
+        self.blend.dst_g.next = self.dst_g.val();
+        self.blend.dst_b.next = self.dst_b.val();
         self.blend.valid_in.next = self.power.valid_out.val();
         self.blend.alpha.next = self.power.y.val();
-        self.blend.mode.next = self.mode_dly.q.val();
-        self.blend.src_r.next = self.colour_dly.src_r_q.val();
-        self.blend.src_g.next = self.colour_dly.src_g_q.val();
-        self.blend.src_b.next = self.colour_dly.src_b_q.val();
-        self.blend.dst_r.next = self.colour_dly.dst_r_q.val();
-        self.blend.dst_g.next = self.colour_dly.dst_g_q.val();
-        self.blend.dst_b.next = self.colour_dly.dst_b_q.val();
         self.alpha_dly.d.next = self.power.y.val();
         self.valid_out.next = self.blend.valid_out.val();
         self.alpha.next = self.alpha_dly.q.val();

@@ -53,13 +53,8 @@ fn rtl_tables_are_the_models() {
 // Two other sizes of the same block, every angle, three ways: 64 entries of 8 bits and 1,024 of 12.
 use vectors::{Port, UnitModel};
 
-fn exact_64x8(i: &[i64]) -> Vec<i64> {
-    let (s, c) = vectors::sincos::exact_with(Scale::Seed, 6, 8, i[0]);
-    vec![s, c]
-}
-
-fn exact_1024x12(i: &[i64]) -> Vec<i64> {
-    let (s, c) = vectors::sincos::exact_with(Scale::Seed, 10, 12, i[0]);
+fn exact_sized<const TB: u32, const W: u32>(i: &[i64]) -> Vec<i64> {
+    let (s, c) = vectors::sincos::exact_with(Scale::Seed, TB, W, i[0]);
     vec![s, c]
 }
 
@@ -67,7 +62,7 @@ static M64X8: UnitModel = UnitModel {
     name: "sincos",
     inputs: vectors::sincos::INPUTS,
     outputs: &[Port::u("sin", 8), Port::u("cos", 8)],
-    exact: exact_64x8,
+    exact: exact_sized::<6, 8>,
     random: MODEL.random,
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
@@ -77,7 +72,7 @@ static M1024X12: UnitModel = UnitModel {
     name: "sincos",
     inputs: vectors::sincos::INPUTS,
     outputs: &[Port::u("sin", 12), Port::u("cos", 12)],
-    exact: exact_1024x12,
+    exact: exact_sized::<10, 12>,
     random: MODEL.random,
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
