@@ -61,7 +61,7 @@ pub fn lut_sizes(cost: bool) -> Result<(), String> {
 
 pub fn synth_row(r: &synth::ice40::SynthReport) {
     println!(
-        "{:<14} LUT4 {:>5}  carry {:>4}  FF {:>5}  DSP {:>2}  BRAM {:>2}  LC {:>5}  fmax {:>6}  latency {:>2}{}",
+        "{:<18} LUT4 {:>5}  carry {:>4}  FF {:>5}  DSP {:>2}  BRAM {:>2}  LC {:>5}  fmax {:>6}  latency {:>2}{}",
         r.unit,
         r.lut4,
         r.carry,
@@ -74,6 +74,6 @@ pub fn synth_row(r: &synth::ice40::SynthReport) {
         if r.dsp_fallback { "  (more than 8 DSPs: placed with LUT multipliers)" } else { "" }
     );
     if let Some(e) = &r.place_error {
-        println!("{:<14} does not place on an UP5K SG48: {e}", "");
+        println!("{:<18} does not place on an UP5K SG48: {e}", "");
     }
 }
