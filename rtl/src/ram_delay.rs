@@ -31,7 +31,7 @@ impl<const W: usize, const A: usize, const N: usize> Default for RamDelay<W, A, 
             q: Default::default(),
             ram: Default::default(),
             wp: Default::default(),
-            back: Constant::new(Bits::<A>::from(((1u64 << A) - (N as u64 - 1)) as u64 & ((1u64 << A) - 1))),
+            back: Constant::new(Bits::<A>::from(((1u64 << A) - (N as u64 - 1)) & ((1u64 << A) - 1))),
         }
     }
 }

@@ -54,7 +54,8 @@ impl Scale {
 }
 
 /// Elevation (radians, ≥ 0 after the horizon clamp) and rotation (radians, 0..2π) of a direction; y < 0 is moved
-/// onto the horizon. Returns whether it was moved.
+/// onto the horizon, keeping its rotation (a direction straight down has none: it gets rotation 0). Returns whether
+/// it was moved.
 pub fn angles(v: [f64; 3]) -> (f64, f64, bool) {
     let len = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     let below = v[1] < 0.0;
@@ -72,7 +73,7 @@ pub fn encode_normal(sc: Scale, n: [f64; 3]) -> (i64, i64) {
     let (elev, rot, _) = angles(n);
     let s = sc.quantise(elev / FRAC_PI_2 * sc.steps()).clamp(0, 255);
     let r = sc.quantise(rot / TAU * sc.steps());
-    (s, r.rem_euclid(256).min(255))
+    (s, r.rem_euclid(256))
 }
 
 /// (S, R) → the unit normal it stands for.
@@ -102,7 +103,7 @@ pub fn encode_light(sc: Scale, l: [f64; 3], h: f64) -> Light {
         Scale::Seed => (((1.0 - h) * 255.0).round(), (h * t.sin() * 255.0).round(), (h * t.cos() * 255.0).round()),
         Scale::Dc255 => (255.0 - (h * 255.0).trunc(), (h * 255.0 * t.sin()).trunc(), (h * 255.0 * t.cos()).trunc()),
     };
-    let q = sc.quantise(rot / TAU * sc.steps()).rem_euclid(256).min(255);
+    let q = sc.quantise(rot / TAU * sc.steps()).rem_euclid(256);
     Light { k1: k1 as i64, k2: k2 as i64, k3: k3 as i64, q, t, moved }
 }
 
