@@ -22,6 +22,16 @@ fn exhaustive_above_2_20_is_refused_with_the_reason() {
 }
 
 #[test]
+fn software_only_units_say_so() {
+    for u in ["cart_encode", "polar_encode"] {
+        let (code, _, err) = bumprtl(&["vectors", u]);
+        assert_ne!(code, 0);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains("software only") && err.contains("accuracy"), "{err}");
+    }
+}
+
+#[test]
 fn software_only_unit_has_no_verilog() {
     let d = std::env::temp_dir().join(format!("bumprtl-cli-{}", std::process::id()));
     let (code, _, err) = bumprtl(&["verilog", "cart_encode", "--out", d.to_str().unwrap()]);
