@@ -11,6 +11,7 @@ pub mod csv;
 pub mod dot3;
 pub mod fixed;
 pub mod gloss;
+pub mod height;
 pub mod light_iter;
 pub mod normalise;
 pub mod polar_encode;

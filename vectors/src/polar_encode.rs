@@ -76,6 +76,13 @@ pub fn encode_normal(sc: Scale, n: [f64; 3]) -> (i64, i64) {
     (s, r.rem_euclid(256))
 }
 
+/// An 8-bit height map (row-major, `w`×`h`; `relief` texels of rise for a height step of 255) → (S, R) per texel,
+/// as the normal-map tools do it: central differences with wrap (`height::normals`), then `encode_normal`.
+pub fn encode_height_map(sc: Scale, heights: &[u8], w: usize, h: usize, relief: f64) -> Vec<(i64, i64)> {
+    let hf: Vec<f64> = heights.iter().map(|&x| x as f64 / 255.0 * relief).collect();
+    crate::height::normals(&hf, w, h).into_iter().map(|n| encode_normal(sc, n)).collect()
+}
+
 /// (S, R) → the unit normal it stands for.
 pub fn decode_normal(sc: Scale, s: i64, r: i64) -> [f64; 3] {
     let (e, a) = (sc.elevation(s), sc.rotation(r));
@@ -169,6 +176,17 @@ mod tests {
         // the seed's minimal step off the horizon, [2, 254, 0] as a direction, is still above it
         let step = encode_light(Scale::Seed, [254.0, 2.0, 0.0], 1.0);
         assert!(!step.moved && step.k2 == 2);
+    }
+
+    #[test]
+    fn an_8_bit_height_map_encodes_flat_as_straight_out_and_a_ramp_as_leaning_downhill() {
+        let flat = encode_height_map(Scale::Dc255, &[77; 9], 3, 3, 4.0);
+        assert!(flat.iter().all(|&(s, _)| s == 255));
+        // heights rising along +v: the normal leans towards −v, a rotation of 270° (R = 192 in the seed's scale)
+        let ramp: Vec<u8> = (0..16).map(|k| (k / 4 * 60) as u8).collect();
+        let (s, r) = encode_height_map(Scale::Seed, &ramp, 4, 4, 255.0 / 60.0)[5];
+        assert_eq!(r, 192);
+        assert_eq!(s, 128); // a slope of 1: 45°
     }
 
     #[test]

@@ -74,22 +74,6 @@ pub struct Prepared {
 }
 
 impl Scene {
-    /// Unit normal of the height field at texel (i, j), central differences, wrapping.
-    pub fn texel_normal(&self, i: usize, j: usize) -> [f64; 3] {
-        let n = self.tex as f64;
-        let h = |a: isize, b: isize| {
-            let a = a.rem_euclid(self.tex as isize) as f64;
-            let b = b.rem_euclid(self.tex as isize) as f64;
-            height((a + 0.5) / n, (b + 0.5) / n) * self.relief
-        };
-        let (i, j) = (i as isize, j as isize);
-        let dx = (h(i + 1, j) - h(i - 1, j)) / 2.0;
-        let dz = (h(i, j + 1) - h(i, j - 1)) / 2.0;
-        let v = [-dx, 1.0, -dz];
-        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        [v[0] / l, v[1] / l, v[2] / l]
-    }
-
     /// Unit direction from quad point (u, v) to the light, tangent space (x along u, y up, z along v).
     pub fn light_dir(&self, u: f64, v: f64) -> [f64; 3] {
         let d = [self.light_pos[0] - u, self.light_pos[1], self.light_pos[2] - v];
@@ -139,9 +123,13 @@ impl Scene {
         out
     }
 
+    /// The height field sampled at texel centres (in texel units of rise), and its normals.
     fn normals(&self) -> Vec<[f64; 3]> {
         let t = self.tex;
-        (0..t * t).map(|k| self.texel_normal(k % t, k / t)).collect()
+        let n = t as f64;
+        let heights: Vec<f64> =
+            (0..t * t).map(|k| height(((k % t) as f64 + 0.5) / n, ((k / t) as f64 + 0.5) / n) * self.relief).collect();
+        crate::height::normals(&heights, t, t)
     }
 
     fn blend_ideal(&self, alpha: f64) -> [f64; 3] {
