@@ -5,6 +5,7 @@
 //! synthesises the other sizes of the LUT-size table from this same block.
 
 use crate::delay::Delay;
+use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 use std::f64::consts::FRAC_PI_2;
@@ -86,31 +87,8 @@ impl<const TB: usize, const W: usize> Logic for SinCos<TB, W> {
     }
 }
 
-impl<const TB: usize, const W: usize> crate::StreamUnit for SinCos<TB, W> {
-    const NAME: &'static str = "sincos";
-    const LATENCY: usize = LATENCY;
-    const INPUTS: &'static [(&'static str, usize)] = &[("angle", ANGLE_BITS)];
-    const OUTPUTS: &'static [(&'static str, usize)] = &[("sin", W), ("cos", W)];
-    fn build() -> Self {
-        Self::default()
-    }
-    fn set_clock(&mut self, level: bool) {
-        self.clock.next = Clock { clk: level };
-    }
-    fn clock_level(&self) -> bool {
-        self.clock.val().clk
-    }
-    fn set_inputs(&mut self, valid: bool, values: &[u64]) {
-        self.valid_in.next = valid;
-        self.angle.next = Bits::<ANGLE_BITS>::from(values[0]);
-    }
-    fn valid_out(&self) -> bool {
-        self.valid_out.val()
-    }
-    fn outputs(&self) -> Vec<u64> {
-        vec![self.sin.val().to_u64(), self.cos.val().to_u64()]
-    }
-}
+stream_unit!(impl [const TB: usize, const W: usize] SinCos<TB, W>, "sincos", LATENCY,
+    inputs: [angle: ANGLE_BITS], outputs: [sin: W, cos: W]);
 
 /// The unit `sincos`: the size the polar shade unit uses.
 pub type SinCosUnit = SinCos<8, 8>;

@@ -20,11 +20,15 @@ pub trait StreamUnit: Block + Sized {
     fn outputs(&self) -> Vec<u64>;
 }
 
-/// Implements `StreamUnit` from the block's port fields, so that the lists cannot drift from the struct.
+/// Implements `StreamUnit` from the block's port fields, so that the lists cannot drift from the struct. A block
+/// with const generics names them first: `stream_unit!(impl [const W: usize] Foo<W>, "foo", 2, inputs: [a: W], ...)`.
 #[macro_export]
 macro_rules! stream_unit {
-    ($t:ty, $name:literal, $latency:expr, inputs: [$($i:ident : $iw:literal),* $(,)?], outputs: [$($o:ident : $ow:literal),* $(,)?]) => {
-        impl $crate::stream::StreamUnit for $t {
+    ($t:ty, $name:literal, $latency:expr, inputs: [$($i:ident : $iw:expr),* $(,)?], outputs: [$($o:ident : $ow:expr),* $(,)?]) => {
+        $crate::stream_unit!(impl [] $t, $name, $latency, inputs: [$($i: $iw),*], outputs: [$($o: $ow),*]);
+    };
+    (impl [$($g:tt)*] $t:ty, $name:literal, $latency:expr, inputs: [$($i:ident : $iw:expr),* $(,)?], outputs: [$($o:ident : $ow:expr),* $(,)?]) => {
+        impl<$($g)*> $crate::stream::StreamUnit for $t {
             const NAME: &'static str = $name;
             const LATENCY: usize = $latency;
             const INPUTS: &'static [(&'static str, usize)] = &[$((stringify!($i), $iw)),*];
@@ -42,7 +46,7 @@ macro_rules! stream_unit {
             fn set_inputs(&mut self, valid: bool, values: &[u64]) {
                 self.valid_in.next = valid;
                 let mut k = 0;
-                $( self.$i.next = Bits::<$iw>::from(values[k]); k += 1; )*
+                $( self.$i.next = Bits::<{ $iw }>::from(values[k]); k += 1; )*
                 debug_assert_eq!(k, values.len());
             }
             fn valid_out(&self) -> bool {
