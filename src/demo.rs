@@ -24,28 +24,32 @@ fn bar(len: u64, what: &str) -> ProgressBar {
     b
 }
 
-/// One pipeline through the three bit-exact paths.
+/// One pipeline through the three bit-exact paths (Verilator's only where it is installed).
 struct Paths {
     model: Image,
     hdl: Image,
-    vl: Image,
+    vl: Option<Image>,
     mism_hdl: usize,
     mism_vl: usize,
 }
 
-fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], out: &Path) -> Result<Paths, String> {
+fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], out: &Path, verilator: bool) -> Result<Paths, String> {
     let model = render::model(m, size, inputs);
     let b = bar(inputs.len() as u64, &format!("rust-hdl: {}", m.name));
     let hdl = render::rust_hdl::<U>(m, size, inputs, &|k| b.set_position(k as u64));
     b.finish_and_clear();
-    let b = ProgressBar::new_spinner();
-    b.set_message(format!("Verilator: building and running {}", m.name));
-    b.enable_steady_tick(std::time::Duration::from_millis(200));
-    let vl = render::verilator::<U>(m, size, inputs, &out.join("verilator").join(m.name));
-    b.finish_and_clear();
-    let vl = vl?;
+    let vl = if verilator {
+        let b = ProgressBar::new_spinner();
+        b.set_message(format!("Verilator: building and running {}", m.name));
+        b.enable_steady_tick(std::time::Duration::from_millis(200));
+        let vl = render::verilator::<U>(m, size, inputs, &out.join("verilator").join(m.name));
+        b.finish_and_clear();
+        Some(vl?)
+    } else {
+        None
+    };
     let mism = |a: &Image| (0..inputs.len()).filter(|&k| a.p[k] != model.p[k] || a.rgb[k] != model.rgb[k]).count();
-    let (mism_hdl, mism_vl) = (mism(&hdl), mism(&vl));
+    let (mism_hdl, mism_vl) = (mism(&hdl), vl.as_ref().map(mism).unwrap_or(0));
     Ok(Paths { model, hdl, vl, mism_hdl, mism_vl })
 }
 
@@ -67,20 +71,24 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     let scene = Scene { size, ..Scene::default() };
     let n = size * size;
     let where_ = at(size);
+    // the paths that need external tools run where the tools are; the demo says what it skipped and why
+    let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
+    let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };
+    let synth = synth && no_pnr.is_empty();
 
     // Cartesian
     let t = Instant::now();
     let prep = scene.prepare();
     let cart_ideal_s = t.elapsed().as_secs_f64();
-    let cart = three_paths::<rtl::cart_pipeline::CartPipeline>(&vectors::cart_pipeline::MODEL, size, &prep.inputs, out)?;
+    let cart = three_paths::<rtl::cart_pipeline::CartPipeline>(&vectors::cart_pipeline::MODEL, size, &prep.inputs, out, no_vl.is_empty())?;
     // polar
     let t = Instant::now();
     let pol = scene.prepare_polar(scale, POLAR_PW, POLAR_H);
     let polar_ideal_s = t.elapsed().as_secs_f64();
     let pm = vectors::polar_pipeline::MODEL_FOR[scale as usize];
     let polar = match scale {
-        Scale::Seed => three_paths::<rtl::polar_pipeline::PolarPipelineSeed>(pm, size, &pol.inputs, out)?,
-        Scale::Dc255 => three_paths::<rtl::polar_pipeline::PolarPipelineDc>(pm, size, &pol.inputs, out)?,
+        Scale::Seed => three_paths::<rtl::polar_pipeline::PolarPipelineSeed>(pm, size, &pol.inputs, out, no_vl.is_empty())?,
+        Scale::Dc255 => three_paths::<rtl::polar_pipeline::PolarPipelineDc>(pm, size, &pol.inputs, out, no_vl.is_empty())?,
     };
 
     // error of each model against the scene's ideal
@@ -138,14 +146,18 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     png("ideal.png", &|k| prep.ideal_rgb[k].map(to8))?;
     png("model.png", &|k| cart.model.rgb[k].map(|c| c as u8))?;
     png("rust_hdl.png", &|k| cart.hdl.rgb[k].map(|c| c as u8))?;
-    png("verilator.png", &|k| cart.vl.rgb[k].map(|c| c as u8))?;
+    if let Some(vl) = &cart.vl {
+        png("verilator.png", &|k| vl.rgb[k].map(|c| c as u8))?;
+    }
     png("shade_model.png", &|k| [(cart.model.p[k] >> 2) as u8; 3])?;
     let hmax = c_colour.max.max(1.0);
     png("error_heat.png", &|k| render::heat(colour_err(cart.model.rgb[k], prep.ideal_rgb[k]), hmax))?;
     png("polar_ideal.png", &|k| pol.ideal_rgb[k].map(to8))?;
     png("polar_model.png", &|k| polar.model.rgb[k].map(|c| c as u8))?;
     png("polar_rust_hdl.png", &|k| polar.hdl.rgb[k].map(|c| c as u8))?;
-    png("polar_verilator.png", &|k| polar.vl.rgb[k].map(|c| c as u8))?;
+    if let Some(vl) = &polar.vl {
+        png("polar_verilator.png", &|k| vl.rgb[k].map(|c| c as u8))?;
+    }
     let pmax = p_shade.max.max(1.0);
     png("polar_error_heat.png", &|k| render::heat((polar.model.p[k] as f64 - pol.ideal_alpha[k]).abs(), pmax))?;
     let smax = p_surf.max.max(1.0);
@@ -199,8 +211,14 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     println!("{:<34} {:>14.0} {:>14.0}", "f64 ideal (scene set-up included)", n as f64 / cart_ideal_s, n as f64 / polar_ideal_s);
     println!("{:<34} {:>14} {:>14}", "bit-exact model", pps(&cart.model, 0), pps(&polar.model, 0));
     println!("{:<34} {:>14} {:>14}", "rust-hdl (loop-driven)", pps(&cart.hdl, cart.mism_hdl), pps(&polar.hdl, polar.mism_hdl));
-    println!("{:<34} {:>14} {:>14}", "Verilator (exported .v)", pps(&cart.vl, cart.mism_vl), pps(&polar.vl, polar.mism_vl));
+    match (&cart.vl, &polar.vl) {
+        (Some(c), Some(p)) => println!("{:<34} {:>14} {:>14}", "Verilator (exported .v)", pps(c, cart.mism_vl), pps(p, polar.mism_vl)),
+        _ => println!("Verilator path skipped: {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", ")),
+    }
     println!();
+    if !no_pnr.is_empty() {
+        println!("UP5K figures skipped: {} not installed (`bash .ci/run` installs the tools)\n", no_pnr.join(", "));
+    }
     if let (Some(c), Some(p)) = (&cs, &ps) {
         let fit = |r: &synth::ice40::SynthReport| match (&r.place_error, r.fmax_mhz) {
             (Some(_), _) => "does not fit".to_string(),
@@ -239,7 +257,8 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     row(&format!("(a) light {:.1}° below the horizon: Cartesian N·L", -low_p.light_dir[n / 2][1].asin().to_degrees()), &low_ce);
     row(&format!("    polar N·L, the light moved onto it: {}", low_p.light.moved), &low_pe);
     println!();
-    println!("wrote {}: ideal, model, rust_hdl, verilator, shade_model, error_heat, polar_*, below_horizon_* .png;", out.display());
+    let vl_png = if cart.vl.is_some() { " verilator," } else { "" };
+    println!("wrote {}: ideal, model, rust_hdl,{vl_png} shade_model, error_heat, polar_*, below_horizon_* .png;", out.display());
     println!("      cart_pipeline.vcd, polar_pipeline.vcd; verilog/{}", if synth { "; synth/" } else { "" });
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
     let bad = cart.mism_hdl + cart.mism_vl + polar.mism_hdl + polar.mism_vl;

@@ -90,3 +90,21 @@ fn vectors_command_reproduces_the_committed_golden_file() {
     let golden = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/vectors/data/gloss.csv")).unwrap();
     assert_eq!(out, golden);
 }
+
+#[test]
+fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
+    let d = std::env::temp_dir().join(format!("bumprtl-demo-notools-{}", std::process::id()));
+    let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+        .args(["demo", "--size", "16", "--out", d.to_str().unwrap()])
+        .env("PATH", "")
+        .output()
+        .unwrap();
+    let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{out}\n{err}");
+    assert!(out.contains("Verilator path skipped") && out.contains("UP5K figures skipped"), "{out}");
+    for f in ["model.png", "rust_hdl.png", "polar_model.png", "cart_pipeline.vcd", "polar_pipeline.vcd", "verilog/cart_pipeline.v"] {
+        assert!(d.join(f).is_file(), "{f} missing");
+    }
+    assert!(!d.join("verilator.png").exists());
+    let _ = std::fs::remove_dir_all(&d);
+}

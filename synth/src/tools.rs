@@ -3,6 +3,12 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
+/// The tools of `names` that are not on the PATH (so that a caller can skip what needs them and say why).
+pub fn missing(names: &[&'static str]) -> Vec<&'static str> {
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    names.iter().copied().filter(|n| !std::env::split_paths(&path).any(|d| d.join(n).is_file())).collect()
+}
+
 /// Run a command in `dir`; Err carries the tool name and the last lines of its output.
 pub fn run(dir: &Path, prog: &str, args: &[&str]) -> Result<Output, String> {
     let out = Command::new(prog)
