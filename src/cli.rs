@@ -104,6 +104,7 @@ macro_rules! with_unit {
             "blend" => { type $u = rtl::blend::Blend; $body }
             "cart_pipeline" => { type $u = rtl::cart_pipeline::CartPipeline; $body }
             "sincos" => { type $u = rtl::sincos::SinCosUnit; $body }
+            "cos_sign" => { type $u = rtl::cos_sign::CosSignUnit; $body }
             "polar_shade" => { type $u = rtl::polar_shade::PolarShade<false>; $body }
             "power" => { type $u = rtl::power::Power; $body }
             "polar_pipeline" => { type $u = rtl::polar_pipeline::PolarPipelineSeed; $body }

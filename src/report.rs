@@ -21,18 +21,20 @@ pub fn accuracy(directions: usize, samples: usize) {
     }
 }
 
-/// The sine/cosine LUT-size table: entries and width against error (every 10-bit angle) and, when `cost` is on,
-/// against what yosys makes of the rtl block `SinCos<TB, W>` of that size for iCE40.
+/// The LUT-size tables of the sine/cosine unit [10] and the cosine unit with sign [18]: entries and width against
+/// error (every input) and, when `cost` is on, against what yosys makes of the rtl block of that size for iCE40.
 pub fn lut_sizes(cost: bool) -> Result<(), String> {
-    println!("\nsin/cos table size and width (elevation, 10-bit angle in; error in 8-bit LSB; the rtl has 256 × 8):");
-    println!("{:>8} {:>6} {:>10} {:>9} {:>7} {:>6} {:>5} {:>5}", "entries", "width", "mean", "max", "max at", "LUT4", "FF", "BRAM");
+    use rtl::cos_sign::CosSign;
+    use rtl::sincos::SinCos;
+    use synth::ice40::synth_unit;
     let dir = std::env::temp_dir().join(format!("bumprtl-lut-{}", std::process::id()));
+    println!("\nsin/cos unit [10]: table size and width (10-bit elevation in; error in 8-bit LSB; the rtl has 256 × 8):");
+    lut_header();
     for r in sim::accuracy::sincos_sizes() {
-        let c = if cost {
-            let tb = r.entries.trailing_zeros();
-            let d = dir.join(format!("t{tb}w{}", r.width));
-            use rtl::sincos::SinCos;
-            use synth::ice40::synth_unit;
+        let (tb, d) = (r.entries.trailing_zeros(), dir.join(format!("sincos_t{}w{}", r.entries, r.width)));
+        let c = if !cost {
+            None
+        } else {
             Some(match (tb, r.width) {
                 (6, 8) => synth_unit::<SinCos<6, 8>>(&d),
                 (8, 8) => synth_unit::<SinCos<8, 8>>(&d),
@@ -43,20 +45,44 @@ pub fn lut_sizes(cost: bool) -> Result<(), String> {
                 (6, 12) => synth_unit::<SinCos<6, 12>>(&d),
                 (8, 12) => synth_unit::<SinCos<8, 12>>(&d),
                 (10, 12) => synth_unit::<SinCos<10, 12>>(&d),
-                other => return Err(format!("no rtl size {other:?} in the LUT-size table")),
+                other => return Err(format!("no rtl sincos of size {other:?}")),
             }?)
-        } else {
-            None
         };
-        let f = |x: Option<u64>| x.map(|v| v.to_string()).unwrap_or("-".into());
-        println!(
-            "{:>8} {:>6} {:>10.4} {:>9.4} {:>7} {:>6} {:>5} {:>5}",
-            r.entries, r.width, r.mean_lsb8, r.max_lsb8, r.max_at,
-            f(c.as_ref().map(|c| c.lut4)), f(c.as_ref().map(|c| c.ff)), f(c.as_ref().map(|c| c.bram))
-        );
+        lut_row(&r, c.as_ref());
+    }
+    println!("\ncosine unit with sign [18]: table size and width (d = R − Q in; error of the signed cosine, 8-bit LSB):");
+    lut_header();
+    for r in sim::accuracy::cos_sign_sizes() {
+        let (tb, d) = (r.entries.trailing_zeros(), dir.join(format!("cos_sign_t{}w{}", r.entries, r.width)));
+        let c = if !cost {
+            None
+        } else {
+            Some(match (tb, r.width) {
+                (4, 8) => synth_unit::<CosSign<4, 8>>(&d),
+                (6, 8) => synth_unit::<CosSign<6, 8>>(&d),
+                (8, 8) => synth_unit::<CosSign<8, 8>>(&d),
+                (4, 12) => synth_unit::<CosSign<4, 12>>(&d),
+                (6, 12) => synth_unit::<CosSign<6, 12>>(&d),
+                (8, 12) => synth_unit::<CosSign<8, 12>>(&d),
+                other => return Err(format!("no rtl cos_sign of size {other:?}")),
+            }?)
+        };
+        lut_row(&r, c.as_ref());
     }
     let _ = std::fs::remove_dir_all(&dir);
     Ok(())
+}
+
+fn lut_header() {
+    println!("{:>8} {:>6} {:>10} {:>9} {:>7} {:>6} {:>5} {:>5}", "entries", "width", "mean", "max", "max at", "LUT4", "FF", "BRAM");
+}
+
+fn lut_row(r: &vectors::sincos::SizeRow, c: Option<&synth::ice40::SynthReport>) {
+    let f = |x: Option<u64>| x.map(|v| v.to_string()).unwrap_or("-".into());
+    println!(
+        "{:>8} {:>6} {:>10.4} {:>9.4} {:>7} {:>6} {:>5} {:>5}",
+        r.entries, r.width, r.mean_lsb8, r.max_lsb8, r.max_at, f(c.map(|c| c.lut4)), f(c.map(|c| c.ff)), f(c.map(|c| c.bram))
+    );
 }
 
 pub fn synth_row(r: &synth::ice40::SynthReport) {

@@ -12,6 +12,7 @@ pub mod bilinear;
 pub mod blend;
 pub mod cart_decode;
 pub mod cart_pipeline;
+pub mod cos_sign;
 pub mod delay;
 pub mod div255;
 pub mod dot3;

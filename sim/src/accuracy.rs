@@ -88,6 +88,13 @@ fn polar_units(samples: usize, seed: u64) -> Vec<Row> {
         sc.add((s as f64 - is).abs().max((c as f64 - ic).abs()), || format!("angle {a}"));
     }
     rows.push(row("sincos", "8-bit LSB, every 10-bit angle, 256 entries", sc));
+    let mut cs = ErrorStats::default();
+    for d in 0..256 {
+        let (m, neg) = vectors::cos_sign::exact_with(vectors::cos_sign::TABLE_BITS, vectors::cos_sign::WIDTH, d);
+        let v = if neg { -m } else { m } as f64;
+        cs.add((v - vectors::cos_sign::ideal(d)).abs(), || format!("d {d}"));
+    }
+    rows.push(row("cos_sign", "8-bit LSB, signed cosine, every d, 256 entries", cs));
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed ^ 0x9e37);
     for scale in [Scale::Seed, Scale::Dc255] {
         let (mut pre, mut clamped) = (ErrorStats::default(), ErrorStats::default());
@@ -121,6 +128,10 @@ pub fn polar_encoders(n: usize, seed: u64) -> Vec<Row> {
 }
 
 /// The sine/cosine LUT sizes and widths of the LUT-size table, model error only (the cost comes from `synth`).
+pub fn cos_sign_sizes() -> Vec<sincos::SizeRow> {
+    vectors::cos_sign::LUT_SIZES.iter().map(|&(tb, w)| vectors::cos_sign::size_error(tb, w)).collect()
+}
+
 pub fn sincos_sizes() -> Vec<sincos::SizeRow> {
     sincos::LUT_SIZES.iter().map(|&(tb, w)| sincos::size_error(tb, w)).collect()
 }

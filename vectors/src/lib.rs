@@ -7,6 +7,7 @@ pub mod bilinear;
 pub mod cart_decode;
 pub mod cart_encode;
 pub mod cart_pipeline;
+pub mod cos_sign;
 pub mod csv;
 pub mod dot3;
 pub mod fixed;

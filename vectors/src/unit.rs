@@ -59,6 +59,7 @@ pub const UNITS: &[&UnitModel] = &[
     &crate::blend::MODEL,
     &crate::cart_pipeline::MODEL,
     &crate::sincos::MODEL,
+    &crate::cos_sign::MODEL,
     &crate::polar_shade::MODEL,
     &crate::power::MODEL,
     &crate::polar_pipeline::MODEL,

@@ -1,0 +1,91 @@
+//! `cos_sign`: the cosine unit [18] of seed 000's FIG. 3 on its own, table size and output width as parameters:
+//! d = (R − Q) mod 256 → |cos d| as UNORM_W and the sign bit [26], from 2^TB-entry tables over the full turn (the
+//! ROM widget) addressed by d's top TB bits (truncation). Latency 2: the address; the tables. The unit `cos_sign`
+//! is `CosSign<8, 8>`, the table the polar shade unit holds (there packed with its sign in one word).
+
+use crate::delay::Delay;
+use crate::stream_unit;
+use rust_hdl::prelude::*;
+use rust_hdl::widgets::prelude::ROM;
+use std::f64::consts::TAU;
+
+pub const LATENCY: usize = 2;
+
+/// Entry i: (|cos|, cos < 0) of i·360°/2^TB, the magnitude rounded to UNORM_W. `vectors::cos_sign` computes the
+/// same independently; a test compares them for every size of the LUT-size table.
+pub fn entries(tb: usize, w: usize) -> Vec<(u64, bool)> {
+    (0..1u64 << tb)
+        .map(|i| {
+            let c = (i as f64 * TAU / (1u64 << tb) as f64).cos();
+            ((c.abs() * ((1u64 << w) - 1) as f64).round() as u64, c < 0.0)
+        })
+        .collect()
+}
+
+#[derive(LogicBlock)]
+pub struct CosSign<const TB: usize, const W: usize> {
+    pub clock: Signal<In, Clock>,
+    pub valid_in: Signal<In, Bit>,
+    pub d: Signal<In, Bits<8>>,
+    pub valid_out: Signal<Out, Bit>,
+    pub mag: Signal<Out, Bits<W>>,
+    pub neg: Signal<Out, Bits<1>>,
+    mag_rom: ROM<Bits<W>, TB>,
+    neg_rom: ROM<Bits<1>, TB>,
+    /// 8 − TB: the bits of d below the table's resolution
+    low_bits: Constant<Bits<4>>,
+    s1_addr: DFF<Bits<TB>>,
+    s2_mag: DFF<Bits<W>>,
+    s2_neg: DFF<Bits<1>>,
+    valid: Delay<Bit, LATENCY>,
+    w_top: Signal<Local, Bits<8>>,
+}
+
+impl<const TB: usize, const W: usize> Default for CosSign<TB, W> {
+    fn default() -> Self {
+        assert!(TB <= 8 && W <= 16, "CosSign<{TB}, {W}>: at most 2^8 entries of 16 bits");
+        let e = entries(TB, W);
+        Self {
+            clock: Default::default(),
+            valid_in: Default::default(),
+            d: Default::default(),
+            valid_out: Default::default(),
+            mag: Default::default(),
+            neg: Default::default(),
+            mag_rom: ROM::from(e.iter().map(|x| Bits::<W>::from(x.0))),
+            neg_rom: ROM::from(e.iter().map(|x| Bits::<1>::from(x.1 as u64))),
+            low_bits: Constant::new(Bits::<4>::from((8 - TB) as u64)),
+            s1_addr: Default::default(),
+            s2_mag: Default::default(),
+            s2_neg: Default::default(),
+            valid: Default::default(),
+            w_top: Default::default(),
+        }
+    }
+}
+
+impl<const TB: usize, const W: usize> Logic for CosSign<TB, W> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(self, clock, s1_addr, s2_mag, s2_neg);
+        self.valid.clock.next = self.clock.val();
+        self.valid.d.next = self.valid_in.val();
+        // stage 1: the top TB bits of d (truncate)
+        self.w_top.next = self.d.val() >> self.low_bits.val();
+        self.s1_addr.d.next = bit_cast::<TB, 8>(self.w_top.val());
+        // stage 2: the tables
+        self.mag_rom.address.next = self.s1_addr.q.val();
+        self.neg_rom.address.next = self.s1_addr.q.val();
+        self.s2_mag.d.next = self.mag_rom.data.val();
+        self.s2_neg.d.next = self.neg_rom.data.val();
+        self.mag.next = self.s2_mag.q.val();
+        self.neg.next = self.s2_neg.q.val();
+        self.valid_out.next = self.valid.q.val();
+    }
+}
+
+stream_unit!(impl [const TB: usize, const W: usize] CosSign<TB, W>, "cos_sign", LATENCY,
+    inputs: [d: 8], outputs: [mag: W, neg: 1]);
+
+/// The unit `cos_sign`: the size the polar shade unit uses.
+pub type CosSignUnit = CosSign<8, 8>;
