@@ -101,6 +101,18 @@ pub fn rust_hdl<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], bubbles: 
     check(model, U::LATENCY, inputs, &s, &got)
 }
 
+/// The same vectors through rust-hdl (with bubbles), and back to back through the exported Verilog under Verilator
+/// and Icarus, each checked against the model. `tag` names the build folders, for a block built in several sizes.
+pub fn three_ways<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], tag: &str) {
+    rust_hdl::<U>(model, inputs, Bubbles::Random { one_in: 4, seed: 1 }).assert_clean(&format!("rust-hdl, {tag}"));
+    for (sim, name) in [(Simulator::Verilator, "verilator"), (Simulator::Icarus, "icarus")] {
+        let built = cosim::build::<U>(sim, &work_dir(name, tag)).unwrap_or_else(|e| panic!("{e}"));
+        let s = slots(model, inputs, Bubbles::BackToBack);
+        let got = built.run(&s).unwrap_or_else(|e| panic!("{e}"));
+        check(model, U::LATENCY, inputs, &s, &got).assert_clean(&format!("{name}, {tag}"));
+    }
+}
+
 /// Where co-simulation builds live: under the workspace's target directory.
 pub fn work_dir(sim: &str, unit: &str) -> PathBuf {
     let target = std::env::var_os("CARGO_TARGET_DIR")

@@ -1,9 +1,7 @@
 //! cos_sign: the cosine unit with its sign, every d three ways, in the unit's size and another; the rtl tables
 //! against the model's for every size of the LUT-size table.
 use rtl::cos_sign::{CosSign, CosSignUnit};
-use rtl::StreamUnit;
-use synth::cosim::Simulator;
-use testbench::{rust_hdl, unit_tests, Bubbles};
+use testbench::{three_ways, unit_tests};
 use vectors::cos_sign::MODEL;
 use vectors::{Port, UnitModel};
 
@@ -24,20 +22,11 @@ static M16X12: UnitModel = UnitModel {
     hard_cases: MODEL.hard_cases,
 };
 
-fn three_ways<U: StreamUnit>(m: &UnitModel, tag: &str) {
-    let inputs = (m.exhaustive.unwrap())();
-    rust_hdl::<U>(m, &inputs, Bubbles::Random { one_in: 3, seed: 8 }).assert_clean(&format!("rust-hdl, {tag}"));
-    for (sim, name) in [(Simulator::Verilator, "verilator"), (Simulator::Icarus, "icarus")] {
-        let built = synth::cosim::build::<U>(sim, &testbench::work_dir(name, &format!("cos_sign_{tag}"))).unwrap();
-        let s = testbench::slots(m, &inputs, Bubbles::BackToBack);
-        testbench::check(m, U::LATENCY, &inputs, &s, &built.run(&s).unwrap()).assert_clean(&format!("{name}, {tag}"));
-    }
-}
-
 #[test]
 fn every_d_three_ways_in_two_sizes() {
-    three_ways::<CosSignUnit>(&MODEL, "256x8");
-    three_ways::<CosSign<4, 12>>(&M16X12, "16x12");
+    let all = (MODEL.exhaustive.unwrap())();
+    three_ways::<CosSignUnit>(&MODEL, &all, "cos_sign_256x8");
+    three_ways::<CosSign<4, 12>>(&M16X12, &all, "cos_sign_16x12");
 }
 
 #[test]

@@ -78,20 +78,10 @@ static M1024X12: UnitModel = UnitModel {
     hard_cases: MODEL.hard_cases,
 };
 
-fn three_ways<U: rtl::StreamUnit>(m: &UnitModel, tag: &str) {
-    let inputs = all();
-    rust_hdl::<U>(m, &inputs, Bubbles::Random { one_in: 4, seed: 1 }).assert_clean(&format!("rust-hdl, {tag}"));
-    for (sim, name) in [(Simulator::Verilator, "verilator"), (Simulator::Icarus, "icarus")] {
-        let built = synth::cosim::build::<U>(sim, &testbench::work_dir(name, &format!("sincos_{tag}"))).unwrap();
-        let s = testbench::slots(m, &inputs, Bubbles::BackToBack);
-        testbench::check(m, U::LATENCY, &inputs, &s, &built.run(&s).unwrap()).assert_clean(&format!("{name}, {tag}"));
-    }
-}
-
 #[test]
 fn other_table_sizes_three_ways() {
-    three_ways::<SinCos<6, 8>>(&M64X8, "64x8");
-    three_ways::<SinCos<10, 12>>(&M1024X12, "1024x12");
+    testbench::three_ways::<SinCos<6, 8>>(&M64X8, &all(), "sincos_64x8");
+    testbench::three_ways::<SinCos<10, 12>>(&M1024X12, &all(), "sincos_1024x12");
 }
 
 #[test]
