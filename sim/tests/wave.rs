@@ -21,7 +21,7 @@ fn gloss_vcd_outputs_are_the_models() {
     assert!(header.find_var(&["uut", "s3_l", "q"]).is_some());
     let (mut valid, mut pv, mut t) = (false, 0u64, 0u64);
     let mut seen = vec![];
-    let mut flush = |t: u64, valid: bool, pv: u64, seen: &mut Vec<i64>| {
+    let flush = |t: u64, valid: bool, pv: u64, seen: &mut Vec<i64>| {
         if t % 10_000 == 5_000 && valid {
             seen.push(pv as i64);
         }
