@@ -114,11 +114,6 @@ pub fn encode_light(sc: Scale, l: [f64; 3], h: f64) -> Light {
     Light { k1: k1 as i64, k2: k2 as i64, k3: k3 as i64, q, t, moved }
 }
 
-/// Equation 2 in reals: the weighted dot product of a normal and a light at the given angles (radians).
-pub fn equation2(h: f64, s: f64, r: f64, t: f64, q: f64) -> f64 {
-    (1.0 - h) + h * (s.sin() * t.sin() + s.cos() * t.cos() * (r - q).cos())
-}
-
 /// The angle (degrees) between a direction and its polar encoding, decoded.
 pub fn round_trip_error_deg(sc: Scale, n: [f64; 3]) -> f64 {
     let (s, r) = encode_normal(sc, n);
