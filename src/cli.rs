@@ -21,33 +21,40 @@ enum Cmd {
         count: usize,
         #[arg(long, default_value_t = 1)]
         seed: u64,
-        /// output file (default: standard output)
+        /// output file (default, or `-`: standard output)
         #[arg(long)]
         out: Option<PathBuf>,
     },
-    /// Export a unit's Verilog into DIR/<unit>.v
+    /// Export a unit's Verilog into DIR/<unit>.v, with a self-checking testbench of its golden vectors
+    /// (DIR/<unit>_tb.v, DIR/<unit>_in.hex, DIR/<unit>_out.hex)
     Verilog {
         unit: String,
+        /// output folder; `-` prints the module alone to standard output
         #[arg(long)]
         out: PathBuf,
     },
     /// Trace a unit in rust-hdl to a VCD (hard cases, then random vectors)
     Wave {
         unit: String,
+        /// the VCD file; `-` is standard output
         #[arg(long)]
         out: PathBuf,
         #[arg(long, default_value_t = 64)]
         count: usize,
     },
-    /// yosys synth_ice40 -dsp and nextpnr-ice40 (UP5K, through a serial I/O wrapper): LUT, FF, DSP, fmax
+    /// Synthesise and place a unit (through a serial I/O wrapper): LUT, FF, DSP, BRAM, fmax, each as a share of
+    /// the part
     Synth {
         unit: String,
+        /// up5k, ecp5-25f, ecp5-45f or ecp5-85f; default: the UP5K if the unit fits it, else the smallest ECP5
+        #[arg(long)]
+        target: Option<String>,
         /// working folder for the tools' files
         #[arg(long, default_value = "target/synth")]
         dir: PathBuf,
-        /// the clock target given to nextpnr, MHz
-        #[arg(long, default_value_t = 50.0)]
-        freq: f64,
+        /// the clock target given to nextpnr, MHz (default: 50 for the UP5K, 125 for the ECP5)
+        #[arg(long)]
+        freq: Option<f64>,
     },
     /// Exact against ideal for every unit, and the encoders' angular error
     Accuracy {
@@ -161,33 +168,75 @@ pub fn main() -> Result<(), String> {
             };
             let text = vectors::csv::render(u, &inputs, &command);
             match out {
-                Some(p) => synth::export::write_atomic(&p, text.as_bytes())?,
-                None => print!("{text}"),
+                Some(p) if p.as_os_str() != "-" => synth::export::write_atomic(&p, text.as_bytes())?,
+                _ => print!("{text}"),
             }
         }
         Cmd::Verilog { unit: name, out } => {
-            unit(&name)?;
-            let path = with_unit!(name.as_str(), U => synth::export::<U>().write(&out))?;
-            println!("{}", path.display());
+            let u = unit(&name)?;
+            if out.as_os_str() == "-" {
+                // the module alone: a testbench and its vector files cannot share one stream
+                with_unit!(name.as_str(), U => Ok::<_, String>(print!("{}", synth::export::<U>().text)))?;
+                return Ok(());
+            }
+            let text = vectors::csv::golden(u.name).ok_or_else(|| format!("{name} has no golden vector file in this build"))?;
+            let file = vectors::csv::parse(u, text).map_err(|e| format!("vectors/data/{name}.csv: {e}"))?;
+            let n_in = u.inputs.len();
+            let pat = |vals: &[i64], ports: &[vectors::Port]| -> Vec<u64> {
+                vals.iter().zip(ports).map(|(&v, p)| vectors::fixed::to_pattern(v, p.bits)).collect()
+            };
+            let ins: Vec<Vec<u64>> = file.rows.iter().map(|r| pat(&r[..n_in], u.inputs)).collect();
+            let outs: Vec<Vec<u64>> = file.rows.iter().map(|r| pat(&r[n_in..], u.outputs)).collect();
+            let source = format!("vectors/data/{name}.csv");
+            let paths = with_unit!(name.as_str(), U => {
+                let v = synth::export::<U>().write(&out)?;
+                let mut p = vec![v];
+                p.extend(synth::selfcheck::write::<U>(&out, &ins, &outs, &source)?);
+                Ok::<_, String>(p)
+            })?;
+            for p in paths {
+                println!("{}", p.display());
+            }
         }
         Cmd::Wave { unit: name, out, count } => {
             let u = unit(&name)?;
             let inputs = vectors::unit::generate(u, false, count, 1)?;
-            with_unit!(name.as_str(), U => sim::wave::write_vcd::<U>(u, &inputs, &out))?;
-            println!("{} ({} vectors)", out.display(), inputs.len());
+            if out.as_os_str() == "-" {
+                let w = Box::new(std::io::BufWriter::new(std::io::stdout()));
+                with_unit!(name.as_str(), U => sim::wave::trace::<U>(u, &inputs, w).map_err(|e| format!("cannot write the VCD to standard output: {e}")))?;
+            } else {
+                with_unit!(name.as_str(), U => sim::wave::write_vcd::<U>(u, &inputs, &out))?;
+                println!("{} ({} vectors)", out.display(), inputs.len());
+            }
         }
-        Cmd::Synth { unit: name, dir, freq } => {
+        Cmd::Synth { unit: name, target, dir, freq } => {
             unit(&name)?;
-            if !(1.0..=500.0).contains(&freq) {
-                return Err(format!("--freq {freq}: the clock target must be between 1 and 500 MHz"));
+            let part = target.as_deref().map(synth::fpga::part).transpose()?;
+            if let Some(f) = freq {
+                if !(1.0..=500.0).contains(&f) {
+                    return Err(format!("--freq {f}: the clock target must be between 1 and 500 MHz"));
+                }
             }
             let d = dir.join(&name);
-            let r = with_unit!(name.as_str(), U => synth::ice40::synth_and_place::<U>(&d, freq))?;
+            let r = with_unit!(name.as_str(), U => {
+                let (part, choice) = match part {
+                    Some(p) => (p, String::new()),
+                    None => {
+                        let (p, _, why) = synth::fpga::choose::<U>(&d)?;
+                        (p, why)
+                    }
+                };
+                let freq = freq.unwrap_or(part.default_freq());
+                synth::fpga::synth_and_place::<U>(&d, part, freq, &choice)
+            })?;
             crate::report::synth_row(&r);
         }
         Cmd::Accuracy { directions, samples, lut_cost } => {
             crate::report::accuracy(directions, samples);
             crate::report::lut_sizes(lut_cost)?;
+        }
+        Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
+            return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())
         }
         Cmd::Demo { out, size, polar_scale, no_synth } => crate::demo::run(&out, size as usize, polar_scale.into(), !no_synth)?,
     }

@@ -29,6 +29,7 @@ struct Paths {
     model: Image,
     hdl: Image,
     vl: Option<Image>,
+    vl_run: Option<render::VerilatorRun>,
     mism_hdl: usize,
     mism_vl: usize,
 }
@@ -42,15 +43,19 @@ fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], o
         let b = ProgressBar::new_spinner();
         b.set_message(format!("Verilator: building and running {}", m.name));
         b.enable_steady_tick(std::time::Duration::from_millis(200));
-        let vl = render::verilator::<U>(m, size, inputs, &out.join("verilator").join(m.name));
+        let vl = render::verilator::<U>(m, size, inputs, &out.join("verilator").join(m.name), 2);
         b.finish_and_clear();
         Some(vl?)
     } else {
         None
     };
+    let vl_run = vl;
+    let vl = vl_run.as_ref().map(|r| r.image.clone());
     let mism = |a: &Image| (0..inputs.len()).filter(|&k| a.p[k] != model.p[k] || a.rgb[k] != model.rgb[k]).count();
-    let (mism_hdl, mism_vl) = (mism(&hdl), vl.as_ref().map(mism).unwrap_or(0));
-    Ok(Paths { model, hdl, vl, mism_hdl, mism_vl })
+    // both Verilator runs, the one-process and the split one, against the model
+    let mism_vl = vl_run.as_ref().map(|r| mism(&r.image) + mism(&r.single)).unwrap_or(0);
+    let mism_hdl = mism(&hdl);
+    Ok(Paths { model, hdl, vl, vl_run, mism_hdl, mism_vl })
 }
 
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
@@ -74,6 +79,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
     let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };
+    let no_ecp5 = synth::tools::nextpnr_ecp5().is_none().then(synth::tools::nextpnr_ecp5_missing);
     let synth = synth && no_pnr.is_empty();
 
     // Cartesian
@@ -183,20 +189,21 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         Scale::Dc255 => synth::export::<rtl::polar_pipeline::PolarPipelineDc>().write(&vdir)?,
     };
 
-    // hardware cost, cached beside the output
-    let (cs, ps) = if synth {
-        let b = ProgressBar::new_spinner();
-        b.set_message("yosys + nextpnr-ice40 (UP5K), both pipelines (cached after the first run)");
-        b.enable_steady_tick(std::time::Duration::from_millis(200));
-        let cs = synth::ice40::synth_and_place_cached::<rtl::cart_pipeline::CartPipeline>(&out.join("synth").join("cart_pipeline"), 50.0);
-        let ps = match scale {
-            Scale::Seed => synth::ice40::synth_and_place_cached::<rtl::polar_pipeline::PolarPipelineSeed>(&out.join("synth").join(pm.name), 50.0),
-            Scale::Dc255 => synth::ice40::synth_and_place_cached::<rtl::polar_pipeline::PolarPipelineDc>(&out.join("synth").join(pm.name), 50.0),
-        };
-        b.finish_and_clear();
-        (Some(cs?), Some(ps?))
+    // hardware cost, cached beside the output: each pipeline on the UP5K and the ECP5-45F, on two threads
+    let hw = if synth {
+        let hdir = crate::hardware::dir(out);
+        let parts: Vec<synth::fpga::Part> = crate::hardware::DEMO_PARTS.iter().copied().filter(|p| p.family == synth::fpga::Family::Ice40 || no_ecp5.is_none()).collect();
+        let (hd, ps) = (&hdir, &parts);
+        let jobs: Vec<crate::hardware::Job> = vec![
+            Box::new(move |say| crate::hardware::measure::<rtl::cart_pipeline::CartPipeline>(hd, ps, say)),
+            match scale {
+                Scale::Seed => Box::new(move |say| crate::hardware::measure::<rtl::polar_pipeline::PolarPipelineSeed>(hd, ps, say)),
+                Scale::Dc255 => Box::new(move |say| crate::hardware::measure::<rtl::polar_pipeline::PolarPipelineDc>(hd, ps, say)),
+            },
+        ];
+        Some(crate::hardware::run_jobs(jobs)?)
     } else {
-        (None, None)
+        None
     };
 
     println!("scene: {size}x{size} quad, 128x128 height map, 4 vertex lights towards a point light");
@@ -211,34 +218,28 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     println!("{:<34} {:>14.0} {:>14.0}", "f64 ideal (scene set-up included)", n as f64 / cart_ideal_s, n as f64 / polar_ideal_s);
     println!("{:<34} {:>14} {:>14}", "bit-exact model", pps(&cart.model, 0), pps(&polar.model, 0));
     println!("{:<34} {:>14} {:>14}", "rust-hdl (loop-driven)", pps(&cart.hdl, cart.mism_hdl), pps(&polar.hdl, polar.mism_hdl));
-    match (&cart.vl, &polar.vl) {
-        (Some(c), Some(p)) => println!("{:<34} {:>14} {:>14}", "Verilator (exported .v)", pps(c, cart.mism_vl), pps(p, polar.mism_vl)),
+    match (&cart.vl_run, &polar.vl_run) {
+        (Some(c), Some(p)) => {
+            println!("{:<34} {:>14} {:>14}", "Verilator, whole frame, 1 process", pps(&c.single, cart.mism_vl), pps(&p.single, polar.mism_vl));
+            let label = format!("Verilator, whole frame, {} processes", c.procs);
+            println!("{label:<34} {:>14} {:>14}", pps(&c.image, cart.mism_vl), pps(&p.image, polar.mism_vl));
+            println!("{:<34} {:>14.0} {:>14.0}", "Verilator bare loop (cycles/s)", c.bare_cycles_per_second, p.bare_cycles_per_second);
+            let ratio = |r: &render::VerilatorRun| {
+                let slots = r.single.size * r.single.size;
+                format!("{:.2}", slots as f64 / r.single.seconds / r.bare_cycles_per_second)
+            };
+            println!("{:<34} {:>14} {:>14}", "  1 process against the bare loop", ratio(c), ratio(p));
+        }
         _ => println!("Verilator path skipped: {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", ")),
     }
     println!();
     if !no_pnr.is_empty() {
-        println!("UP5K figures skipped: {} not installed (`bash .ci/run` installs the tools)\n", no_pnr.join(", "));
+        println!("UP5K and ECP5 figures skipped: {} not installed (`bash .ci/run` installs the tools)\n", no_pnr.join(", "));
+    } else if let Some(e) = &no_ecp5 {
+        println!("ECP5 figures skipped: {e}\n");
     }
-    if let (Some(c), Some(p)) = (&cs, &ps) {
-        let fit = |r: &synth::ice40::SynthReport| match (&r.place_error, r.fmax_mhz) {
-            (Some(_), _) => "does not fit".to_string(),
-            (None, Some(f)) => format!("{f:.1} MHz"),
-            (None, None) => "-".to_string(),
-        };
-        println!("{:<34} {:>14} {:>14}", "UP5K (yosys -dsp; nextpnr)", "Cartesian", "polar");
-        println!("{:<34} {:>14} {:>14}", "LUT4 / FF", format!("{} / {}", c.lut4, c.ff), format!("{} / {}", p.lut4, p.ff));
-        println!("{:<34} {:>14} {:>14}", "DSP (UP5K has 8) / BRAM", format!("{} / {}", c.dsp, c.bram), format!("{} / {}", p.dsp, p.bram));
-        let lc = |r: &synth::ice40::SynthReport| r.lc.map(|x| x.to_string()).unwrap_or("-".into());
-        println!("{:<34} {:>14} {:>14}", "LC of 5,280 (with the I/O wrapper)", lc(c), lc(p));
-        println!("{:<34} {:>14} {:>14}", "fmax (I/O wrapper, placed)", fit(c), fit(p));
-        println!("{:<34} {:>14} {:>14}", "latency (clocks), 1 pixel/clock", c.latency, p.latency);
-        for (name, r) in [("Cartesian", c), ("polar", p)] {
-            if let Some(e) = &r.place_error {
-                let how = if r.dsp_fallback { "with its multipliers in LUTs (it needs more than 8 DSPs)" } else { "" };
-                println!("{name} does not place on the UP5K {how}: {e}");
-            }
-        }
-        println!();
+    if let Some(hw) = &hw {
+        hardware_table(&["Cartesian", "polar"], hw);
     }
     println!("{:<52} {:>9} {:>9}   {}", "error of the bit-exact models vs the scene's ideal", "mean", "max", "max at");
     let row = |name: &str, s: &ErrorStats| println!("{name:<52} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax);
@@ -269,4 +270,46 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         ));
     }
     Ok(())
+}
+
+/// Hardware cost, one column per pipeline, one block of rows per part.
+fn hardware_table(names: &[&str], hw: &[Vec<(synth::fpga::Part, crate::hardware::Fit)>]) {
+    use crate::hardware::Fit;
+    let Some(first) = hw.first() else { return };
+    let row = |label: &str, f: &dyn Fn(&Fit, &synth::fpga::Part) -> String, k: usize| {
+        let cells: String = hw.iter().map(|h| format!(" {:>22}", f(&h[k].1, &h[k].0))).collect();
+        println!("{label:<34}{cells}");
+    };
+    for (k, (part, _)) in first.iter().enumerate() {
+        let header: String = names.iter().map(|n| format!(" {n:>22}")).collect();
+        println!("{:<34}{header}", format!("{} ({})", part.name, if part.family == synth::fpga::Family::Ice40 { "yosys -dsp" } else { "yosys synth_ecp5" }));
+        let placed = |f: &Fit, g: &dyn Fn(&synth::fpga::SynthReport) -> String| match f {
+            Fit::Placed(r) => g(r),
+            Fit::DoesNotFit(_) => "-".to_string(),
+        };
+        let pct = |n: u64, of: u64| format!("{n} ({:.0}%)", 100.0 * n as f64 / of as f64);
+        row("LUT4 / FF", &|f, _| placed(f, &|r| format!("{} / {}", r.cells.lut4, r.cells.ff)), k);
+        row(&format!("DSP of {} / BRAM of {}", part.dsp, part.bram), &|f, p| placed(f, &|r| format!("{} / {}", pct(r.cells.dsp, p.dsp), r.cells.bram)), k);
+        row(&format!("logic cells of {} (placed)", part.lut4), &|f, p| placed(f, &|r| r.lc.map(|x| pct(x, p.lut4)).unwrap_or("-".into())), k);
+        row("fmax, 1 pixel/clock", &|f, _| match f {
+            Fit::Placed(r) => match (&r.place_error, r.fmax_mhz) {
+                (Some(_), _) => "does not place".into(),
+                (None, Some(x)) => format!("{x:.1} MHz"),
+                _ => "-".into(),
+            },
+            Fit::DoesNotFit(_) => "does not fit".into(),
+        }, k);
+        row("latency (clocks)", &|f, _| placed(f, &|r| r.latency.to_string()), k);
+        for (n, h) in names.iter().zip(hw) {
+            match &h[k].1 {
+                Fit::DoesNotFit(why) => println!("  {n} does not fit the {}: {why}", part.title),
+                Fit::Placed(r) => {
+                    if let Some(e) = &r.place_error {
+                        println!("  {n} does not place on the {}: {e}", part.title);
+                    }
+                }
+            }
+        }
+        println!();
+    }
 }

@@ -2,6 +2,7 @@
 
 mod cli;
 mod demo;
+mod hardware;
 mod report;
 
 fn main() {

@@ -26,7 +26,7 @@ pub fn accuracy(directions: usize, samples: usize) {
 pub fn lut_sizes(cost: bool) -> Result<(), String> {
     use rtl::cos_sign::CosSign;
     use rtl::sincos::SinCos;
-    use synth::ice40::synth_unit;
+    use synth::fpga::{synth_unit, Family};
     let dir = std::env::temp_dir().join(format!("bumprtl-lut-{}", std::process::id()));
     println!("\nsin/cos unit [10]: table size and width (10-bit elevation in; error in 8-bit LSB; the rtl has 256 × 8):");
     lut_header();
@@ -36,15 +36,15 @@ pub fn lut_sizes(cost: bool) -> Result<(), String> {
             None
         } else {
             Some(match (tb, r.width) {
-                (6, 8) => synth_unit::<SinCos<6, 8>>(&d),
-                (8, 8) => synth_unit::<SinCos<8, 8>>(&d),
-                (10, 8) => synth_unit::<SinCos<10, 8>>(&d),
-                (6, 10) => synth_unit::<SinCos<6, 10>>(&d),
-                (8, 10) => synth_unit::<SinCos<8, 10>>(&d),
-                (10, 10) => synth_unit::<SinCos<10, 10>>(&d),
-                (6, 12) => synth_unit::<SinCos<6, 12>>(&d),
-                (8, 12) => synth_unit::<SinCos<8, 12>>(&d),
-                (10, 12) => synth_unit::<SinCos<10, 12>>(&d),
+                (6, 8) => synth_unit::<SinCos<6, 8>>(&d, Family::Ice40),
+                (8, 8) => synth_unit::<SinCos<8, 8>>(&d, Family::Ice40),
+                (10, 8) => synth_unit::<SinCos<10, 8>>(&d, Family::Ice40),
+                (6, 10) => synth_unit::<SinCos<6, 10>>(&d, Family::Ice40),
+                (8, 10) => synth_unit::<SinCos<8, 10>>(&d, Family::Ice40),
+                (10, 10) => synth_unit::<SinCos<10, 10>>(&d, Family::Ice40),
+                (6, 12) => synth_unit::<SinCos<6, 12>>(&d, Family::Ice40),
+                (8, 12) => synth_unit::<SinCos<8, 12>>(&d, Family::Ice40),
+                (10, 12) => synth_unit::<SinCos<10, 12>>(&d, Family::Ice40),
                 other => return Err(format!("no rtl sincos of size {other:?}")),
             }?)
         };
@@ -58,12 +58,12 @@ pub fn lut_sizes(cost: bool) -> Result<(), String> {
             None
         } else {
             Some(match (tb, r.width) {
-                (4, 8) => synth_unit::<CosSign<4, 8>>(&d),
-                (6, 8) => synth_unit::<CosSign<6, 8>>(&d),
-                (8, 8) => synth_unit::<CosSign<8, 8>>(&d),
-                (4, 12) => synth_unit::<CosSign<4, 12>>(&d),
-                (6, 12) => synth_unit::<CosSign<6, 12>>(&d),
-                (8, 12) => synth_unit::<CosSign<8, 12>>(&d),
+                (4, 8) => synth_unit::<CosSign<4, 8>>(&d, Family::Ice40),
+                (6, 8) => synth_unit::<CosSign<6, 8>>(&d, Family::Ice40),
+                (8, 8) => synth_unit::<CosSign<8, 8>>(&d, Family::Ice40),
+                (4, 12) => synth_unit::<CosSign<4, 12>>(&d, Family::Ice40),
+                (6, 12) => synth_unit::<CosSign<6, 12>>(&d, Family::Ice40),
+                (8, 12) => synth_unit::<CosSign<8, 12>>(&d, Family::Ice40),
                 other => return Err(format!("no rtl cos_sign of size {other:?}")),
             }?)
         };
@@ -77,7 +77,7 @@ fn lut_header() {
     println!("{:>8} {:>6} {:>10} {:>9} {:>7} {:>6} {:>5} {:>5}", "entries", "width", "mean", "max", "max at", "LUT4", "FF", "BRAM");
 }
 
-fn lut_row(r: &vectors::sincos::SizeRow, c: Option<&synth::ice40::SynthReport>) {
+fn lut_row(r: &vectors::sincos::SizeRow, c: Option<&synth::fpga::Cells>) {
     let f = |x: Option<u64>| x.map(|v| v.to_string()).unwrap_or("-".into());
     println!(
         "{:>8} {:>6} {:>10.4} {:>9.4} {:>7} {:>6} {:>5} {:>5}",
@@ -85,21 +85,34 @@ fn lut_row(r: &vectors::sincos::SizeRow, c: Option<&synth::ice40::SynthReport>) 
     );
 }
 
-pub fn synth_row(r: &synth::ice40::SynthReport) {
-    println!(
-        "{:<18} LUT4 {:>5}  carry {:>4}  FF {:>5}  DSP {:>2}  BRAM {:>2}  LC {:>5}  fmax {:>6}  latency {:>2}{}",
-        r.unit,
-        r.lut4,
-        r.carry,
-        r.ff,
-        r.dsp,
-        r.bram,
-        r.lc.map(|x| x.to_string()).unwrap_or("-".into()),
-        r.fmax_mhz.map(|x| format!("{x:.1}")).unwrap_or("-".into()),
-        r.latency,
-        if r.dsp_fallback { "  (more than 8 DSPs: placed with LUT multipliers)" } else { "" }
-    );
-    if let Some(e) = &r.place_error {
-        println!("{:<18} does not place on an UP5K SG48: {e}", "");
+/// One unit's figures on its part, each resource as a share of the part.
+pub fn synth_row(r: &synth::fpga::SynthReport) {
+    let p = r.part();
+    let [lut, ff, dsp, bram, carry] = match p.family {
+        synth::fpga::Family::Ice40 => ["SB_LUT4", "SB_DFF*", "SB_MAC16", "SB_RAM40_4K", "SB_CARRY"],
+        synth::fpga::Family::Ecp5 => ["LUT4", "TRELLIS_FF", "MULT18X18D", "DP16KD", "CCU2C"],
+    };
+    println!("{} on the {}", r.unit, p.title);
+    if !r.choice.is_empty() {
+        println!("  chosen because {}", r.choice);
+    }
+    let share = |n: u64, of: u64| format!("{n:>6} of {of:>6}  {:>5.1} %", 100.0 * n as f64 / of as f64);
+    println!("  {lut:<12} {}", share(r.cells.lut4, p.lut4));
+    println!("  {ff:<12} {}", share(r.cells.ff, p.ff));
+    println!("  {dsp:<12} {}", share(r.cells.dsp, p.dsp));
+    println!("  {bram:<12} {}", share(r.cells.bram, p.bram));
+    println!("  {carry:<12} {:>6}", r.cells.carry);
+    match (&r.place_error, r.lc, r.fmax_mhz) {
+        (Some(e), _, _) => println!("  does not place: {e}"),
+        (None, lc, f) => {
+            let lc_name = if p.family == synth::fpga::Family::Ice40 { "ICESTORM_LC" } else { "TRELLIS_COMB" };
+            if let Some(lc) = lc {
+                println!("  {lc_name:<12} {}  (placed, with the serial I/O wrapper)", share(lc, p.lut4));
+            }
+            println!("  fmax         {:>6} MHz  latency {} clocks, one pixel per clock", f.map(|x| format!("{x:.1}")).unwrap_or("-".into()), r.latency);
+        }
+    }
+    if let Some(c) = &r.critical {
+        println!("  critical path {c}");
     }
 }

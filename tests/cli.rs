@@ -101,10 +101,97 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
         .unwrap();
     let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
     assert!(o.status.success(), "{out}\n{err}");
-    assert!(out.contains("Verilator path skipped") && out.contains("UP5K figures skipped"), "{out}");
+    assert!(out.contains("Verilator path skipped") && out.contains("UP5K and ECP5 figures skipped"), "{out}");
     for f in ["model.png", "rust_hdl.png", "polar_model.png", "cart_pipeline.vcd", "polar_pipeline.vcd", "verilog/cart_pipeline.v"] {
         assert!(d.join(f).is_file(), "{f} missing");
     }
     assert!(!d.join("verilator.png").exists());
     let _ = std::fs::remove_dir_all(&d);
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[test]
+fn exhaustive_writes_every_input_exactly_once() {
+    let (code, out, err) = bumprtl(&["vectors", "gloss", "--exhaustive"]);
+    assert_eq!(code, 0, "{err}");
+    let rows: Vec<&str> = out.lines().skip(2).collect();
+    assert_eq!(rows.len(), 256 * 1024, "one row per (conc, x)");
+    let inputs: std::collections::HashSet<(&str, &str)> = rows
+        .iter()
+        .map(|r| {
+            let mut f = r.split(',');
+            (f.next().unwrap(), f.next().unwrap())
+        })
+        .collect();
+    assert_eq!(inputs.len(), rows.len(), "an input written twice");
+    // the random mode keeps the hard cases first
+    let (_, random, _) = bumprtl(&["vectors", "gloss", "--count", "3"]);
+    let hard = (vectors::gloss::MODEL.hard_cases)();
+    let first: Vec<&str> = random.lines().skip(2).take(hard.len()).collect();
+    let want: Vec<String> = hard.iter().map(|h| h.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(",")).collect();
+    for (row, h) in first.iter().zip(&want) {
+        assert!(row.starts_with(&format!("{h},")), "{row} is not the hard case {h}");
+    }
+    assert_eq!(random.lines().count(), 2 + hard.len() + 3);
+}
+
+#[test]
+fn out_dash_is_standard_output_and_creates_no_file() {
+    let d = scratch("dash");
+    let run = |args: &[&str]| Command::new(env!("CARGO_BIN_EXE_bumprtl")).args(args).current_dir(&d).output().unwrap();
+    let o = run(&["vectors", "gloss", "--out", "-"]);
+    assert!(o.status.success());
+    let golden = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/vectors/data/gloss.csv")).unwrap();
+    assert_eq!(o.stdout, golden);
+    let o = run(&["wave", "gloss", "--count", "4", "--out", "-"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let vcd = String::from_utf8_lossy(&o.stdout);
+    assert!(vcd.contains("$enddefinitions") && vcd.contains("$var"), "not a VCD: {}", &vcd[..vcd.len().min(200)]);
+    let o = run(&["verilog", "gloss", "--out", "-"]);
+    assert!(o.status.success());
+    let v = String::from_utf8_lossy(&o.stdout);
+    assert!(v.contains("module gloss(") && !v.contains("gloss_tb"), "{v}");
+    let o = run(&["demo", "--out", "-"]);
+    assert!(!o.status.success());
+    assert_eq!(String::from_utf8_lossy(&o.stderr).lines().count(), 1);
+    assert_eq!(std::fs::read_dir(&d).unwrap().count(), 0, "a file was left in the working folder");
+}
+
+#[test]
+fn non_utf8_output_paths_work_or_fail_cleanly() {
+    use std::os::unix::ffi::OsStrExt;
+    let d = scratch("utf8");
+    let bad = d.join(std::ffi::OsStr::from_bytes(b"out-\xff"));
+    for args in [
+        vec![std::ffi::OsStr::new("vectors"), "gloss".as_ref(), "--out".as_ref(), bad.join("g.csv").as_os_str()],
+        vec!["wave".as_ref(), "gloss".as_ref(), "--count".as_ref(), "4".as_ref(), "--out".as_ref(), bad.join("g.vcd").as_os_str()],
+        vec!["verilog".as_ref(), "gloss".as_ref(), "--out".as_ref(), bad.as_os_str()],
+    ] {
+        let _ = std::fs::create_dir_all(&bad);
+        let o = Command::new(env!("CARGO_BIN_EXE_bumprtl")).args(&args).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert!(o.status.success(), "{args:?}: {err}");
+    }
+    assert!(bad.join("g.csv").is_file() && bad.join("g.vcd").is_file() && bad.join("gloss_tb.v").is_file());
+}
+
+#[test]
+fn verilog_writes_the_module_its_testbench_and_the_golden_vectors() {
+    let d = scratch("tb");
+    let (code, out, err) = bumprtl(&["verilog", "dot3", "--out", d.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    for f in ["dot3.v", "dot3_tb.v", "dot3_in.hex", "dot3_out.hex"] {
+        assert!(d.join(f).is_file() && out.contains(f), "{f}: {out}");
+    }
+    let golden = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/vectors/data/dot3.csv")).unwrap();
+    let rows = golden.lines().filter(|l| !l.starts_with('#')).count() - 1;
+    let hex = std::fs::read_to_string(d.join("dot3_in.hex")).unwrap();
+    assert_eq!(hex.lines().filter(|l| !l.starts_with("//")).count(), rows);
 }

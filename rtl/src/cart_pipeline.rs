@@ -3,7 +3,7 @@
 //! light_iter → (delay 7) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
 //! Side-band values ride beside the stages they skip: C in a block-RAM delay line (`RamDelay`), the mode and the
 //! colours in the `DelayedBlend`, the light and P in short DFF chains.
-//! Latency 39 = bilinear 9 + cart_decode 4 + normalise 9 + dot3 5 + gloss 8 + blend 4.
+//! Latency 40 = bilinear 9 + cart_decode 4 + normalise 10 + dot3 5 + gloss 8 + blend 4.
 
 use crate::bilinear::Bilinear;
 use crate::cart_decode::CartDecode;
@@ -22,9 +22,9 @@ type S8 = Bits<8>;
 /// Cycles from the pipeline's input to each unit's input.
 pub const AT_NORMALISE: usize = crate::bilinear::LATENCY + crate::cart_decode::LATENCY; // 13
 pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY; // 7
-pub const AT_GLOSS: usize = AT_NORMALISE + crate::normalise::LATENCY + crate::dot3::LATENCY; // 27
-pub const AT_BLEND: usize = AT_GLOSS + crate::gloss::LATENCY; // 35
-pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 39
+pub const AT_GLOSS: usize = AT_NORMALISE + crate::normalise::LATENCY + crate::dot3::LATENCY; // 28
+pub const AT_BLEND: usize = AT_GLOSS + crate::gloss::LATENCY; // 36
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 40
 
 #[derive(LogicBlock, Default)]
 pub struct CartPipeline {

@@ -1,7 +1,9 @@
 //! `normalise`: three S10 components → a unit vector in Sq1.10 (S12), by a seed table of 1/√m (`TABLE_BITS` = 10,
 //! 1,024 × 13-bit entries, a ROM) and no Newton step; see `vectors::normalise` for the exact recipe and the zero
-//! vector (zero in, zero out). Latency 9: magnitudes; squares; their sum; the leading-zero pairs; the shifts and
-//! the table address; the table; the products; the rounding; the signs.
+//! vector (zero in, zero out). Latency 10: magnitudes; squares; their sum; the leading-zero pairs; the shifts and
+//! the table address; the table (the block RAM's own read register); a register after the block RAM, so that its
+//! slow clock-to-output (5.6 ns on an ECP5-6) does not add to the multiplier's delay; the products; the rounding;
+//! the signs.
 
 use crate::delay::Delay;
 use crate::stream_unit;
@@ -9,7 +11,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 9;
+pub const LATENCY: usize = 10;
 
 pub const TABLE_BITS: u32 = 10;
 type Sq9_0 = Bits<10>; // input components, two's complement (the bump's Q8.0 or the light's Q8.2)
@@ -68,6 +70,10 @@ pub struct Normalise {
     s6_r: DFF<Uq1_12>,
     s6_c: [DFF<Bits<10>>; 3],
     s6_neg: [DFF<Bit>; 3],
+    // stage 6b: the table entry and the shifted components, registered again after the block RAM
+    s6b_r: DFF<Uq1_12>,
+    s6b_c: [DFF<Bits<10>>; 3],
+    s6b_neg: [DFF<Bit>; 3],
     // stage 7: |c|·2^e·r ≤ 1023·4096 (U23)
     s7_p: [DFF<Bits<23>>; 3],
     s7_neg: [DFF<Bit>; 3],
@@ -121,6 +127,9 @@ impl Default for Normalise {
             s6_r: Default::default(),
             s6_c: Default::default(),
             s6_neg: Default::default(),
+            s6b_r: Default::default(),
+            s6b_c: Default::default(),
+            s6b_neg: Default::default(),
             s7_p: Default::default(),
             s7_neg: Default::default(),
             s8_n: Default::default(),
@@ -143,7 +152,7 @@ impl Default for Normalise {
 impl Logic for Normalise {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r);
+        dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r, s6b_r);
         self.valid.clock.next = self.clock.val();
         self.valid.d.next = self.valid_in.val();
         for i in 0..3 {
@@ -160,6 +169,8 @@ impl Logic for Normalise {
             self.s5_neg[i].clock.next = self.clock.val();
             self.s6_c[i].clock.next = self.clock.val();
             self.s6_neg[i].clock.next = self.clock.val();
+            self.s6b_c[i].clock.next = self.clock.val();
+            self.s6b_neg[i].clock.next = self.clock.val();
             self.s7_p[i].clock.next = self.clock.val();
             self.s7_neg[i].clock.next = self.clock.val();
             self.s8_n[i].clock.next = self.clock.val();
@@ -173,7 +184,7 @@ impl Logic for Normalise {
         }
         self.s1_neg[0].d.next = self.vec_x.val().get_bit(9);
         self.w_m[0].next = bit_cast::<16, 10>(self.s1_m[0].q.val());
-        self.w_c[0].next = bit_cast::<16, 10>(self.s6_c[0].q.val());
+        self.w_c[0].next = bit_cast::<16, 10>(self.s6b_c[0].q.val());
         // ---- component y: magnitude and sign (stage 1), widened for the multipliers
         self.s1_m[1].d.next = self.vec_y.val();
         if self.vec_y.val().get_bit(9) {
@@ -181,7 +192,7 @@ impl Logic for Normalise {
         }
         self.s1_neg[1].d.next = self.vec_y.val().get_bit(9);
         self.w_m[1].next = bit_cast::<16, 10>(self.s1_m[1].q.val());
-        self.w_c[1].next = bit_cast::<16, 10>(self.s6_c[1].q.val());
+        self.w_c[1].next = bit_cast::<16, 10>(self.s6b_c[1].q.val());
         // ---- component z: magnitude and sign (stage 1), widened for the multipliers
         self.s1_m[2].d.next = self.vec_z.val();
         if self.vec_z.val().get_bit(9) {
@@ -189,10 +200,10 @@ impl Logic for Normalise {
         }
         self.s1_neg[2].d.next = self.vec_z.val().get_bit(9);
         self.w_m[2].next = bit_cast::<16, 10>(self.s1_m[2].q.val());
-        self.w_c[2].next = bit_cast::<16, 10>(self.s6_c[2].q.val());
+        self.w_c[2].next = bit_cast::<16, 10>(self.s6b_c[2].q.val());
         // stage 6 reads the table at the stage-5 address
         self.rsqrt.address.next = self.s5_addr.q.val();
-        self.w_r.next = bit_cast::<16, 13>(self.s6_r.q.val());
+        self.w_r.next = bit_cast::<16, 13>(self.s6b_r.q.val());
         for i in 0..3 {
             // stage 2
             self.w_sq[i].next = self.w_m[i].val() * self.w_m[i].val();
@@ -210,10 +221,13 @@ impl Logic for Normalise {
             // stage 6: carried
             self.s6_c[i].d.next = self.s5_c[i].q.val();
             self.s6_neg[i].d.next = self.s5_neg[i].q.val();
+            // stage 6b: carried
+            self.s6b_c[i].d.next = self.s6_c[i].q.val();
+            self.s6b_neg[i].d.next = self.s6_neg[i].q.val();
             // stage 7: 10 × 13 → 23 bits
             self.w_p[i].next = self.w_c[i].val() * self.w_r.val();
             self.s7_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
-            self.s7_neg[i].d.next = self.s6_neg[i].q.val();
+            self.s7_neg[i].d.next = self.s6b_neg[i].q.val();
             // stage 8: (p + 2^10) >> 11
             self.w_u[i].next = self.s7_p[i].q.val() + 1024; // < 2^23
             self.s8_n[i].d.next = self.w_u[i].val().get_bits::<12>(11);
@@ -259,6 +273,7 @@ impl Logic for Normalise {
         self.s5_addr.d.next = self.w_sn.val().get_bits::<10>(10);
         // stage 6
         self.s6_r.d.next = self.rsqrt.data.val();
+        self.s6b_r.d.next = self.s6_r.q.val();
         self.norm_x.next = self.s9_out[0].q.val();
         self.norm_y.next = self.s9_out[1].q.val();
         self.norm_z.next = self.s9_out[2].q.val();

@@ -65,7 +65,36 @@ macro_rules! stream_unit {
 pub struct Runner<U: StreamUnit> {
     pub uut: U,
     cycle: u64,
-    vcd: Option<rust_hdl::core::vcd_probe::VCDProbe<Box<dyn std::io::Write>>>,
+    vcd: Option<rust_hdl::core::vcd_probe::VCDProbe<Guarded>>,
+    sink: Option<Sink>,
+}
+
+type Sink = std::sync::Arc<std::sync::Mutex<(Box<dyn std::io::Write>, Option<std::io::Error>)>>;
+
+/// The VCD's writer as rust-hdl sees it: rust-hdl unwraps every VCD write, so a full disk would panic inside it.
+/// This writer never fails towards rust-hdl; it keeps the first error for `Runner::finish` to return, and writes
+/// nothing after it.
+pub struct Guarded(Sink);
+
+impl std::io::Write for Guarded {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        let mut g = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        if g.1.is_none() {
+            if let Err(e) = g.0.write_all(buf) {
+                g.1 = Some(e);
+            }
+        }
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        let mut g = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        if g.1.is_none() {
+            if let Err(e) = g.0.flush() {
+                g.1 = Some(e);
+            }
+        }
+        Ok(())
+    }
 }
 
 /// What left the unit: the cycle each output vector was sampled in, and its values.
@@ -84,8 +113,9 @@ impl<U: StreamUnit> Runner<U> {
     pub fn with_vcd(out: Option<Box<dyn std::io::Write>>) -> Self {
         let mut uut = U::build();
         uut.connect_all();
-        let vcd = out.map(|w| write_vcd_header(w, &uut));
-        let mut r = Runner { uut, cycle: 0, vcd };
+        let sink: Option<Sink> = out.map(|w| std::sync::Arc::new(std::sync::Mutex::new((w, None))));
+        let vcd = sink.as_ref().map(|s| write_vcd_header(Guarded(s.clone()), &uut));
+        let mut r = Runner { uut, cycle: 0, vcd, sink };
         r.uut.set_inputs(false, &vec![0; U::INPUTS.len()]);
         r.uut.set_clock(false);
         r.settle();
@@ -101,7 +131,8 @@ impl<U: StreamUnit> Runner<U> {
 
     fn trace(&mut self, t: u64) {
         if let Some(mut v) = self.vcd.take() {
-            v.timestamp(t).expect("VCD write");
+            // cannot fail: `Guarded` keeps the error for `finish`
+            let _ = v.timestamp(t);
             self.vcd = Some(write_vcd_change(v, &self.uut));
         }
     }
@@ -146,11 +177,15 @@ impl<U: StreamUnit> Runner<U> {
         c
     }
 
-    /// Close the VCD, flushing it.
-    pub fn finish(mut self) {
-        if let Some(v) = self.vcd.take() {
-            drop(v);
+    /// Close the VCD and flush it; Err carries the first write error, if any write failed.
+    pub fn finish(mut self) -> std::io::Result<()> {
+        drop(self.vcd.take());
+        let Some(sink) = self.sink.take() else { return Ok(()) };
+        let mut g = sink.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(e) = g.1.take() {
+            return Err(e);
         }
+        g.0.flush()
     }
 }
 
@@ -199,4 +234,42 @@ pub fn run_threaded<U: StreamUnit + Send + 'static>(slots: Vec<Option<Vec<u64>>>
     sim.run(Box::new(uut), max_time).map_err(|e| format!("{}: rust-hdl Simulation failed: {e:?}", U::NAME))?;
     let c = got.lock().expect("collector").clone();
     Ok(c)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A writer that takes `room` bytes and then fails, as a full disk does.
+    struct Full {
+        room: usize,
+    }
+
+    impl std::io::Write for Full {
+        fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+            if self.room == 0 {
+                return Err(std::io::Error::new(std::io::ErrorKind::StorageFull, "no space left on device"));
+            }
+            let n = buf.len().min(self.room);
+            self.room -= n;
+            Ok(n)
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_failed_vcd_write_is_an_error_not_a_panic() {
+        for room in [0, 100, 5_000] {
+            let mut r = Runner::<crate::gloss::Gloss>::with_vcd(Some(Box::new(Full { room })));
+            let got = r.run((0..64).map(|k| Some(vec![k % 256, (k * 16) % 1024])));
+            assert_eq!(got.outputs.len(), 64, "the simulation runs on");
+            let e = r.finish().expect_err("the VCD could not be written whole");
+            assert_eq!(e.kind(), std::io::ErrorKind::StorageFull);
+        }
+        let mut r = Runner::<crate::gloss::Gloss>::with_vcd(Some(Box::new(Full { room: usize::MAX })));
+        r.run((0..4).map(|k| Some(vec![k, k])));
+        assert!(r.finish().is_ok());
+    }
 }

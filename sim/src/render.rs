@@ -59,13 +59,30 @@ pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], 
     from_outputs(size, &got.outputs, t.elapsed().as_secs_f64())
 }
 
-/// The exported Verilog under Verilator (built in `dir`); the time counts the run, not the build.
-pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path) -> Result<Image, String> {
+/// The exported Verilog under Verilator (built in `dir`), whole frame, on one process and then split across
+/// `procs` processes at once; the image is the split run's (the demo checks both against the model), and the
+/// bare loop's speed on the same build is measured in the same call, for comparison.
+pub struct VerilatorRun {
+    pub image: Image,
+    /// the frame on one process (the image's pixels must equal `image`'s)
+    pub single: Image,
+    pub procs: usize,
+    /// cycles/s of the harness's bare loop (inputs generated in C++, no I/O), as many cycles as the frame's slots
+    pub bare_cycles_per_second: f64,
+    /// the frame's slots, flush included, over the one-process run's simulation loop alone
+    pub single_loop_seconds: f64,
+}
+
+pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path, procs: usize) -> Result<VerilatorRun, String> {
     let built = cosim::build::<U>(Simulator::Verilator, dir)?;
     let slots = patterns(m, inputs);
     let t = Instant::now();
-    let got = built.run(&slots)?;
-    Ok(from_outputs(size, &got.outputs, t.elapsed().as_secs_f64()))
+    let (one, tm) = built.run_records(&slots)?;
+    let single = from_outputs(size, &one.outputs, t.elapsed().as_secs_f64());
+    let (split, tm2) = built.run_split(&slots, procs)?;
+    let image = from_outputs(size, &split.outputs, tm2.wall_seconds);
+    let bare_cycles_per_second = built.bare((slots.len() + U::LATENCY + 1) as u64)?;
+    Ok(VerilatorRun { image, single, procs, bare_cycles_per_second, single_loop_seconds: tm.loop_seconds })
 }
 
 /// Write an RGB image as PNG, whole or not at all.

@@ -10,11 +10,22 @@ use vectors::UnitModel;
 pub fn write_vcd<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<Vec<Vec<u64>>, String> {
     let tmp = path.with_extension("vcd.partial");
     let file = std::fs::File::create(&tmp).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    let w: Box<dyn std::io::Write> = Box::new(std::io::BufWriter::new(file));
+    let got = match trace::<U>(model, inputs, Box::new(std::io::BufWriter::new(file))) {
+        Ok(g) => g,
+        Err(e) => {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(format!("cannot write {}: {e}", path.display()));
+        }
+    };
+    std::fs::rename(&tmp, path).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    Ok(got)
+}
+
+/// Trace `inputs` through the unit into any writer (standard output, say); Err when a write failed.
+pub fn trace<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], w: Box<dyn std::io::Write>) -> std::io::Result<Vec<Vec<u64>>> {
     let mut r = Runner::<U>::with_vcd(Some(w));
     let slots = inputs.iter().map(|v| Some(v.iter().zip(model.inputs).map(|(&x, p)| to_pattern(x, p.bits)).collect()));
     let got = r.run(slots);
-    r.finish();
-    std::fs::rename(&tmp, path).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    r.finish()?;
     Ok(got.outputs)
 }

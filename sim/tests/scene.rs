@@ -13,12 +13,16 @@ fn agree<U: rtl::StreamUnit>(m: &vectors::UnitModel, inputs: &[Vec<i64>]) {
     let model = sim::render::model(m, SIZE, inputs);
     let hdl = sim::render::rust_hdl::<U>(m, SIZE, inputs, &|_| {});
     let dir = std::env::temp_dir().join(format!("bumprtl-scene-{}-{}", m.name, std::process::id()));
-    let vl = sim::render::verilator::<U>(m, SIZE, inputs, &dir).unwrap();
+    let vl = sim::render::verilator::<U>(m, SIZE, inputs, &dir, 2).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(model.p, hdl.p, "{}: rust-hdl", m.name);
     assert_eq!(model.rgb, hdl.rgb, "{}: rust-hdl", m.name);
-    assert_eq!(model.p, vl.p, "{}: Verilator", m.name);
-    assert_eq!(model.rgb, vl.rgb, "{}: Verilator", m.name);
+    // the frame on one process and split across two
+    for (how, img) in [("one process", &vl.single), ("two processes", &vl.image)] {
+        assert_eq!(model.p, img.p, "{}: Verilator, {how}", m.name);
+        assert_eq!(model.rgb, img.rgb, "{}: Verilator, {how}", m.name);
+    }
+    assert!(vl.bare_cycles_per_second > 0.0);
 }
 
 #[test]

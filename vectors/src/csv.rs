@@ -51,3 +51,10 @@ pub fn parse(unit: &UnitModel, text: &str) -> Result<VectorFile, String> {
     }
     Ok(VectorFile { header, rows })
 }
+
+include!(concat!(env!("OUT_DIR"), "/golden.rs"));
+
+/// The committed golden vector file of a unit (`vectors/data/<unit>.csv`), as built into this crate.
+pub fn golden(unit: &str) -> Option<&'static str> {
+    GOLDEN.iter().find(|(u, _)| *u == unit).map(|(_, text)| *text)
+}

@@ -80,17 +80,19 @@ pub fn draw(rng: &mut dyn rand::RngCore, p: &Port) -> i64 {
     }
 }
 
-/// The vectors for a unit: its hard cases first, then either its whole input space or `count` random vectors
-/// drawn from a ChaCha8 stream seeded with `seed` (the same seed gives the same file on every machine).
+/// The vectors for a unit: either its whole input space, each input exactly once (the hard cases are in it), or
+/// its hard cases first and then `count` random vectors drawn from a ChaCha8 stream seeded with `seed` (the same
+/// seed gives the same file on every machine).
 pub fn generate(unit: &UnitModel, exhaustive: bool, count: usize, seed: u64) -> Result<Vec<Vec<i64>>, String> {
     use rand::SeedableRng;
-    let mut v = (unit.hard_cases)();
     if exhaustive {
         let all = unit.exhaustive.ok_or_else(|| {
             format!("{} has no exhaustive vector set: its input space is above 2^20; use --count", unit.name)
         })?;
-        v.extend(all());
-    } else {
+        return Ok(all());
+    }
+    let mut v = (unit.hard_cases)();
+    {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
         v.extend((0..count).map(|_| (unit.random)(&mut rng)));
     }

@@ -1,0 +1,77 @@
+//! The demo's hardware-cost figures: each pipeline on the iCE40 UP5K and on the ECP5-45F, cached beside the
+//! demo's output (the first run places every pipeline; later runs read the figures while the Verilog is unchanged).
+
+use indicatif::{MultiProgress, ProgressBar};
+use rtl::StreamUnit;
+use std::path::{Path, PathBuf};
+use synth::fpga::{synth_and_place_cached, synth_unit, Part, SynthReport, ECP5_45F, UP5K};
+
+/// A pipeline on one part: placed, or the resource that keeps it off the part.
+#[derive(Clone, Debug)]
+pub enum Fit {
+    Placed(SynthReport),
+    DoesNotFit(String),
+}
+
+/// The parts the demo reports, smallest first.
+pub const DEMO_PARTS: [Part; 2] = [UP5K, ECP5_45F];
+
+/// One pipeline's figures on `parts`; `say` tells the progress line what runs now.
+pub fn measure<U: StreamUnit>(dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
+    let mut v = Vec::new();
+    for p in parts {
+        let d = dir.join(U::NAME).join(p.name);
+        say(format!("{}: yosys for the {}", U::NAME, p.title));
+        let c = synth_unit::<U>(&d, p.family)?;
+        let fit = match p.overflow(&c) {
+            Some(o) => Fit::DoesNotFit(o),
+            None => {
+                say(format!("{}: nextpnr for the {} (cached after the first run)", U::NAME, p.title));
+                Fit::Placed(synth_and_place_cached::<U>(&d, *p, p.default_freq())?)
+            }
+        };
+        v.push((*p, fit));
+    }
+    Ok(v)
+}
+
+/// A job for one of the demo's synthesis threads.
+pub type Job<'a> = Box<dyn FnOnce(&dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> + Send + 'a>;
+
+/// Run the jobs on two threads (the machine's two cores), each with its own progress line; results in job order.
+pub fn run_jobs(jobs: Vec<Job<'_>>) -> Result<Vec<Vec<(Part, Fit)>>, String> {
+    let multi = MultiProgress::new();
+    let n = jobs.len();
+    let mut queues: [Vec<(usize, Job<'_>)>; 2] = [Vec::new(), Vec::new()];
+    for (k, j) in jobs.into_iter().enumerate() {
+        queues[k % 2].push((k, j));
+    }
+    let mut results: Vec<Option<Result<Vec<(Part, Fit)>, String>>> = (0..n).map(|_| None).collect();
+    std::thread::scope(|s| {
+        let handles: Vec<_> = queues
+            .into_iter()
+            .map(|q| {
+                let bar = multi.add(ProgressBar::new_spinner());
+                bar.enable_steady_tick(std::time::Duration::from_millis(200));
+                s.spawn(move || {
+                    let t = std::time::Instant::now();
+                    let say = |m: String| bar.set_message(format!("{m} [{:.0} s]", t.elapsed().as_secs_f64()));
+                    let out: Vec<_> = q.into_iter().map(|(k, job)| (k, job(&say))).collect();
+                    bar.finish_and_clear();
+                    out
+                })
+            })
+            .collect();
+        for h in handles {
+            for (k, r) in h.join().expect("a synthesis thread panicked") {
+                results[k] = Some(r);
+            }
+        }
+    });
+    results.into_iter().map(|r| r.expect("every job ran")).collect()
+}
+
+/// Where the demo keeps its synthesis runs.
+pub fn dir(out: &Path) -> PathBuf {
+    out.join("synth")
+}

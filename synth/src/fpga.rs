@@ -1,0 +1,413 @@
+//! Synthesis and placement for the open flow's two families: iCE40 UP5K (yosys `synth_ice40 -dsp`,
+//! nextpnr-ice40) and Lattice ECP5 25F / 45F / 85F (yosys `synth_ecp5`, nextpnr-ecp5).
+//!
+//! A unit is first synthesised alone, for its own cell counts; those decide whether it fits a part. It is then
+//! placed inside a serial I/O wrapper (a unit has hundreds of port bits, a package a few dozen to a few hundred
+//! pins): the wrapper's `hold` register sits between the input shift chain and the unit, so that yosys cannot
+//! merge pipeline flops into the chain. nextpnr gives the logic cells used and the fmax of the real clock.
+
+use crate::export::{export, write_atomic};
+use crate::tools;
+use rtl::StreamUnit;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// A device family: which yosys script, which place-and-route tool, and what yosys calls its cells.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    Ice40,
+    Ecp5,
+}
+
+impl Family {
+    /// yosys cell names: LUT, flip-flop (a prefix), multiplier, block RAM, carry.
+    fn cells(self) -> [&'static str; 5] {
+        match self {
+            Family::Ice40 => ["SB_LUT4", "SB_DFF", "SB_MAC16", "SB_RAM40_4K", "SB_CARRY"],
+            Family::Ecp5 => ["LUT4", "TRELLIS_FF", "MULT18X18D", "DP16KD", "CCU2C"],
+        }
+    }
+
+    fn synth_command(self) -> &'static str {
+        match self {
+            Family::Ice40 => "synth_ice40 -dsp",
+            Family::Ecp5 => "synth_ecp5",
+        }
+    }
+}
+
+/// One part the flow can place on, with the resources a fit is judged by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Part {
+    /// the name `--target` takes
+    pub name: &'static str,
+    pub title: &'static str,
+    pub family: Family,
+    pub lut4: u64,
+    pub ff: u64,
+    pub dsp: u64,
+    pub bram: u64,
+    pnr: &'static [&'static str],
+}
+
+pub const UP5K: Part = Part {
+    name: "up5k", title: "iCE40 UP5K (SG48)", family: Family::Ice40,
+    lut4: 5280, ff: 5280, dsp: 8, bram: 30, pnr: &["--up5k", "--package", "sg48", "--pcf-allow-unconstrained"],
+};
+pub const ECP5_25F: Part = Part {
+    name: "ecp5-25f", title: "ECP5 LFE5U-25F-6 (CABGA381)", family: Family::Ecp5,
+    lut4: 24288, ff: 24288, dsp: 28, bram: 56, pnr: &["--25k", "--package", "CABGA381", "--speed", "6", "--lpf-allow-unconstrained"],
+};
+pub const ECP5_45F: Part = Part {
+    name: "ecp5-45f", title: "ECP5 LFE5U-45F-6 (CABGA381)", family: Family::Ecp5,
+    lut4: 43848, ff: 43848, dsp: 72, bram: 108, pnr: &["--45k", "--package", "CABGA381", "--speed", "6", "--lpf-allow-unconstrained"],
+};
+pub const ECP5_85F: Part = Part {
+    name: "ecp5-85f", title: "ECP5 LFE5U-85F-6 (CABGA381)", family: Family::Ecp5,
+    lut4: 83640, ff: 83640, dsp: 156, bram: 208, pnr: &["--85k", "--package", "CABGA381", "--speed", "6", "--lpf-allow-unconstrained"],
+};
+
+/// Smallest first within a family, the UP5K first of all: the order the default target is chosen in.
+pub const PARTS: &[Part] = &[UP5K, ECP5_25F, ECP5_45F, ECP5_85F];
+
+pub fn part(name: &str) -> Result<Part, String> {
+    PARTS.iter().copied().find(|p| p.name == name).ok_or_else(|| {
+        let names: Vec<&str> = PARTS.iter().map(|p| p.name).collect();
+        format!("unknown target `{name}`; the targets are: {}", names.join(", "))
+    })
+}
+
+impl Part {
+    /// The clock target asked of nextpnr when the user names none, MHz.
+    pub fn default_freq(&self) -> f64 {
+        match self.family {
+            Family::Ice40 => 50.0,
+            Family::Ecp5 => 125.0,
+        }
+    }
+
+    /// The first resource the unit's cell counts overflow on this part, as a phrase; None when it fits.
+    pub fn overflow(&self, r: &Cells) -> Option<String> {
+        let [lut, ff, dsp, bram, _] = self.family.cells();
+        // an ECP5 carry cell (CCU2C) holds two LUT4s of a slice; an iCE40 carry sits beside its LUT
+        let luts = match self.family {
+            Family::Ice40 => r.lut4,
+            Family::Ecp5 => r.lut4 + 2 * r.carry,
+        };
+        let lut_name = match self.family {
+            Family::Ice40 => lut.to_string(),
+            Family::Ecp5 => "LUT4 (CCU2C counted as two)".to_string(),
+        };
+        [(dsp.to_string(), r.dsp, self.dsp), (bram.to_string(), r.bram, self.bram), (lut_name, luts, self.lut4), (format!("{ff}*"), r.ff, self.ff)]
+            .into_iter()
+            .find(|(_, need, have)| need > have)
+            .map(|(name, need, have)| format!("it needs {need} {}, the {} has {have}", name.trim_end_matches('*'), self.title))
+    }
+}
+
+/// What yosys made of a unit alone, in the family's own cells.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Cells {
+    pub lut4: u64,
+    pub ff: u64,
+    pub dsp: u64,
+    pub bram: u64,
+    pub carry: u64,
+}
+
+/// A unit's figures on one part.
+#[derive(Clone, Debug, Default)]
+pub struct SynthReport {
+    pub unit: String,
+    /// the part's `--target` name
+    pub part: String,
+    pub cells: Cells,
+    pub latency: usize,
+    /// why this part: the resource that ruled out each smaller one (empty when the user named the part)
+    pub choice: String,
+    /// from nextpnr, with the I/O wrapper: logic cells used (ICESTORM_LC, TRELLIS_COMB), fmax of the real clock,
+    /// and the critical path as nextpnr reports it (its end points and delay)
+    pub lc: Option<u64>,
+    pub fmax_mhz: Option<f64>,
+    pub critical: Option<String>,
+    /// why place-and-route failed, when it did
+    pub place_error: Option<String>,
+}
+
+impl SynthReport {
+    pub fn part(&self) -> Part {
+        part(&self.part).expect("a report names a known part")
+    }
+}
+
+fn wrapper<U: StreamUnit>() -> String {
+    let ni: usize = 1 + U::INPUTS.iter().map(|p| p.1).sum::<usize>();
+    let no: usize = 1 + U::OUTPUTS.iter().map(|p| p.1).sum::<usize>();
+    let mut s = String::new();
+    let _ = writeln!(s, "// generated by bumprtl: serial I/O wrapper for place-and-route of {}", U::NAME);
+    let _ = writeln!(s, "module {}_io(input clk, input sin, input load, output sout);", U::NAME);
+    let _ = writeln!(s, "  reg [{}:0] shin = 0; reg [{}:0] hold = 0; reg [{}:0] shout = 0; wire [{}:0] res;", ni - 1, ni - 1, no - 1, no - 1);
+    let _ = writeln!(s, "  always @(posedge clk) begin\n    shin <= {{shin[{}:0], sin}};", ni.saturating_sub(2));
+    let _ = writeln!(s, "    if (load) begin hold <= shin; shout <= res; end");
+    let _ = writeln!(s, "    else shout <= {{shout[{}:0], 1'b0}};\n  end", no.saturating_sub(2));
+    let _ = writeln!(s, "  assign sout = shout[{}];", no - 1);
+    let mut conns = vec![".clock(clk)".to_string(), ".valid_in(hold[0])".into(), ".valid_out(res[0])".into()];
+    let mut at = 1;
+    for (n, b) in U::INPUTS {
+        conns.push(format!(".{n}(hold[{}:{at}])", at + b - 1));
+        at += b;
+    }
+    at = 1;
+    for (n, b) in U::OUTPUTS {
+        conns.push(format!(".{n}(res[{}:{at}])", at + b - 1));
+        at += b;
+    }
+    let _ = writeln!(s, "  {} dut({});\nendmodule", U::NAME, conns.join(", "));
+    s
+}
+
+fn stat_count(text: &str, cell: &str, prefix: bool) -> u64 {
+    // the last `stat` table in the log is the final netlist
+    let start = text.rfind("Number of cells:").unwrap_or(0);
+    text[start..]
+        .lines()
+        .filter_map(|l| {
+            let mut f = l.split_whitespace();
+            let name = f.next()?;
+            let n: u64 = f.next()?.parse().ok()?;
+            let hit = if prefix { name.starts_with(cell) } else { name == cell };
+            hit.then_some(n)
+        })
+        .sum()
+}
+
+fn cells(family: Family, log: &str) -> Cells {
+    let [lut, ff, dsp, bram, carry] = family.cells();
+    Cells {
+        lut4: stat_count(log, lut, false),
+        ff: stat_count(log, ff, true),
+        dsp: stat_count(log, dsp, false),
+        bram: stat_count(log, bram, false),
+        carry: stat_count(log, carry, false),
+    }
+}
+
+fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>) -> Result<String, String> {
+    let mut script = String::new();
+    for f in files {
+        let _ = write!(script, "read_verilog {f}; ");
+    }
+    let _ = write!(script, "{} -top {top}", family.synth_command());
+    if let Some(j) = json {
+        let _ = write!(script, " -json {j}");
+    }
+    script.push_str("; stat");
+    let log = format!("{top}.{}.yosys.log", family.synth_command().split_whitespace().next().unwrap_or("synth"));
+    tools::run(dir, "yosys", &["-q", "-p", &script, "-l", &log])?;
+    std::fs::read_to_string(dir.join(&log)).map_err(|e| format!("no yosys log: {e}"))
+}
+
+/// yosys figures of the unit alone in one family's cells (no place-and-route), kept in `dir` and reused while the
+/// unit's Verilog is unchanged.
+pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
+    let v = export::<U>();
+    v.write(dir)?;
+    let key = format!("{}\n{}", family.synth_command(), v.text);
+    let (stamp, saved) = (dir.join(format!("{family:?}.cells.stamp")), dir.join(format!("{family:?}.cells")));
+    if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
+        let n: Vec<u64> = std::fs::read_to_string(&saved).unwrap_or_default().split_whitespace().filter_map(|x| x.parse().ok()).collect();
+        if let [lut4, ff, dsp, bram, carry] = n[..] {
+            return Ok(Cells { lut4, ff, dsp, bram, carry });
+        }
+    }
+    let log = yosys(dir, family, U::NAME, &[&format!("{}.v", U::NAME)], None)?;
+    let c = cells(family, &log);
+    write_atomic(&saved, format!("{} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry).as_bytes())?;
+    write_atomic(&stamp, key.as_bytes())?;
+    Ok(c)
+}
+
+/// The part a unit is placed on when the user names none: the UP5K when the unit fits it, else the smallest ECP5
+/// it fits. Returns the part, the unit's cells in that part's family, and why each smaller part was passed over.
+pub fn choose<U: StreamUnit>(dir: &Path) -> Result<(Part, Cells, String), String> {
+    let mut why = Vec::new();
+    let mut by_family: Vec<(Family, Cells)> = Vec::new();
+    for p in PARTS {
+        let c = match by_family.iter().find(|(f, _)| *f == p.family) {
+            Some((_, c)) => *c,
+            None => {
+                let c = synth_unit::<U>(dir, p.family)?;
+                by_family.push((p.family, c));
+                c
+            }
+        };
+        match p.overflow(&c) {
+            None => {
+                let why = if why.is_empty() { format!("it fits the {}", p.title) } else { why.join("; ") };
+                return Ok((*p, c, why));
+            }
+            Some(o) => why.push(format!("not {}: {o}", p.name)),
+        }
+    }
+    Err(format!("{} fits none of the parts: {}", U::NAME, why.join("; ")))
+}
+
+/// The first of nextpnr's critical path reports, cut to its end points and total delay.
+fn critical_path(log: &str) -> Option<String> {
+    let start = log.find("Critical path report for clock")?;
+    // the report ends at its "N ns logic, M ns routing" line
+    let lines: Vec<&str> = log[start..].lines().skip(1).collect();
+    let end = lines.iter().position(|l| l.contains("ns logic,"))?;
+    let block = &lines[..=end];
+    let cell = |l: &str| l.split("Source ").nth(1).or_else(|| l.split("Sink ").nth(1)).map(|x| x.trim().to_string());
+    let first = block.iter().find_map(|l| l.contains("Source ").then(|| cell(l)).flatten())?;
+    let last = block.iter().rev().find_map(|l| l.contains("Sink ").then(|| cell(l)).flatten())?;
+    // "Info: 13.5 ns logic, 2.1 ns routing" closes each report
+    let total = block[end].trim_start_matches("Info:").trim();
+    Some(format!("{first} → {last} ({total})"))
+}
+
+/// The unit on a part: its own cells (and a fit check that names the resource that overflows), then the wrapped
+/// unit through yosys and nextpnr at a `freq_mhz` target. A placement that fails (a design too big for the part
+/// in a way the cell counts did not show) is reported as a figure, not an error.
+pub fn synth_and_place<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64, choice: &str) -> Result<SynthReport, String> {
+    let c = synth_unit::<U>(dir, part.family)?;
+    if let Some(o) = part.overflow(&c) {
+        return Err(format!("{} does not fit the {}: {o}", U::NAME, part.title));
+    }
+    let mut r = SynthReport { unit: U::NAME.into(), part: part.name.into(), cells: c, latency: U::LATENCY, choice: choice.into(), ..Default::default() };
+    let w = format!("{}_io.v", U::NAME);
+    write_atomic(&dir.join(&w), wrapper::<U>().as_bytes())?;
+    let top = format!("{}_io", U::NAME);
+    yosys(dir, part.family, &top, &[&format!("{}.v", U::NAME), &w], Some("wrapped.json"))?;
+    let freq = format!("{freq_mhz}");
+    let mut args: Vec<&str> = part.pnr.to_vec();
+    args.extend(["--json", "wrapped.json", "--freq", &freq, "--timing-allow-fail", "--seed", "1"]);
+    let (prog, lc_name) = match part.family {
+        Family::Ice40 => {
+            args.extend(["--asc", "wrapped.asc"]);
+            ("nextpnr-ice40".to_string(), "ICESTORM_LC:")
+        }
+        Family::Ecp5 => (tools::nextpnr_ecp5().ok_or_else(tools::nextpnr_ecp5_missing)?, "TRELLIS_COMB:"),
+    };
+    let out = match tools::run(dir, &prog, &args) {
+        Ok(o) => o,
+        Err(e) => {
+            let why = e.lines().find(|l| l.contains("ERROR")).unwrap_or("place-and-route failed").trim().to_string();
+            r.place_error = Some(why);
+            return Ok(r);
+        }
+    };
+    let text = String::from_utf8_lossy(&out.stderr).to_string();
+    write_atomic(&dir.join("nextpnr.log"), text.as_bytes())?;
+    for l in text.lines() {
+        if let Some(rest) = l.split(lc_name).nth(1) {
+            // the utilisation table ("  224/ 5280  4%"), not the placer's progress lines
+            if let Some(n) = rest.trim().split('/').next().and_then(|x| x.trim().parse().ok()) {
+                r.lc = Some(n);
+            }
+        }
+        if l.contains("Max frequency for clock") && l.contains("clk") && !l.contains("PACKER") {
+            r.fmax_mhz = l.split(':').nth(2).and_then(|x| x.split_whitespace().next()).and_then(|x| x.parse().ok());
+        }
+    }
+    // the last report is the routed design's
+    r.critical = text.rfind("Critical path report for clock").and_then(|k| critical_path(&text[k..]));
+    Ok(r)
+}
+
+impl SynthReport {
+    fn to_text(&self) -> String {
+        let o = |x: Option<String>| x.unwrap_or_default();
+        let c = &self.cells;
+        format!(
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\n",
+            self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, self.latency, self.choice.replace('\n', " "),
+            o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
+            o(self.critical.clone()), o(self.place_error.clone())
+        )
+    }
+
+    fn from_text(text: &str) -> Option<SynthReport> {
+        let get = |k: &str| text.lines().find_map(|l| l.strip_prefix(k).and_then(|r| r.strip_prefix('=')));
+        let opt = |k: &str| get(k).filter(|v| !v.is_empty());
+        let part = get("part")?;
+        self::part(part).ok()?;
+        Some(SynthReport {
+            unit: get("unit")?.to_string(),
+            part: part.to_string(),
+            cells: Cells {
+                lut4: get("lut4")?.parse().ok()?,
+                ff: get("ff")?.parse().ok()?,
+                dsp: get("dsp")?.parse().ok()?,
+                bram: get("bram")?.parse().ok()?,
+                carry: get("carry")?.parse().ok()?,
+            },
+            latency: get("latency")?.parse().ok()?,
+            choice: get("choice")?.to_string(),
+            lc: opt("lc").and_then(|v| v.parse().ok()),
+            fmax_mhz: opt("fmax_mhz").and_then(|v| v.parse().ok()),
+            critical: opt("critical").map(str::to_string),
+            place_error: opt("place_error").map(str::to_string),
+        })
+    }
+}
+
+/// `synth_and_place`, reusing the figures of an earlier run in `dir` when the unit's Verilog, the wrapper, the part
+/// and the target frequency are all unchanged (place-and-route takes minutes; the demo asks for it on every run).
+pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
+    let key = format!("{}\n{}\n{}\n{freq_mhz}", export::<U>().text, wrapper::<U>(), part.name);
+    let (stamp, saved) = (dir.join("report.stamp"), dir.join("report.txt"));
+    if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
+        if let Some(r) = std::fs::read_to_string(&saved).ok().as_deref().and_then(SynthReport::from_text) {
+            return Ok(r);
+        }
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let r = synth_and_place::<U>(dir, part, freq_mhz, "")?;
+    write_atomic(&saved, r.to_text().as_bytes())?;
+    write_atomic(&stamp, key.as_bytes())?;
+    Ok(r)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_saved_report_reads_back_whole() {
+        let r = SynthReport {
+            unit: "u".into(), part: "ecp5-45f".into(), cells: Cells { lut4: 1, ff: 3, dsp: 4, bram: 5, carry: 2 },
+            latency: 8, choice: "not up5k: it needs 9 SB_MAC16".into(), lc: Some(6), fmax_mhz: Some(7.5),
+            critical: Some("a → b (1 ns logic, 2 ns routing)".into()), place_error: Some("ERROR: no BELs".into()),
+        };
+        let back = SynthReport::from_text(&r.to_text()).unwrap();
+        assert_eq!(back.to_text(), r.to_text());
+        let none = SynthReport { lc: None, fmax_mhz: None, critical: None, place_error: None, ..r };
+        assert_eq!(SynthReport::from_text(&none.to_text()).unwrap().to_text(), none.to_text());
+        assert!(SynthReport::from_text("unit=u\nlut4=x\n").is_none());
+        assert!(SynthReport::from_text(&none.to_text().replace("ecp5-45f", "ecp5-12f")).is_none());
+    }
+
+    #[test]
+    fn overflow_names_the_first_resource_past_the_part() {
+        let c = Cells { lut4: 2269, ff: 3341, dsp: 36, bram: 4, carry: 300 };
+        let o = ECP5_25F.overflow(&c).unwrap();
+        assert!(o.contains("36 MULT18X18D") && o.contains("has 28"), "{o}");
+        assert_eq!(ECP5_45F.overflow(&c), None);
+        let o = UP5K.overflow(&Cells { lut4: 5281, ..Default::default() }).unwrap();
+        assert!(o.contains("5281 SB_LUT4") && o.contains("has 5280"), "{o}");
+        let o = UP5K.overflow(&Cells { ff: 6000, ..Default::default() }).unwrap();
+        assert!(o.contains("6000 SB_DFF,"), "{o}");
+        // two CCU2C are four LUT4s of the part
+        assert!(ECP5_25F.overflow(&Cells { lut4: 24285, carry: 2, ..Default::default() }).is_some());
+        assert_eq!(ECP5_25F.overflow(&Cells { lut4: 24284, carry: 2, ..Default::default() }), None);
+    }
+
+    #[test]
+    fn targets_are_named_and_unknown_ones_refused() {
+        assert_eq!(part("ecp5-45f").unwrap(), ECP5_45F);
+        let e = part("ecp5-12f").unwrap_err();
+        assert!(e.contains("up5k, ecp5-25f, ecp5-45f, ecp5-85f"), "{e}");
+    }
+}

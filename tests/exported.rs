@@ -1,0 +1,100 @@
+//! What `bumprtl verilog` and `bumprtl synth` hand a user, run as a user would: the exported self-checking
+//! testbench under Icarus and Verilator with nothing but the files the command wrote, and the placement targets.
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn scratch(name: &str) -> PathBuf {
+    let d = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("exported-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn bumprtl(args: &[&str]) -> (i32, String, String) {
+    let o = Command::new(env!("CARGO_BIN_EXE_bumprtl")).args(args).output().unwrap();
+    (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stdout).into(), String::from_utf8_lossy(&o.stderr).into())
+}
+
+/// Run a shell command line in `dir`; (exit code, stdout + stderr).
+fn sh(dir: &Path, line: &str) -> (i32, String) {
+    let o = Command::new("sh").arg("-c").arg(line).current_dir(dir).output().unwrap();
+    (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr))
+}
+
+fn rows(unit: &str) -> usize {
+    let text = std::fs::read_to_string(format!("{}/vectors/data/{unit}.csv", env!("CARGO_MANIFEST_DIR"))).unwrap();
+    text.lines().filter(|l| !l.starts_with('#')).count() - 1
+}
+
+/// The two commands the README gives, as a user types them in the export folder.
+fn icarus(u: &str) -> String {
+    format!("iverilog -o {u}_tb.vvp {u}_tb.v {u}.v && vvp -n {u}_tb.vvp")
+}
+fn verilator(u: &str) -> String {
+    format!("verilator --binary -Wno-fatal --top-module {u}_tb {u}_tb.v {u}.v && ./obj_dir/V{u}_tb")
+}
+
+#[test]
+fn the_exported_testbench_passes_under_icarus_and_verilator_and_fails_on_a_wrong_vector() {
+    for u in ["gloss", "normalise", "polar_pipeline"] {
+        let d = scratch(u);
+        let (code, _, err) = bumprtl(&["verilog", u, "--out", d.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+        let n = rows(u);
+        for (sim, line) in [("icarus", icarus(u)), ("verilator", verilator(u))] {
+            let (code, out) = sh(&d, &line);
+            assert_eq!(code, 0, "{u} under {sim}:\n{out}");
+            assert!(out.lines().any(|l| l == format!("{n} passed, 0 failed")), "{u} under {sim}:\n{out}");
+        }
+        // one expected word off by one bit: both simulators must say so and exit non-zero
+        let path = d.join(format!("{u}_out.hex"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+        let k = lines.iter().position(|l| !l.starts_with("//")).unwrap() + 3;
+        let flipped = u64::from_str_radix(&lines[k], 16).unwrap() ^ 1;
+        lines[k] = format!("{flipped:0w$x}", w = lines[k].len());
+        std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+        let _ = std::fs::remove_dir_all(d.join("obj_dir"));
+        for (sim, line) in [("icarus", icarus(u)), ("verilator", verilator(u))] {
+            let (code, out) = sh(&d, &line);
+            assert_ne!(code, 0, "{u} under {sim} passed a wrong vector:\n{out}");
+            assert!(out.lines().any(|l| l == format!("{} passed, 1 failed", n - 1)), "{u} under {sim}:\n{out}");
+            assert!(out.contains("FAIL: vector 3:"), "{u} under {sim}:\n{out}");
+        }
+    }
+}
+
+#[test]
+fn cart_pipeline_places_on_the_ecp5_45f_and_a_part_too_small_is_named_with_its_resource() {
+    let d = scratch("targets");
+    let dir = d.to_str().unwrap();
+    let (code, _, err) = bumprtl(&["synth", "cart_pipeline", "--target", "ecp5-25f", "--dir", dir]);
+    assert_eq!(code, 1);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("does not fit the ECP5 LFE5U-25F") && err.contains("MULT18X18D") && err.contains("has 28"), "{err}");
+    let (code, out, err) = bumprtl(&["synth", "cart_pipeline", "--target", "up5k", "--dir", dir]);
+    assert_eq!(code, 1, "{out}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("SB_MAC16") && err.contains("has 8"), "{err}");
+    let (code, out, err) = bumprtl(&["synth", "cart_pipeline", "--target", "ecp5-45f", "--dir", dir]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("does not place"), "{out}");
+    let fmax: f64 = out
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("fmax"))
+        .and_then(|r| r.split_whitespace().next())
+        .and_then(|x| x.parse().ok())
+        .unwrap_or_else(|| panic!("no fmax in\n{out}"));
+    assert!(fmax > 0.0, "{out}");
+    let (code, _, err) = bumprtl(&["synth", "cart_pipeline", "--target", "ecp5-12f", "--dir", dir]);
+    assert_eq!(code, 1);
+    assert!(err.contains("unknown target `ecp5-12f`") && err.contains("ecp5-45f"), "{err}");
+}
+
+#[test]
+fn the_default_target_is_the_up5k_for_a_unit_that_fits_and_says_why() {
+    let d = scratch("default");
+    let (code, out, err) = bumprtl(&["synth", "gloss", "--dir", d.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("gloss on the iCE40 UP5K") && out.contains("it fits the iCE40 UP5K"), "{out}");
+}
