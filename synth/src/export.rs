@@ -38,3 +38,17 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), String> {
         format!("cannot write {}: {e}", path.display())
     })
 }
+
+/// Port connections that take each port from a slice of one bus, the first port at bit `from`:
+/// `.a(bus[2:0])`, `.b(bus[10:3])`, ... (the wrappers and benches that pack a unit's ports into one word).
+pub fn bus_slices(ports: &[(&str, usize)], bus: &str, from: usize) -> Vec<String> {
+    let mut at = from;
+    ports
+        .iter()
+        .map(|(n, w)| {
+            let c = format!(".{n}({bus}[{}:{at}])", at + w - 1);
+            at += w;
+            c
+        })
+        .collect()
+}

@@ -152,16 +152,8 @@ fn wrapper<U: StreamUnit>() -> String {
     let _ = writeln!(s, "    else shout <= {{shout[{}:0], 1'b0}};\n  end", no.saturating_sub(2));
     let _ = writeln!(s, "  assign sout = shout[{}];", no - 1);
     let mut conns = vec![".clock(clk)".to_string(), ".valid_in(hold[0])".into(), ".valid_out(res[0])".into()];
-    let mut at = 1;
-    for (n, b) in U::INPUTS {
-        conns.push(format!(".{n}(hold[{}:{at}])", at + b - 1));
-        at += b;
-    }
-    at = 1;
-    for (n, b) in U::OUTPUTS {
-        conns.push(format!(".{n}(res[{}:{at}])", at + b - 1));
-        at += b;
-    }
+    conns.extend(crate::export::bus_slices(U::INPUTS, "hold", 1));
+    conns.extend(crate::export::bus_slices(U::OUTPUTS, "res", 1));
     let _ = writeln!(s, "  {} dut({});\nendmodule", U::NAME, conns.join(", "));
     s
 }

@@ -76,16 +76,8 @@ fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(s, "  reg [IW-1:0] stim_mem [0:N-1];\n  reg [OW-1:0] want_mem [0:N-1];");
     let _ = writeln!(s, "  integer cycle = 0, seen = 0, passed = 0, failed = 0;");
     let mut conns = vec![".clock(clock)".to_string(), ".valid_in(valid_in)".into(), ".valid_out(valid_out)".into()];
-    let mut at = 0;
-    for (p, w) in U::INPUTS {
-        conns.push(format!(".{p}(stim[{}:{at}])", at + w - 1));
-        at += w;
-    }
-    at = 0;
-    for (p, w) in U::OUTPUTS {
-        conns.push(format!(".{p}(resp[{}:{at}])", at + w - 1));
-        at += w;
-    }
+    conns.extend(crate::export::bus_slices(U::INPUTS, "stim", 0));
+    conns.extend(crate::export::bus_slices(U::OUTPUTS, "resp", 0));
     let _ = writeln!(s, "  {u} dut(\n    {}\n  );", conns.join(",\n    "));
     // One process with no delay inside it does all the checking and driving: a loop with delays inside an
     // `initial` block was miscompiled by Verilator 5.006 at its default optimisation (the counters read back as
