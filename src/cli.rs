@@ -182,11 +182,8 @@ pub fn main() -> Result<(), String> {
             let text = vectors::csv::golden(u.name).ok_or_else(|| format!("{name} has no golden vector file in this build"))?;
             let file = vectors::csv::parse(u, text).map_err(|e| format!("vectors/data/{name}.csv: {e}"))?;
             let n_in = u.inputs.len();
-            let pat = |vals: &[i64], ports: &[vectors::Port]| -> Vec<u64> {
-                vals.iter().zip(ports).map(|(&v, p)| vectors::fixed::to_pattern(v, p.bits)).collect()
-            };
-            let ins: Vec<Vec<u64>> = file.rows.iter().map(|r| pat(&r[..n_in], u.inputs)).collect();
-            let outs: Vec<Vec<u64>> = file.rows.iter().map(|r| pat(&r[n_in..], u.outputs)).collect();
+            let ins: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[..n_in], u.inputs)).collect();
+            let outs: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[n_in..], u.outputs)).collect();
             let source = format!("vectors/data/{name}.csv");
             let paths = with_unit!(name.as_str(), U => {
                 let v = synth::export::<U>().write(&out)?;

@@ -28,8 +28,7 @@ fn bar(len: u64, what: &str) -> ProgressBar {
 struct Paths {
     model: Image,
     hdl: Image,
-    vl: Option<Image>,
-    vl_run: Option<render::VerilatorRun>,
+    vl: Option<render::VerilatorRun>,
     mism_hdl: usize,
     mism_vl: usize,
 }
@@ -49,13 +48,11 @@ fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], o
     } else {
         None
     };
-    let vl_run = vl;
-    let vl = vl_run.as_ref().map(|r| r.image.clone());
     let mism = |a: &Image| (0..inputs.len()).filter(|&k| a.p[k] != model.p[k] || a.rgb[k] != model.rgb[k]).count();
     // both Verilator runs, the one-process and the split one, against the model
-    let mism_vl = vl_run.as_ref().map(|r| mism(&r.image) + mism(&r.single)).unwrap_or(0);
+    let mism_vl = vl.as_ref().map(|r| mism(&r.image) + mism(&r.single)).unwrap_or(0);
     let mism_hdl = mism(&hdl);
-    Ok(Paths { model, hdl, vl, vl_run, mism_hdl, mism_vl })
+    Ok(Paths { model, hdl, vl, mism_hdl, mism_vl })
 }
 
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
@@ -153,7 +150,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     png("model.png", &|k| cart.model.rgb[k].map(|c| c as u8))?;
     png("rust_hdl.png", &|k| cart.hdl.rgb[k].map(|c| c as u8))?;
     if let Some(vl) = &cart.vl {
-        png("verilator.png", &|k| vl.rgb[k].map(|c| c as u8))?;
+        png("verilator.png", &|k| vl.image.rgb[k].map(|c| c as u8))?;
     }
     png("shade_model.png", &|k| [(cart.model.p[k] >> 2) as u8; 3])?;
     let hmax = c_colour.max.max(1.0);
@@ -162,7 +159,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     png("polar_model.png", &|k| polar.model.rgb[k].map(|c| c as u8))?;
     png("polar_rust_hdl.png", &|k| polar.hdl.rgb[k].map(|c| c as u8))?;
     if let Some(vl) = &polar.vl {
-        png("polar_verilator.png", &|k| vl.rgb[k].map(|c| c as u8))?;
+        png("polar_verilator.png", &|k| vl.image.rgb[k].map(|c| c as u8))?;
     }
     let pmax = p_shade.max.max(1.0);
     png("polar_error_heat.png", &|k| render::heat((polar.model.p[k] as f64 - pol.ideal_alpha[k]).abs(), pmax))?;
@@ -191,7 +188,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
 
     // hardware cost, cached beside the output: each pipeline on the UP5K and the ECP5-45F, on two threads
     let hw = if synth {
-        let hdir = crate::hardware::dir(out);
+        let hdir = out.join("synth");
         let parts: Vec<synth::fpga::Part> = crate::hardware::DEMO_PARTS.iter().copied().filter(|p| p.family == synth::fpga::Family::Ice40 || no_ecp5.is_none()).collect();
         let (hd, ps) = (&hdir, &parts);
         let jobs: Vec<crate::hardware::Job> = vec![
@@ -218,7 +215,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     println!("{:<34} {:>14.0} {:>14.0}", "f64 ideal (scene set-up included)", n as f64 / cart_ideal_s, n as f64 / polar_ideal_s);
     println!("{:<34} {:>14} {:>14}", "bit-exact model", pps(&cart.model, 0), pps(&polar.model, 0));
     println!("{:<34} {:>14} {:>14}", "rust-hdl (loop-driven)", pps(&cart.hdl, cart.mism_hdl), pps(&polar.hdl, polar.mism_hdl));
-    match (&cart.vl_run, &polar.vl_run) {
+    match (&cart.vl, &polar.vl) {
         (Some(c), Some(p)) => {
             println!("{:<34} {:>14} {:>14}", "Verilator, whole frame, 1 process", pps(&c.single, cart.mism_vl), pps(&p.single, polar.mism_vl));
             let label = format!("Verilator, whole frame, {} processes", c.procs);

@@ -3,7 +3,7 @@
 
 use indicatif::{MultiProgress, ProgressBar};
 use rtl::StreamUnit;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use synth::fpga::{synth_and_place_cached, synth_unit, Part, SynthReport, ECP5_45F, UP5K};
 
 /// A pipeline on one part: placed, or the resource that keeps it off the part.
@@ -69,9 +69,4 @@ pub fn run_jobs(jobs: Vec<Job<'_>>) -> Result<Vec<Vec<(Part, Fit)>>, String> {
         }
     });
     results.into_iter().map(|r| r.expect("every job ran")).collect()
-}
-
-/// Where the demo keeps its synthesis runs.
-pub fn dir(out: &Path) -> PathBuf {
-    out.join("synth")
 }

@@ -88,10 +88,7 @@ fn lut_row(r: &vectors::sincos::SizeRow, c: Option<&synth::fpga::Cells>) {
 /// One unit's figures on its part, each resource as a share of the part.
 pub fn synth_row(r: &synth::fpga::SynthReport) {
     let p = r.part();
-    let [lut, ff, dsp, bram, carry] = match p.family {
-        synth::fpga::Family::Ice40 => ["SB_LUT4", "SB_DFF*", "SB_MAC16", "SB_RAM40_4K", "SB_CARRY"],
-        synth::fpga::Family::Ecp5 => ["LUT4", "TRELLIS_FF", "MULT18X18D", "DP16KD", "CCU2C"],
-    };
+    let [lut, ff, dsp, bram, carry] = p.family.cells();
     println!("{} on the {}", r.unit, p.title);
     if !r.choice.is_empty() {
         println!("  chosen because {}", r.choice);
@@ -105,9 +102,8 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
     match (&r.place_error, r.lc, r.fmax_mhz) {
         (Some(e), _, _) => println!("  does not place: {e}"),
         (None, lc, f) => {
-            let lc_name = if p.family == synth::fpga::Family::Ice40 { "ICESTORM_LC" } else { "TRELLIS_COMB" };
             if let Some(lc) = lc {
-                println!("  {lc_name:<12} {}  (placed, with the serial I/O wrapper)", share(lc, p.lut4));
+                println!("  {:<12} {}  (placed, with the serial I/O wrapper)", p.logic_cell_name(), share(lc, p.lut4));
             }
             println!("  fmax         {:>6} MHz  latency {} clocks, one pixel per clock", f.map(|x| format!("{x:.1}")).unwrap_or("-".into()), r.latency);
         }

@@ -79,13 +79,9 @@ fn cart_pipeline_places_on_the_ecp5_45f_and_a_part_too_small_is_named_with_its_r
     let (code, out, err) = bumprtl(&["synth", "cart_pipeline", "--target", "ecp5-45f", "--dir", dir]);
     assert_eq!(code, 0, "{err}");
     assert!(!out.contains("does not place"), "{out}");
-    let fmax: f64 = out
-        .lines()
-        .find_map(|l| l.trim().strip_prefix("fmax"))
-        .and_then(|r| r.split_whitespace().next())
-        .and_then(|x| x.parse().ok())
-        .unwrap_or_else(|| panic!("no fmax in\n{out}"));
-    assert!(fmax > 0.0, "{out}");
+    // a placed design reports an fmax figure (its value goes in the report, never in a test)
+    let fmax = out.lines().find_map(|l| l.trim().strip_prefix("fmax")).and_then(|r| r.split_whitespace().next());
+    assert!(fmax.is_some_and(|x| x.parse::<f64>().is_ok()), "no fmax figure in\n{out}");
     let (code, _, err) = bumprtl(&["synth", "cart_pipeline", "--target", "ecp5-12f", "--dir", dir]);
     assert_eq!(code, 1);
     assert!(err.contains("unknown target `ecp5-12f`") && err.contains("ecp5-45f"), "{err}");
@@ -98,3 +94,4 @@ fn the_default_target_is_the_up5k_for_a_unit_that_fits_and_says_why() {
     assert_eq!(code, 0, "{err}");
     assert!(out.starts_with("gloss on the iCE40 UP5K") && out.contains("it fits the iCE40 UP5K"), "{out}");
 }
+

@@ -6,13 +6,12 @@ use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use rtl::cart_pipeline::CartPipeline;
 use rtl::StreamUnit;
 use synth::cosim::{self, Simulator};
-use vectors::fixed::to_pattern;
 
 fn bench(c: &mut Criterion) {
     let m = &vectors::cart_pipeline::MODEL;
     let prep = vectors::scene::Scene { size: 128, ..Default::default() }.prepare();
     let slots: Vec<Option<Vec<u64>>> =
-        prep.inputs.iter().map(|v| Some(v.iter().zip(m.inputs).map(|(&x, p)| to_pattern(x, p.bits)).collect())).collect();
+        prep.inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).collect();
     let dir = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/cosim/bench/cart_pipeline");
     let built = cosim::build::<CartPipeline>(Simulator::Verilator, &dir).expect("a Verilator build");
     let cycles = (slots.len() + CartPipeline::LATENCY + 1) as u64;

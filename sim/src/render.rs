@@ -7,7 +7,6 @@ use rtl::StreamUnit;
 use std::path::Path;
 use std::time::Instant;
 use synth::cosim::{self, Simulator};
-use vectors::fixed::to_pattern;
 use vectors::UnitModel;
 
 /// One path's image: per pixel the shade output (P, U10, for the Cartesian pipeline; α, U8, for the polar one)
@@ -27,7 +26,7 @@ impl Image {
 }
 
 fn patterns(m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Option<Vec<u64>>> {
-    inputs.iter().map(|v| Some(v.iter().zip(m.inputs).map(|(&x, port)| to_pattern(x, port.bits)).collect())).collect()
+    inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).collect()
 }
 
 fn from_outputs(size: usize, outs: &[Vec<u64>], seconds: f64) -> Image {
@@ -59,30 +58,28 @@ pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], 
     from_outputs(size, &got.outputs, t.elapsed().as_secs_f64())
 }
 
-/// The exported Verilog under Verilator (built in `dir`), whole frame, on one process and then split across
-/// `procs` processes at once; the image is the split run's (the demo checks both against the model), and the
-/// bare loop's speed on the same build is measured in the same call, for comparison.
+/// A frame through the exported Verilog under Verilator, twice, beside the simulator's own speed.
 pub struct VerilatorRun {
     pub image: Image,
-    /// the frame on one process (the image's pixels must equal `image`'s)
+    /// the frame on one process (its pixels must equal `image`'s)
     pub single: Image,
     pub procs: usize,
     /// cycles/s of the harness's bare loop (inputs generated in C++, no I/O), as many cycles as the frame's slots
     pub bare_cycles_per_second: f64,
-    /// the frame's slots, flush included, over the one-process run's simulation loop alone
-    pub single_loop_seconds: f64,
 }
 
+/// The exported Verilog under Verilator (built in `dir`), whole frame, on one process and then split across
+/// `procs` processes at once; `image` is the split run's (the demo checks both against the model). The bare
+/// loop's speed on the same build is measured in the same call; the times count the runs, not the build.
 pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path, procs: usize) -> Result<VerilatorRun, String> {
     let built = cosim::build::<U>(Simulator::Verilator, dir)?;
     let slots = patterns(m, inputs);
-    let t = Instant::now();
-    let (one, tm) = built.run_records(&slots)?;
-    let single = from_outputs(size, &one.outputs, t.elapsed().as_secs_f64());
-    let (split, tm2) = built.run_split(&slots, procs)?;
-    let image = from_outputs(size, &split.outputs, tm2.wall_seconds);
+    let (one, secs) = built.run_records(&slots)?;
+    let single = from_outputs(size, &one.outputs, secs);
+    let (split, secs) = built.run_split(&slots, procs)?;
+    let image = from_outputs(size, &split.outputs, secs);
     let bare_cycles_per_second = built.bare((slots.len() + U::LATENCY + 1) as u64)?;
-    Ok(VerilatorRun { image, single, procs, bare_cycles_per_second, single_loop_seconds: tm.loop_seconds })
+    Ok(VerilatorRun { image, single, procs, bare_cycles_per_second })
 }
 
 /// Write an RGB image as PNG, whole or not at all.

@@ -3,7 +3,6 @@
 use rtl::stream::Runner;
 use rtl::StreamUnit;
 use std::path::Path;
-use vectors::fixed::to_pattern;
 use vectors::UnitModel;
 
 /// Trace `inputs` through the unit into `path` (written whole, or not at all). Returns the outputs seen.
@@ -24,7 +23,7 @@ pub fn write_vcd<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], path: &P
 /// Trace `inputs` through the unit into any writer (standard output, say); Err when a write failed.
 pub fn trace<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], w: Box<dyn std::io::Write>) -> std::io::Result<Vec<Vec<u64>>> {
     let mut r = Runner::<U>::with_vcd(Some(w));
-    let slots = inputs.iter().map(|v| Some(v.iter().zip(model.inputs).map(|(&x, p)| to_pattern(x, p.bits)).collect()));
+    let slots = inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, model.inputs)));
     let got = r.run(slots);
     r.finish()?;
     Ok(got.outputs)

@@ -22,7 +22,6 @@ fn agree<U: rtl::StreamUnit>(m: &vectors::UnitModel, inputs: &[Vec<i64>]) {
         assert_eq!(model.p, img.p, "{}: Verilator, {how}", m.name);
         assert_eq!(model.rgb, img.rgb, "{}: Verilator, {how}", m.name);
     }
-    assert!(vl.bare_cycles_per_second > 0.0);
 }
 
 #[test]

@@ -1,9 +1,9 @@
 //! Co-simulation of an exported unit under Verilator (compiled C++, the fast path for whole scenes) and Icarus,
 //! driven by the same slots as rust-hdl's simulation. Harnesses are generated from the unit's port list: each
 //! applies a slot's inputs with the clock low, raises the clock, and reports the outputs of every cycle whose
-//! `valid_out` is high, with the cycle. Verilator's harness takes and gives fixed-size binary records in one read
-//! and one write, so that a frame runs at the simulator's own speed; Icarus's bench reads `valid v0 v1 ...` per
-//! line (hex) and writes `cycle o0 o1 ...`.
+//! `valid_out` is high, with the cycle. Verilator's harness streams fixed-size binary records through pipes, read
+//! and written in blocks, so that a frame runs near the simulator's own speed; Icarus's bench reads
+//! `valid v0 v1 ...` per line (hex) and writes `cycle o0 o1 ...`.
 
 use crate::export::{export, write_atomic};
 use crate::tools;
@@ -45,10 +45,20 @@ fn word_bits<U: StreamUnit>() -> usize {
     [8, 16, 32, 64].into_iter().find(|&w| widest <= w).unwrap_or(64)
 }
 
+/// One clock of the harness: each input port `k` of `bits` bits set from the C++ expression `value(k, bits)`
+/// with the clock low, then the rising edge.
+fn clocked_step<U: StreamUnit>(value: impl Fn(usize, usize) -> String) -> String {
+    let mut s = String::new();
+    for (k, (name, bits)) in U::INPUTS.iter().enumerate() {
+        let _ = writeln!(s, "      top->{name} = ({}) ({});", c_type(*bits), value(k, *bits));
+    }
+    s + "      top->clock = 0; top->eval();\n      top->clock = 1; top->eval();\n"
+}
+
 /// The Verilator harness streams fixed-size binary records: from standard input, a valid word and one word per
 /// input (little-endian), read in blocks and run with no I/O inside a block; to standard output, for every valid
-/// output, the cycle as a 64-bit word and one word per output. The simulation loop's own time goes to standard
-/// error. Piped, the records are encoded, simulated and decoded at once. `--bare N` instead runs N clocks on
+/// output, the cycle as a 64-bit word and one word per output. Piped, the records are encoded, simulated and
+/// decoded at once. `--bare N` instead runs N clocks on
 /// inputs from a generator in C++ (no I/O, no output but a checksum): the simulator's own speed, to compare with.
 fn verilator_harness<U: StreamUnit>() -> String {
     let w = word_bits::<U>();
@@ -69,11 +79,10 @@ fn verilator_harness<U: StreamUnit>() -> String {
     let _ = writeln!(s, "    for (long c = 0; c < n; c++) {{");
     let _ = writeln!(s, "      x = x * 6364136223846793005ULL + 1442695040888963407ULL;");
     let _ = writeln!(s, "      top->valid_in = 1;");
-    for (k, (name, bits)) in U::INPUTS.iter().enumerate() {
-        let mask = if *bits >= 64 { u64::MAX } else { (1u64 << bits) - 1 };
-        let _ = writeln!(s, "      top->{name} = ({}) ((x >> {}) & 0x{mask:x}ULL);", c_type(*bits), (k * 7) % 33);
-    }
-    let _ = writeln!(s, "      top->clock = 0; top->eval();\n      top->clock = 1; top->eval();");
+    s.push_str(&clocked_step::<U>(|k, bits| {
+        let mask = if bits >= 64 { u64::MAX } else { (1u64 << bits) - 1 };
+        format!("(x >> {}) & 0x{mask:x}ULL", (k * 7) % 33)
+    }));
     let sum: String = U::OUTPUTS.iter().map(|(n, _)| format!(" + (uint64_t) top->{n}")).collect();
     let _ = writeln!(s, "      sum += top->valid_out{sum};\n    }}");
     let _ = writeln!(s, "    printf(\"%ld %.9f %llu\\n\", n, now() - t0, (unsigned long long) sum);");
@@ -82,29 +91,24 @@ fn verilator_harness<U: StreamUnit>() -> String {
     let _ = writeln!(s, "  const size_t rec = {}, block = 8192;", 1 + ni);
     let _ = writeln!(s, "  std::vector<word> in(rec * block); std::vector<unsigned char> out;");
     let _ = writeln!(s, "  out.reserve(block * (8 + {} * sizeof(word)));", no);
-    let _ = writeln!(s, "  uint64_t c = 0; double spent = 0; size_t got; size_t left = 0;");
+    let _ = writeln!(s, "  uint64_t c = 0; size_t got; size_t left = 0;");
     let _ = writeln!(s, "  while ((got = fread(in.data() + left, sizeof(word), in.size() - left, stdin)) > 0 || left) {{");
     let _ = writeln!(s, "    size_t have = left + got, n = have / rec;");
     let _ = writeln!(s, "    if (got == 0 && n == 0) {{ fprintf(stderr, \"a partial record at the end\\n\"); return 3; }}");
-    let _ = writeln!(s, "    out.clear(); double t0 = now();");
+    let _ = writeln!(s, "    out.clear();");
     let _ = writeln!(s, "    for (size_t k = 0; k < n; k++, c++) {{");
     let _ = writeln!(s, "      const word* r = &in[k * rec];\n      top->valid_in = r[0] & 1;");
-    for (k, (name, bits)) in U::INPUTS.iter().enumerate() {
-        let _ = writeln!(s, "      top->{name} = ({}) r[{}];", c_type(*bits), k + 1);
-    }
-    let _ = writeln!(s, "      top->clock = 0; top->eval();\n      top->clock = 1; top->eval();");
+    s.push_str(&clocked_step::<U>(|k, _| format!("r[{}]", k + 1)));
     let _ = writeln!(s, "      if (top->valid_out) {{");
     let _ = writeln!(s, "        const unsigned char* cp = (const unsigned char*) &c; out.insert(out.end(), cp, cp + 8);");
     for (name, _) in U::OUTPUTS {
         let _ = writeln!(s, "        {{ word v = (word) top->{name}; const unsigned char* p = (const unsigned char*) &v; out.insert(out.end(), p, p + sizeof(word)); }}");
     }
     let _ = writeln!(s, "      }}\n    }}");
-    let _ = writeln!(s, "    spent += now() - t0;");
     let _ = writeln!(s, "    if (!out.empty() && fwrite(out.data(), 1, out.size(), stdout) != out.size()) {{ perror(\"stdout\"); return 2; }}");
     let _ = writeln!(s, "    left = have - n * rec;\n    memmove(in.data(), in.data() + n * rec, left * sizeof(word));");
     let _ = writeln!(s, "    if (got == 0) break;\n  }}");
     let _ = writeln!(s, "  if (fflush(stdout) != 0) {{ perror(\"stdout\"); return 2; }}");
-    let _ = writeln!(s, "  fprintf(stderr, \"%llu %.9f\\n\", (unsigned long long) c, spent);");
     let _ = writeln!(s, "  top->final(); delete top; delete ctx; return 0;\n}}");
     s
 }
@@ -190,14 +194,6 @@ pub fn build<U: StreamUnit>(sim: Simulator, dir: &Path) -> Result<Built, String>
     Ok(Built { sim, dir: dir.to_path_buf(), exe, latency: U::LATENCY, n_in: U::INPUTS.len(), n_out: U::OUTPUTS.len(), word_bits: word_bits::<U>() })
 }
 
-/// How long a Verilator run took: the whole process (spawn to exit, the records read and written included) and
-/// its simulation loop alone.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Timing {
-    pub wall_seconds: f64,
-    pub loop_seconds: f64,
-}
-
 impl Built {
     /// Run the slots (None = a bubble), flushing the pipeline afterwards; collect (cycle, outputs) of valid cycles.
     pub fn run(&self, slots: &[Option<Vec<u64>>]) -> Result<rtl::stream::Collected, String> {
@@ -216,9 +212,10 @@ impl Built {
         slots.iter().map(Option::as_ref).chain(std::iter::repeat(None).take(self.latency + 1))
     }
 
-    /// Verilator on binary records piped through the harness (see `verilator_harness`), timed: the records are
-    /// encoded on one thread while the simulator runs and its output is read on this one.
-    pub fn run_records(&self, slots: &[Option<Vec<u64>>]) -> Result<(rtl::stream::Collected, Timing), String> {
+    /// Verilator on binary records piped through the harness (see `verilator_harness`), with its wall time in
+    /// seconds (encoding, the process and decoding): the records are encoded on one thread while the simulator
+    /// runs and its output is read on this one.
+    pub fn run_records(&self, slots: &[Option<Vec<u64>>]) -> Result<(rtl::stream::Collected, f64), String> {
         use std::io::{Read, Write};
         use std::process::{Command, Stdio};
         if self.sim != Simulator::Verilator {
@@ -269,7 +266,6 @@ impl Built {
         }
         let out = out.map_err(|e| format!("reading {}: {e}", self.exe.display()))?;
         fed.map_err(|e| format!("feeding {}: {e}", self.exe.display()))?;
-        let loop_seconds = err.split_whitespace().nth(1).and_then(|x| x.parse().ok()).unwrap_or(0.0);
         let recb = 8 + self.n_out * wb;
         if out.len() % recb != 0 {
             return Err(format!("{}: a partial output record", self.exe.display()));
@@ -288,31 +284,30 @@ impl Built {
                     .collect(),
             );
         }
-        Ok((c, Timing { wall_seconds: t.elapsed().as_secs_f64(), loop_seconds }))
+        Ok((c, t.elapsed().as_secs_f64()))
     }
 
     /// The slots cut into `parts` runs of the simulator at once, one process each (the machine's cores), joined in
-    /// order; the wall time is that of the slowest. Only for units whose outputs depend on their inputs alone (every
+    /// order, with the wall time of the whole. Only for units whose outputs depend on their inputs alone (every
     /// unit so far: no state carries from one slot to the next), since each part starts from a fresh simulation.
-    pub fn run_split(&self, slots: &[Option<Vec<u64>>], parts: usize) -> Result<(rtl::stream::Collected, Timing), String> {
+    pub fn run_split(&self, slots: &[Option<Vec<u64>>], parts: usize) -> Result<(rtl::stream::Collected, f64), String> {
         let per = slots.len().div_ceil(parts.max(1)).max(1);
         let chunks: Vec<&[Option<Vec<u64>>]> = slots.chunks(per).collect();
         let t = std::time::Instant::now();
-        let results: Vec<Result<(rtl::stream::Collected, Timing), String>> = std::thread::scope(|s| {
+        let results: Vec<Result<(rtl::stream::Collected, f64), String>> = std::thread::scope(|s| {
             let hs: Vec<_> = chunks.iter().map(|ch| s.spawn(move || self.run_records(ch))).collect();
             hs.into_iter().map(|h| h.join().unwrap_or_else(|_| Err("a simulator thread panicked".into()))).collect()
         });
         let wall = t.elapsed().as_secs_f64();
         let mut all = rtl::stream::Collected::default();
-        let (mut offset, mut loop_seconds) = (0u64, 0.0f64);
+        let mut offset = 0u64;
         for (ch, r) in chunks.iter().zip(results) {
-            let (c, tm) = r?;
+            let (c, _) = r?;
             all.cycles.extend(c.cycles.iter().map(|x| x + offset));
             all.outputs.extend(c.outputs);
             offset += ch.len() as u64;
-            loop_seconds = loop_seconds.max(tm.loop_seconds);
         }
-        Ok((all, Timing { wall_seconds: wall, loop_seconds }))
+        Ok((all, wall))
     }
 
     /// The bare loop: `cycles` clocks on inputs generated inside the harness, no file and no output. Cycles/s.

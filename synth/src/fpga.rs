@@ -21,7 +21,7 @@ pub enum Family {
 
 impl Family {
     /// yosys cell names: LUT, flip-flop (a prefix), multiplier, block RAM, carry.
-    fn cells(self) -> [&'static str; 5] {
+    pub fn cells(self) -> [&'static str; 5] {
         match self {
             Family::Ice40 => ["SB_LUT4", "SB_DFF", "SB_MAC16", "SB_RAM40_4K", "SB_CARRY"],
             Family::Ecp5 => ["LUT4", "TRELLIS_FF", "MULT18X18D", "DP16KD", "CCU2C"],
@@ -78,6 +78,14 @@ pub fn part(name: &str) -> Result<Part, String> {
 }
 
 impl Part {
+    /// What nextpnr calls the logic cells it reports as used.
+    pub fn logic_cell_name(&self) -> &'static str {
+        match self.family {
+            Family::Ice40 => "ICESTORM_LC",
+            Family::Ecp5 => "TRELLIS_COMB",
+        }
+    }
+
     /// The clock target asked of nextpnr when the user names none, MHz.
     pub fn default_freq(&self) -> f64 {
         match self.family {
@@ -98,10 +106,10 @@ impl Part {
             Family::Ice40 => lut.to_string(),
             Family::Ecp5 => "LUT4 (CCU2C counted as two)".to_string(),
         };
-        [(dsp.to_string(), r.dsp, self.dsp), (bram.to_string(), r.bram, self.bram), (lut_name, luts, self.lut4), (format!("{ff}*"), r.ff, self.ff)]
+        [(dsp.to_string(), r.dsp, self.dsp), (bram.to_string(), r.bram, self.bram), (lut_name, luts, self.lut4), (ff.to_string(), r.ff, self.ff)]
             .into_iter()
             .find(|(_, need, have)| need > have)
-            .map(|(name, need, have)| format!("it needs {need} {}, the {} has {have}", name.trim_end_matches('*'), self.title))
+            .map(|(name, need, have)| format!("it needs {need} {name}, the {} has {have}", self.title))
     }
 }
 
@@ -275,13 +283,14 @@ pub fn synth_and_place<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64, cho
     let freq = format!("{freq_mhz}");
     let mut args: Vec<&str> = part.pnr.to_vec();
     args.extend(["--json", "wrapped.json", "--freq", &freq, "--timing-allow-fail", "--seed", "1"]);
-    let (prog, lc_name) = match part.family {
+    let prog = match part.family {
         Family::Ice40 => {
             args.extend(["--asc", "wrapped.asc"]);
-            ("nextpnr-ice40".to_string(), "ICESTORM_LC:")
+            "nextpnr-ice40".to_string()
         }
-        Family::Ecp5 => (tools::nextpnr_ecp5().ok_or_else(tools::nextpnr_ecp5_missing)?, "TRELLIS_COMB:"),
+        Family::Ecp5 => tools::nextpnr_ecp5().ok_or_else(tools::nextpnr_ecp5_missing)?,
     };
+    let lc_name = format!("{}:", part.logic_cell_name());
     let out = match tools::run(dir, &prog, &args) {
         Ok(o) => o,
         Err(e) => {
@@ -293,7 +302,7 @@ pub fn synth_and_place<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64, cho
     let text = String::from_utf8_lossy(&out.stderr).to_string();
     write_atomic(&dir.join("nextpnr.log"), text.as_bytes())?;
     for l in text.lines() {
-        if let Some(rest) = l.split(lc_name).nth(1) {
+        if let Some(rest) = l.split(lc_name.as_str()).nth(1) {
             // the utilisation table ("  224/ 5280  4%"), not the placer's progress lines
             if let Some(n) = rest.trim().split('/').next().and_then(|x| x.trim().parse().ok()) {
                 r.lc = Some(n);

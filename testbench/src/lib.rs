@@ -10,7 +10,7 @@ use rtl::stream::{Collected, Runner};
 use rtl::StreamUnit;
 use std::path::PathBuf;
 use synth::cosim::{self, Simulator};
-use vectors::fixed::{from_pattern, to_pattern};
+use vectors::fixed::from_pattern;
 use vectors::UnitModel;
 
 /// How the driver spaces the vectors.
@@ -37,7 +37,7 @@ pub fn slots(model: &UnitModel, inputs: &[Vec<i64>], bubbles: Bubbles) -> Vec<Op
                 }
             }
         }
-        s.push(Some(v.iter().zip(model.inputs).map(|(&x, p)| to_pattern(x, p.bits)).collect()));
+        s.push(Some(vectors::unit::to_patterns(v, model.inputs)));
     }
     s
 }

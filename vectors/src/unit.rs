@@ -66,6 +66,11 @@ pub const UNITS: &[&UnitModel] = &[
     &crate::polar_pipeline::MODEL_DC,
 ];
 
+/// A vector's values as the bit patterns its ports carry (two's complement for signed ports), in port order.
+pub fn to_patterns(values: &[i64], ports: &[Port]) -> Vec<u64> {
+    values.iter().zip(ports).map(|(&v, p)| crate::fixed::to_pattern(v, p.bits)).collect()
+}
+
 pub fn find(name: &str) -> Option<&'static UnitModel> {
     UNITS.iter().copied().find(|u| u.name == name)
 }
