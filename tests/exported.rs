@@ -95,3 +95,17 @@ fn the_default_target_is_the_up5k_for_a_unit_that_fits_and_says_why() {
     assert!(out.starts_with("gloss on the iCE40 UP5K") && out.contains("it fits the iCE40 UP5K"), "{out}");
 }
 
+#[test]
+fn a_missing_place_and_route_tool_is_an_error_not_a_design_that_does_not_place() {
+    let d = scratch("missing");
+    let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+        .args(["synth", "gloss", "--target", "ecp5-25f", "--dir", d.to_str().unwrap()])
+        .env("BUMPRTL_NEXTPNR_ECP5", d.join("no-such-nextpnr"))
+        .output()
+        .unwrap();
+    let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert_eq!(o.status.code(), Some(1), "{out}\n{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("cannot run") && err.contains("no-such-nextpnr"), "{err}");
+    assert!(!out.contains("does not place"), "{out}");
+}

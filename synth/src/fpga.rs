@@ -293,11 +293,23 @@ pub fn synth_and_place<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64, cho
     let lc_name = format!("{}:", part.logic_cell_name());
     let out = match tools::run(dir, &prog, &args) {
         Ok(o) => o,
-        Err(e) => {
-            let why = e.lines().find(|l| l.contains("ERROR")).unwrap_or("place-and-route failed").trim().to_string();
-            r.place_error = Some(why);
-            return Ok(r);
-        }
+        // nextpnr said why the design does not place: a figure of the report; anything else (the tool missing or
+        // crashing) is an error
+        Err(e) => match e.lines().find(|l| l.contains("ERROR")) {
+            Some(why) => {
+                r.place_error = Some(why.trim().to_string());
+                return Ok(r);
+            }
+            None => {
+                // one line: which tool failed where, and its last word
+                let mut lines = e.lines().map(str::trim).filter(|l| !l.is_empty());
+                let first = lines.next().unwrap_or("place-and-route failed").to_string();
+                return Err(match lines.last() {
+                    Some(last) => format!("{first} {last}"),
+                    None => first,
+                });
+            }
+        },
     };
     let text = String::from_utf8_lossy(&out.stderr).to_string();
     write_atomic(&dir.join("nextpnr.log"), text.as_bytes())?;
