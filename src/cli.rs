@@ -103,6 +103,7 @@ macro_rules! with_unit {
     ($name:expr, $u:ident => $body:expr) => {
         match $name {
             "cart_decode" => { type $u = rtl::cart_decode::CartDecode; $body }
+            "cart_decode_hemi_oct" => { type $u = rtl::cart_decode_hemi_oct::CartDecodeHemiOct; $body }
             "bilinear" => { type $u = rtl::bilinear::Bilinear; $body }
             "light_iter" => { type $u = rtl::light_iter::LightIter; $body }
             "normalise" => { type $u = rtl::normalise::Normalise; $body }
@@ -110,6 +111,7 @@ macro_rules! with_unit {
             "gloss" => { type $u = rtl::gloss::Gloss; $body }
             "blend" => { type $u = rtl::blend::Blend; $body }
             "cart_pipeline" => { type $u = rtl::cart_pipeline::CartPipeline; $body }
+            "cart_pipeline_hemi_oct" => { type $u = rtl::cart_pipeline::CartPipelineHemiOct; $body }
             "sincos" => { type $u = rtl::sincos::SinCosUnit; $body }
             "cos_sign" => { type $u = rtl::cos_sign::CosSignUnit; $body }
             "polar_shade" => { type $u = rtl::polar_shade::PolarShade<false>; $body }

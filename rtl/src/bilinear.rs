@@ -1,7 +1,9 @@
 //! `bilinear`: the colour filter's bilinear unit, four 8-bit channels, 8 blend-factor bits. Per channel:
 //! `a = t00·256 + (t10 − t00)·u`, `b = t01·256 + (t11 − t01)·u` (exact, U16), then
 //! `out = (a·256 + (b − a)·v + 2^15) >> 16` — the model's `a·(256 − v) + b·v` rounded half up, same value.
-//! Latency 9: widen; differences; magnitudes; ·u; a and b; b − a; its magnitude; ·v; the rounded sum.
+//! Latency 11: widen; differences; magnitudes; the operand register; ·u; a and b; b − a; its magnitude; the operand
+//! register; ·v; the rounded sum. An operand register feeds nothing but its multiplier, so the placer can put it
+//! beside the DSP and the long route lands on a register-to-register path.
 //! Intermediates are carried in 16/32-bit registers (hdl_gen cannot bit_cast inside a loop); their real widths
 //! are in the comments, and yosys removes the constant upper bits.
 
@@ -10,7 +12,7 @@ use crate::stream_unit;
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 9;
+pub const LATENCY: usize = 11;
 
 type U8 = Bits<8>;
 
@@ -48,8 +50,11 @@ pub struct Bilinear {
     s1_t11: [DFF<Bits<16>>; 4],
     s1_b0: [DFF<Bits<32>>; 4],
     s1_b1: [DFF<Bits<32>>; 4],
-    u: [DFF<Bits<16>>; 3], // u carried to stage 4
-    v: [DFF<Bits<16>>; 7], // v carried to stage 8
+    u: [DFF<Bits<16>>; 3], // u carried to stage 3
+    v: [DFF<Bits<16>>; 8], // v carried to stage 7
+    mop_u0: [DFF<Bits<16>>; 4], // stage 3b: u once per multiplier (`mop_`: see `rtl/README.md`)
+    mop_u1: [DFF<Bits<16>>; 4],
+    mop_v: [DFF<Bits<16>>; 4], // stage 7b: v once per multiplier
     // stage 2: t10 − t00, t11 − t01 (S9 in 16 bits)
     s2_d0: [DFF<Bits<16>>; 4],
     s2_d1: [DFF<Bits<16>>; 4],
@@ -62,6 +67,13 @@ pub struct Bilinear {
     s3_n1: [DFF<Bit>; 4],
     s3_b0: [DFF<Bits<32>>; 4],
     s3_b1: [DFF<Bits<32>>; 4],
+    // stage 3b: the multipliers' operands again, and what travels beside them
+    s3b_m0: [DFF<Bits<16>>; 4],
+    s3b_m1: [DFF<Bits<16>>; 4],
+    s3b_n0: [DFF<Bit>; 4],
+    s3b_n1: [DFF<Bit>; 4],
+    s3b_b0: [DFF<Bits<32>>; 4],
+    s3b_b1: [DFF<Bits<32>>; 4],
     // stage 4: |d|·u ≤ 255·255 (U16)
     s4_p0: [DFF<Bits<32>>; 4],
     s4_p1: [DFF<Bits<32>>; 4],
@@ -79,6 +91,10 @@ pub struct Bilinear {
     s7_m: [DFF<Bits<16>>; 4],
     s7_n: [DFF<Bit>; 4],
     s7_a: [DFF<Bits<32>>; 4],
+    // stage 7b: the multiplier's operand again, and what travels beside it
+    s7b_m: [DFF<Bits<16>>; 4],
+    s7b_n: [DFF<Bit>; 4],
+    s7b_a: [DFF<Bits<32>>; 4],
     // stage 8: |b − a|·v < 2^24
     s8_q: [DFF<Bits<32>>; 4],
     s8_n: [DFF<Bit>; 4],
@@ -101,7 +117,7 @@ impl Logic for Bilinear {
         for i in 0..3 {
             self.u[i].clock.next = self.clock.val();
         }
-        for i in 0..7 {
+        for i in 0..8 {
             self.v[i].clock.next = self.clock.val();
         }
         self.u[0].d.next = bit_cast::<16, 8>(self.ublend.val());
@@ -109,7 +125,7 @@ impl Logic for Bilinear {
         for i in 1..3 {
             self.u[i].d.next = self.u[i - 1].q.val();
         }
-        for i in 1..7 {
+        for i in 1..8 {
             self.v[i].d.next = self.v[i - 1].q.val();
         }
         self.s1_t00[0].d.next = bit_cast::<16, 8>(self.t00_r.val());
@@ -153,6 +169,15 @@ impl Logic for Bilinear {
             self.s3_n1[i].clock.next = self.clock.val();
             self.s3_b0[i].clock.next = self.clock.val();
             self.s3_b1[i].clock.next = self.clock.val();
+            self.mop_u0[i].clock.next = self.clock.val();
+            self.mop_u1[i].clock.next = self.clock.val();
+            self.mop_v[i].clock.next = self.clock.val();
+            self.s3b_m0[i].clock.next = self.clock.val();
+            self.s3b_m1[i].clock.next = self.clock.val();
+            self.s3b_n0[i].clock.next = self.clock.val();
+            self.s3b_n1[i].clock.next = self.clock.val();
+            self.s3b_b0[i].clock.next = self.clock.val();
+            self.s3b_b1[i].clock.next = self.clock.val();
             self.s4_p0[i].clock.next = self.clock.val();
             self.s4_p1[i].clock.next = self.clock.val();
             self.s4_n0[i].clock.next = self.clock.val();
@@ -166,6 +191,9 @@ impl Logic for Bilinear {
             self.s7_m[i].clock.next = self.clock.val();
             self.s7_n[i].clock.next = self.clock.val();
             self.s7_a[i].clock.next = self.clock.val();
+            self.s7b_m[i].clock.next = self.clock.val();
+            self.s7b_n[i].clock.next = self.clock.val();
+            self.s7b_a[i].clock.next = self.clock.val();
             self.s8_q[i].clock.next = self.clock.val();
             self.s8_n[i].clock.next = self.clock.val();
             self.s8_a[i].clock.next = self.clock.val();
@@ -190,13 +218,22 @@ impl Logic for Bilinear {
             self.s3_n1[i].d.next = self.s2_d1[i].q.val().get_bit(15);
             self.s3_b0[i].d.next = self.s2_b0[i].q.val();
             self.s3_b1[i].d.next = self.s2_b1[i].q.val();
+            // stage 3b: carried
+            self.s3b_m0[i].d.next = self.s3_m0[i].q.val();
+            self.s3b_m1[i].d.next = self.s3_m1[i].q.val();
+            self.s3b_n0[i].d.next = self.s3_n0[i].q.val();
+            self.s3b_n1[i].d.next = self.s3_n1[i].q.val();
+            self.s3b_b0[i].d.next = self.s3_b0[i].q.val();
+            self.s3b_b1[i].d.next = self.s3_b1[i].q.val();
+            self.mop_u0[i].d.next = self.u[2].q.val();
+            self.mop_u1[i].d.next = self.u[2].q.val();
             // stage 4: 16 × 16 → 32
-            self.s4_p0[i].d.next = self.s3_m0[i].q.val() * self.u[2].q.val();
-            self.s4_p1[i].d.next = self.s3_m1[i].q.val() * self.u[2].q.val();
-            self.s4_n0[i].d.next = self.s3_n0[i].q.val();
-            self.s4_n1[i].d.next = self.s3_n1[i].q.val();
-            self.s4_b0[i].d.next = self.s3_b0[i].q.val();
-            self.s4_b1[i].d.next = self.s3_b1[i].q.val();
+            self.s4_p0[i].d.next = self.s3b_m0[i].q.val() * self.mop_u0[i].q.val();
+            self.s4_p1[i].d.next = self.s3b_m1[i].q.val() * self.mop_u1[i].q.val();
+            self.s4_n0[i].d.next = self.s3b_n0[i].q.val();
+            self.s4_n1[i].d.next = self.s3b_n1[i].q.val();
+            self.s4_b0[i].d.next = self.s3b_b0[i].q.val();
+            self.s4_b1[i].d.next = self.s3b_b1[i].q.val();
             // stage 5: t·256 ± |d|·u
             self.w_base0[i].next = self.s4_b0[i].q.val() << 8;
             self.w_base1[i].next = self.s4_b1[i].q.val() << 8;
@@ -222,10 +259,15 @@ impl Logic for Bilinear {
             self.s7_m[i].d.next = self.w_em[i].val().get_bits::<16>(0);
             self.s7_n[i].d.next = self.s6_e[i].q.val().get_bit(31);
             self.s7_a[i].d.next = self.s6_a[i].q.val();
+            // stage 7b: carried
+            self.s7b_m[i].d.next = self.s7_m[i].q.val();
+            self.s7b_n[i].d.next = self.s7_n[i].q.val();
+            self.s7b_a[i].d.next = self.s7_a[i].q.val();
+            self.mop_v[i].d.next = self.v[7].q.val();
             // stage 8: 16 × 16 → 32
-            self.s8_q[i].d.next = self.s7_m[i].q.val() * self.v[6].q.val();
-            self.s8_n[i].d.next = self.s7_n[i].q.val();
-            self.s8_a[i].d.next = self.s7_a[i].q.val();
+            self.s8_q[i].d.next = self.s7b_m[i].q.val() * self.mop_v[i].q.val();
+            self.s8_n[i].d.next = self.s7b_n[i].q.val();
+            self.s8_a[i].d.next = self.s7b_a[i].q.val();
             // stage 9: a·256 + 2^15 ± q, then the top byte of 24
             self.w_a256[i].next = self.s8_a[i].q.val() << 8;
             if self.s8_n[i].q.val() {

@@ -1,13 +1,14 @@
 //! `blend`: the shade as alpha, combined with colours. `mode` 0 modulates, `out = round(src·α/255)`; mode 1
 //! alpha-lerps, `out = round((src·α + dst·(255 − α))/255)`. The /255 is `t = num + 128; (t + (t >> 8)) >> 8`.
-//! Latency 4: weights; products; the sum + 128; the /255.
+//! Latency 5: weights; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
+//! products; the sum + 128; the /255.
 
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 4;
+pub const LATENCY: usize = 5;
 
 type U8 = Bits<8>;
 type U16 = Bits<16>;
@@ -33,6 +34,11 @@ pub struct Blend {
     s1_wd: DFF<U16>,
     s1_src: [DFF<U16>; 3],
     s1_dst: [DFF<U16>; 3],
+    // stage 1b: the operands again, the weights once per multiplier (`mop_`: see `rtl/README.md`)
+    mop_wa: [DFF<U16>; 3],
+    mop_wd: [DFF<U16>; 3],
+    s1b_src: [DFF<U16>; 3],
+    s1b_dst: [DFF<U16>; 3],
     // stage 2: src·α, dst·(255 − α), each ≤ 255·255 (U16)
     s2_ps: [DFF<U16>; 3],
     s2_pd: [DFF<U16>; 3],
@@ -72,13 +78,22 @@ impl Logic for Blend {
         for i in 0..3 {
             self.s1_src[i].clock.next = self.clock.val();
             self.s1_dst[i].clock.next = self.clock.val();
+            self.s1b_src[i].clock.next = self.clock.val();
+            self.mop_wa[i].clock.next = self.clock.val();
+            self.mop_wd[i].clock.next = self.clock.val();
+            self.s1b_dst[i].clock.next = self.clock.val();
             self.s2_ps[i].clock.next = self.clock.val();
             self.s2_pd[i].clock.next = self.clock.val();
             self.s3_t[i].clock.next = self.clock.val();
             self.s4_out[i].clock.next = self.clock.val();
+            // stage 1b: carried
+            self.s1b_src[i].d.next = self.s1_src[i].q.val();
+            self.s1b_dst[i].d.next = self.s1_dst[i].q.val();
+            self.mop_wa[i].d.next = self.s1_wa.q.val();
+            self.mop_wd[i].d.next = self.s1_wd.q.val();
             // stage 2
-            self.w_ps[i].next = self.s1_src[i].q.val() * self.s1_wa.q.val();
-            self.w_pd[i].next = self.s1_dst[i].q.val() * self.s1_wd.q.val();
+            self.w_ps[i].next = self.s1b_src[i].q.val() * self.mop_wa[i].q.val();
+            self.w_pd[i].next = self.s1b_dst[i].q.val() * self.mop_wd[i].q.val();
             self.s2_ps[i].d.next = self.w_ps[i].val().get_bits::<16>(0);
             self.s2_pd[i].d.next = self.w_pd[i].val().get_bits::<16>(0);
             // stage 3

@@ -45,8 +45,10 @@ pub struct CartDecode {
     s4_by: DFF<U8>,
     s4_bz: DFF<Sq8_0>,
     valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    sat_x: Signal<Local, U8>,
-    sat_z: Signal<Local, U8>,
+    lo_x: Signal<Local, Bits<7>>,
+    lo_z: Signal<Local, Bits<7>>,
+    inv_x: Signal<Local, Bits<7>>,
+    inv_z: Signal<Local, Bits<7>>,
     w_ax: Signal<Local, Sq8_0>,
     w_az: Signal<Local, Sq8_0>,
     twice_sum: Signal<Local, U8>,
@@ -63,29 +65,29 @@ impl Logic for CartDecode {
             s3_by, s3_sx, s3_sz, s4_bx, s4_by, s4_bz);
         self.valid.clock.next = self.clock.val();
         self.valid.d.next = self.valid_in.val();
-        // stage 1: saturate 255 → 254, then the distance from 127 and its side
-        self.sat_x.next = self.texel_x.val();
-        if self.texel_x.val() > 254 {
-            self.sat_x.next = 254.into();
-        }
-        self.sat_z.next = self.texel_z.val();
-        if self.texel_z.val() > 254 {
-            self.sat_z.next = 254.into();
-        }
-        if self.sat_x.val() < 127 {
-            self.s1_ax.d.next = 127 - self.sat_x.val();
-            self.s1_sx.d.next = true;
+        // stage 1: the distance from 127 of T saturated to 254, and its side, with one 7-bit incrementer:
+        // T < 128: 127 − T = !T[6:0] (texel 127 gives 0, and then the sign does not matter);
+        // T ≥ 128: T − 127 = T[6:0] + 1, except T = 255, which saturates to 254 and gives 127
+        self.lo_x.next = self.texel_x.val().get_bits::<7>(0);
+        self.lo_z.next = self.texel_z.val().get_bits::<7>(0);
+        self.inv_x.next = !self.lo_x.val(); // inverted at 7 bits: Verilog would widen first, then invert
+        self.inv_z.next = !self.lo_z.val();
+        if !self.texel_x.val().get_bit(7) {
+            self.s1_ax.d.next = bit_cast::<8, 7>(self.inv_x.val());
+        } else if self.texel_x.val().all() {
+            self.s1_ax.d.next = 127.into();
         } else {
-            self.s1_ax.d.next = self.sat_x.val() - 127;
-            self.s1_sx.d.next = false;
+            self.s1_ax.d.next = bit_cast::<8, 7>(self.lo_x.val()) + 1;
         }
-        if self.sat_z.val() < 127 {
-            self.s1_az.d.next = 127 - self.sat_z.val();
-            self.s1_sz.d.next = true;
+        self.s1_sx.d.next = !self.texel_x.val().get_bit(7);
+        if !self.texel_z.val().get_bit(7) {
+            self.s1_az.d.next = bit_cast::<8, 7>(self.inv_z.val());
+        } else if self.texel_z.val().all() {
+            self.s1_az.d.next = 127.into();
         } else {
-            self.s1_az.d.next = self.sat_z.val() - 127;
-            self.s1_sz.d.next = false;
+            self.s1_az.d.next = bit_cast::<8, 7>(self.lo_z.val()) + 1;
         }
+        self.s1_sz.d.next = !self.texel_z.val().get_bit(7);
         // stage 2: ax + az ≤ 254 (U8); ax − az ∈ −127..127 (S9)
         self.s2_sum.d.next = self.s1_ax.q.val() + self.s1_az.q.val();
         self.w_ax.next = bit_cast::<9, 8>(self.s1_ax.q.val());

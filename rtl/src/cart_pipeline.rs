@@ -3,10 +3,18 @@
 //! light_iter → (delay 7) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
 //! Side-band values ride beside the stages they skip: C in a block-RAM delay line (`RamDelay`), the mode and the
 //! colours in the `DelayedBlend`, the light and P in short DFF chains.
-//! Latency 40 = bilinear 9 + cart_decode 4 + normalise 10 + dot3 5 + gloss 8 + blend 4.
+//! Latency 48 = bilinear 11 + cart_decode 4 + normalise 11 + dot3 6 + gloss 11 + blend 5.
+//!
+//! Two variants, the same wiring around a different texel decode (a macro writes both, so each exported Verilog
+//! holds only its own decoder):
+//! - `CartPipeline` (`cart_pipeline`): the seed's offset-binary texels through `cart_decode`;
+//! - `CartPipelineHemiOct` (`cart_pipeline_hemi_oct`): rotated hemi-octahedral texels (U on the red channel, V on
+//!   green) through `cart_decode_hemi_oct`, latency 47. Bilinear filtering of (U, V) is filtering of (x, z): the
+//!   map between them is linear.
 
 use crate::bilinear::Bilinear;
 use crate::cart_decode::CartDecode;
+use crate::cart_decode_hemi_oct::CartDecodeHemiOct;
 use crate::delay::Delay;
 use crate::dot3::Dot3;
 use crate::gloss::Gloss;
@@ -19,15 +27,20 @@ use rust_hdl::prelude::*;
 type U8 = Bits<8>;
 type S8 = Bits<8>;
 
-/// Cycles from the pipeline's input to each unit's input.
-pub const AT_NORMALISE: usize = crate::bilinear::LATENCY + crate::cart_decode::LATENCY; // 13
-pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY; // 7
-pub const AT_GLOSS: usize = AT_NORMALISE + crate::normalise::LATENCY + crate::dot3::LATENCY; // 28
-pub const AT_BLEND: usize = AT_GLOSS + crate::gloss::LATENCY; // 36
-pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 40
+macro_rules! cart_pipeline {
+    ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident) => {
+pub mod $m {
+use super::*;
+
+/// Cycles from the pipeline's input to each unit's input (seed decode: 15, 8, 32, 43, 48).
+pub const AT_NORMALISE: usize = crate::bilinear::LATENCY + crate::$dec_mod::LATENCY;
+pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY;
+pub const AT_GLOSS: usize = AT_NORMALISE + crate::normalise::LATENCY + crate::dot3::LATENCY;
+pub const AT_BLEND: usize = AT_GLOSS + crate::gloss::LATENCY;
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY;
 
 #[derive(LogicBlock, Default)]
-pub struct CartPipeline {
+pub struct $t {
     pub clock: Signal<In, Clock>,
     pub valid_in: Signal<In, Bit>,
     pub t00_x: Signal<In, U8>,
@@ -65,7 +78,7 @@ pub struct CartPipeline {
     pub out_g: Signal<Out, U8>,
     pub out_b: Signal<Out, U8>,
     pub filter: Bilinear,
-    pub decode: CartDecode,
+    pub decode: $dec,
     pub bump_norm: Normalise,
     pub light: LightIter,
     pub light_norm: Normalise,
@@ -74,12 +87,12 @@ pub struct CartPipeline {
     light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
     conc_dly: RamDelay<8, 6, AT_GLOSS>,
     pub blend: DelayedBlend<6, AT_BLEND>,
-    p_dly: Delay<Bits<10>, 4>,
+    p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
     bump_x10: Signal<Local, Bits<10>>,
     bump_z10: Signal<Local, Bits<10>>,
 }
 
-impl Logic for CartPipeline {
+impl Logic for $t {
     #[hdl_gen]
     fn update(&mut self) {
         self.filter.clock.next = self.clock.val();
@@ -95,7 +108,7 @@ impl Logic for CartPipeline {
         for i in 0..3 {
             self.light_dly[i].clock.next = self.clock.val();
         }
-        // filter: TexelX on red, TexelZ on green; blue and alpha unused (tied to 0, removed by synthesis)
+        // filter: TexelX (or U) on red, TexelZ (or V) on green; blue and alpha unused (tied to 0, removed by synthesis)
         self.filter.valid_in.next = self.valid_in.val();
         self.filter.t00_r.next = self.t00_x.val();
         self.filter.t00_g.next = self.t00_z.val();
@@ -117,8 +130,8 @@ impl Logic for CartPipeline {
         self.filter.vblend.next = self.vblend.val();
         // decode the filtered texel
         self.decode.valid_in.next = self.filter.valid_out.val();
-        self.decode.texel_x.next = self.filter.out_r.val();
-        self.decode.texel_z.next = self.filter.out_g.val();
+        self.decode.$tu.next = self.filter.out_r.val();
+        self.decode.$tv.next = self.filter.out_g.val();
         // normalise the bump: INT9 → S10 by sign extension, UINT8 → S10 by zero extension
         self.bump_x10.next = bit_cast::<10, 9>(self.decode.bump_x.val());
         if self.decode.bump_x.val().get_bit(8) {
@@ -184,8 +197,15 @@ impl Logic for CartPipeline {
     }
 }
 
-stream_unit!(CartPipeline, "cart_pipeline", LATENCY,
+stream_unit!($t, $name, LATENCY,
     inputs: [t00_x: 8, t00_z: 8, t10_x: 8, t10_z: 8, t01_x: 8, t01_z: 8, t11_x: 8, t11_z: 8, ublend: 8, vblend: 8,
              l0_x: 8, l0_y: 8, l0_z: 8, l1_x: 8, l1_y: 8, l1_z: 8, l2_x: 8, l2_y: 8, l2_z: 8, w1: 9, w2: 9,
              conc: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
     outputs: [p: 10, out_r: 8, out_g: 8, out_b: 8]);
+}
+pub use $m::$t;
+    };
+}
+
+cart_pipeline!(seed, CartPipeline, "cart_pipeline", CartDecode, cart_decode, texel_x, texel_z);
+cart_pipeline!(hemi_oct, CartPipelineHemiOct, "cart_pipeline_hemi_oct", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v);

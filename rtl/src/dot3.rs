@@ -1,12 +1,13 @@
 //! `dot3`: N·L of two Sq1.10 vectors (S12) → X (Uq0.10): `saturate(truncate(Σ n·l, 10), 0, 1023)`.
-//! Latency 5: magnitudes; products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
+//! Latency 6: magnitudes; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
+//! products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
 
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 5;
+pub const LATENCY: usize = 6;
 
 type Sq1_10 = Bits<12>; // two's complement, 1024 = 1.0
 type Sq2_20 = Bits<25>; // a product or the sum of three, two's complement
@@ -26,6 +27,9 @@ pub struct Dot3 {
     s1_nm: [DFF<Bits<12>>; 3], // |n| ≤ 2048 (U12)
     s1_lm: [DFF<Bits<12>>; 3],
     s1_neg: [DFF<Bit>; 3],
+    s1b_nm: [DFF<Bits<12>>; 3], // the operands again
+    s1b_lm: [DFF<Bits<12>>; 3],
+    s1b_neg: [DFF<Bit>; 3],
     s2_p: [DFF<Bits<23>>; 3], // |n|·|l| ≤ 2^22 (U23)
     s2_neg: [DFF<Bit>; 3],
     s3_t: [DFF<Sq2_20>; 3],
@@ -55,12 +59,12 @@ impl Logic for Dot3 {
         self.l_in[1].next = self.l_y.val();
         self.l_in[2].next = self.l_z.val();
         // bit_cast cannot stand inside an hdl_gen loop (its width is taken outside the loop): unrolled
-        self.w_n[0].next = bit_cast::<16, 12>(self.s1_nm[0].q.val());
-        self.w_n[1].next = bit_cast::<16, 12>(self.s1_nm[1].q.val());
-        self.w_n[2].next = bit_cast::<16, 12>(self.s1_nm[2].q.val());
-        self.w_l[0].next = bit_cast::<16, 12>(self.s1_lm[0].q.val());
-        self.w_l[1].next = bit_cast::<16, 12>(self.s1_lm[1].q.val());
-        self.w_l[2].next = bit_cast::<16, 12>(self.s1_lm[2].q.val());
+        self.w_n[0].next = bit_cast::<16, 12>(self.s1b_nm[0].q.val());
+        self.w_n[1].next = bit_cast::<16, 12>(self.s1b_nm[1].q.val());
+        self.w_n[2].next = bit_cast::<16, 12>(self.s1b_nm[2].q.val());
+        self.w_l[0].next = bit_cast::<16, 12>(self.s1b_lm[0].q.val());
+        self.w_l[1].next = bit_cast::<16, 12>(self.s1b_lm[1].q.val());
+        self.w_l[2].next = bit_cast::<16, 12>(self.s1b_lm[2].q.val());
         self.w_t[0].next = bit_cast::<25, 23>(self.s2_p[0].q.val());
         self.w_t[1].next = bit_cast::<25, 23>(self.s2_p[1].q.val());
         self.w_t[2].next = bit_cast::<25, 23>(self.s2_p[2].q.val());
@@ -68,6 +72,9 @@ impl Logic for Dot3 {
             self.s1_nm[i].clock.next = self.clock.val();
             self.s1_lm[i].clock.next = self.clock.val();
             self.s1_neg[i].clock.next = self.clock.val();
+            self.s1b_nm[i].clock.next = self.clock.val();
+            self.s1b_lm[i].clock.next = self.clock.val();
+            self.s1b_neg[i].clock.next = self.clock.val();
             self.s2_p[i].clock.next = self.clock.val();
             self.s2_neg[i].clock.next = self.clock.val();
             self.s3_t[i].clock.next = self.clock.val();
@@ -83,10 +90,14 @@ impl Logic for Dot3 {
                 self.s1_lm[i].d.next = self.l_in[i].val();
             }
             self.s1_neg[i].d.next = self.n_in[i].val().get_bit(11) ^ self.l_in[i].val().get_bit(11);
+            // stage 1b: carried
+            self.s1b_nm[i].d.next = self.s1_nm[i].q.val();
+            self.s1b_lm[i].d.next = self.s1_lm[i].q.val();
+            self.s1b_neg[i].d.next = self.s1_neg[i].q.val();
             // stage 2: 12 × 12 → 23 bits
             self.w_p[i].next = self.w_n[i].val() * self.w_l[i].val();
             self.s2_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
-            self.s2_neg[i].d.next = self.s1_neg[i].q.val();
+            self.s2_neg[i].d.next = self.s1b_neg[i].q.val();
             // stage 3: the sign back (S25)
             if self.s2_neg[i].q.val() {
                 self.s3_t[i].d.next = !self.w_t[i].val() + 1;

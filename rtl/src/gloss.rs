@@ -1,14 +1,16 @@
 //! `gloss`: the seed's quadratic glossiness, `P = L + ((C·(Q − L)) >> 8)` with `L = max(0, 1023 − (k·(1023 − X)
 //! >> 3))`, `k = C + 8`, `Q = (L·L) >> 10`. Since Q ≤ L the signed step is done on the magnitude:
 //! `(C·(Q − L)) >> 8` (arithmetic, floor) = `−((C·(L − Q) + 255) >> 8)`, so every signal here is unsigned.
-//! Latency 8: k·t, the L clamp, L·L, L − Q, C·(L − Q), the ceiling shift and the final subtract each get a stage.
+//! Latency 11: k, t; their operand register; k·t; the L clamp; its operand register; L·L; L − Q; its operand register;
+//! C·(L − Q); the ceiling shift; the final subtract. An operand register feeds nothing but its multiplier, so the
+//! placer can put it beside the DSP and the long route lands on a register-to-register path.
 
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 8;
+pub const LATENCY: usize = 11;
 
 type Uq0_10 = Bits<10>; // X, L, Q, P: 10-bit fractions, 1023 ≈ 1.0
 type Uq6_3 = Bits<9>; // k = C + 8, 3 fraction bits
@@ -26,12 +28,19 @@ pub struct Gloss {
     s1_k: DFF<Uq6_3>,
     s1_t: DFF<Uq0_10>,
     s1_c: DFF<U8>,
+    // stage 1b: the operands again
+    s1b_k: DFF<Uq6_3>,
+    s1b_t: DFF<Uq0_10>,
+    s1b_c: DFF<U8>,
     // stage 2: m = k·t (U19)
     s2_m: DFF<Bits<19>>,
     s2_c: DFF<U8>,
     // stage 3: L = max(0, 1023 − (m >> 3))
     s3_l: DFF<Uq0_10>,
     s3_c: DFF<U8>,
+    // stage 3b: the operand again
+    s3b_l: DFF<Uq0_10>,
+    s3b_c: DFF<U8>,
     // stage 4: L·L (U20)
     s4_ll: DFF<Bits<20>>,
     s4_l: DFF<Uq0_10>,
@@ -40,6 +49,10 @@ pub struct Gloss {
     s5_d: DFF<Uq0_10>,
     s5_l: DFF<Uq0_10>,
     s5_c: DFF<U8>,
+    // stage 5b: the operands again
+    s5b_d: DFF<Uq0_10>,
+    s5b_l: DFF<Uq0_10>,
+    s5b_c: DFF<U8>,
     // stage 6: C·(L − Q) (U18)
     s6_prod: DFF<Bits<18>>,
     s6_l: DFF<Uq0_10>,
@@ -74,16 +87,24 @@ impl Default for Gloss {
             s1_k: Default::default(),
             s1_t: Default::default(),
             s1_c: Default::default(),
+            s1b_k: Default::default(),
+            s1b_t: Default::default(),
+            s1b_c: Default::default(),
             s2_m: Default::default(),
             s2_c: Default::default(),
             s3_l: Default::default(),
             s3_c: Default::default(),
+            s3b_l: Default::default(),
+            s3b_c: Default::default(),
             s4_ll: Default::default(),
             s4_l: Default::default(),
             s4_c: Default::default(),
             s5_d: Default::default(),
             s5_l: Default::default(),
             s5_c: Default::default(),
+            s5b_d: Default::default(),
+            s5b_l: Default::default(),
+            s5b_c: Default::default(),
             s6_prod: Default::default(),
             s6_l: Default::default(),
             s7_q: Default::default(),
@@ -108,20 +129,24 @@ impl Default for Gloss {
 impl Logic for Gloss {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_k, s1_t, s1_c, s2_m, s2_c, s3_l, s3_c, s4_ll, s4_l, s4_c, s5_d, s5_l, s5_c,
-            s6_prod, s6_l, s7_q, s7_l, s8_p);
+        dff_setup!(self, clock, s1_k, s1_t, s1_c, s1b_k, s1b_t, s1b_c, s2_m, s2_c, s3_l, s3_c, s3b_l, s3b_c, s4_ll,
+            s4_l, s4_c, s5_d, s5_l, s5_c, s5b_d, s5b_l, s5b_c, s6_prod, s6_l, s7_q, s7_l, s8_p);
         self.valid.clock.next = self.clock.val();
         self.valid.d.next = self.valid_in.val();
         // stage 1
         self.s1_k.d.next = bit_cast::<9, 8>(self.conc.val()) + 8; // U9, no overflow (≤ 263)
         self.s1_t.d.next = 1023 - self.x.val(); // U10, X ≤ 1023
         self.s1_c.d.next = self.conc.val();
+        // stage 1b: carried
+        self.s1b_k.d.next = self.s1_k.q.val();
+        self.s1b_t.d.next = self.s1_t.q.val();
+        self.s1b_c.d.next = self.s1_c.q.val();
         // stage 2: k·t, 9 × 10 bits → 19 bits
-        self.w_k.next = bit_cast::<16, 9>(self.s1_k.q.val());
-        self.w_t.next = bit_cast::<16, 10>(self.s1_t.q.val());
+        self.w_k.next = bit_cast::<16, 9>(self.s1b_k.q.val());
+        self.w_t.next = bit_cast::<16, 10>(self.s1b_t.q.val());
         self.w_m.next = self.w_k.val() * self.w_t.val();
         self.s2_m.d.next = self.w_m.val().get_bits::<19>(0); // ≤ 263·1023 < 2^19: exact
-        self.s2_c.d.next = self.s1_c.q.val();
+        self.s2_c.d.next = self.s1b_c.q.val();
         // stage 3: m >> 3 (floor), then 1023 − that, saturated at 0
         self.m3.next = self.s2_m.q.val().get_bits::<16>(3);
         self.m3_lo.next = self.m3.val().get_bits::<10>(0);
@@ -131,22 +156,29 @@ impl Logic for Gloss {
             self.s3_l.d.next = 1023 - self.m3_lo.val();
         }
         self.s3_c.d.next = self.s2_c.q.val();
+        // stage 3b: carried
+        self.s3b_l.d.next = self.s3_l.q.val();
+        self.s3b_c.d.next = self.s3_c.q.val();
         // stage 4: L·L, 10 × 10 bits → 20 bits
-        self.w_l.next = bit_cast::<16, 10>(self.s3_l.q.val());
+        self.w_l.next = bit_cast::<16, 10>(self.s3b_l.q.val());
         self.w_ll.next = self.w_l.val() * self.w_l.val();
         self.s4_ll.d.next = self.w_ll.val().get_bits::<20>(0);
-        self.s4_l.d.next = self.s3_l.q.val();
-        self.s4_c.d.next = self.s3_c.q.val();
+        self.s4_l.d.next = self.s3b_l.q.val();
+        self.s4_c.d.next = self.s3b_c.q.val();
         // stage 5: d = L − Q, Q = (L·L) >> 10 (floor); Q ≤ L so d ≥ 0
         self.s5_d.d.next = self.s4_l.q.val() - self.s4_ll.q.val().get_bits::<10>(10);
         self.s5_l.d.next = self.s4_l.q.val();
         self.s5_c.d.next = self.s4_c.q.val();
+        // stage 5b: carried
+        self.s5b_d.d.next = self.s5_d.q.val();
+        self.s5b_l.d.next = self.s5_l.q.val();
+        self.s5b_c.d.next = self.s5_c.q.val();
         // stage 6: C·d, 8 × 10 bits → 18 bits
-        self.w_c.next = bit_cast::<16, 8>(self.s5_c.q.val());
-        self.w_d.next = bit_cast::<16, 10>(self.s5_d.q.val());
+        self.w_c.next = bit_cast::<16, 8>(self.s5b_c.q.val());
+        self.w_d.next = bit_cast::<16, 10>(self.s5b_d.q.val());
         self.w_prod.next = self.w_c.val() * self.w_d.val();
         self.s6_prod.d.next = self.w_prod.val().get_bits::<18>(0);
-        self.s6_l.d.next = self.s5_l.q.val();
+        self.s6_l.d.next = self.s5b_l.q.val();
         // stage 7: ceil(C·d / 256) = (C·d + 255) >> 8, which is −((C·(Q − L)) >> 8)
         self.ceil_sum.next = self.s6_prod.q.val() + 255; // ≤ 255·1023 + 255 < 2^18
         self.s7_q.d.next = self.ceil_sum.val().get_bits::<10>(8);

@@ -11,6 +11,7 @@
 pub mod bilinear;
 pub mod blend;
 pub mod cart_decode;
+pub mod cart_decode_hemi_oct;
 pub mod cart_pipeline;
 pub mod cos_sign;
 pub mod delay;

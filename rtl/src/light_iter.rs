@@ -1,13 +1,15 @@
 //! `light_iter`: per-vertex S8 light directions interpolated across a triangle from U9 barycentric weights:
 //! `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Q8.8) → `truncate` 6 (floor) → `saturate` to S10 (Sq8.2).
-//! Latency 6: differences; magnitudes; products; signs; the sum; the shift and saturation.
+//! Latency 7: differences; magnitudes; the multiplier's operand register; products; signs; the sum; the shift and
+//! saturation. The operand register feeds nothing but the multiplier, so the placer can put it beside the DSP: the
+//! long route lands on a register-to-register path instead of in front of the multiplier's 3.9 ns.
 
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 6;
+pub const LATENCY: usize = 7;
 
 type S8 = Bits<8>; // two's complement vertex components
 type Sq8_2 = Bits<10>; // the interpolated light, two's complement
@@ -46,6 +48,14 @@ pub struct LightIter {
     s2_base: [DFF<Sq8_8>; 3],
     s2_w1: DFF<Bits<16>>,
     s2_w2: DFF<Bits<16>>,
+    // stage 2b: the multiplier's operands again, and what travels beside them
+    s2b_m1: [DFF<Bits<16>>; 3],
+    s2b_m2: [DFF<Bits<16>>; 3],
+    s2b_n1: [DFF<Bit>; 3],
+    s2b_n2: [DFF<Bit>; 3],
+    s2b_base: [DFF<Sq8_8>; 3],
+    mop_w1: [DFF<Bits<16>>; 3],
+    mop_w2: [DFF<Bits<16>>; 3],
     // stage 3: |d|·w ≤ 255·511 (U17)
     s3_p1: [DFF<Bits<17>>; 3],
     s3_p2: [DFF<Bits<17>>; 3],
@@ -200,6 +210,13 @@ impl Logic for LightIter {
             self.s2_n1[i].clock.next = self.clock.val();
             self.s2_n2[i].clock.next = self.clock.val();
             self.s2_base[i].clock.next = self.clock.val();
+            self.s2b_m1[i].clock.next = self.clock.val();
+            self.s2b_m2[i].clock.next = self.clock.val();
+            self.s2b_n1[i].clock.next = self.clock.val();
+            self.s2b_n2[i].clock.next = self.clock.val();
+            self.s2b_base[i].clock.next = self.clock.val();
+            self.mop_w1[i].clock.next = self.clock.val();
+            self.mop_w2[i].clock.next = self.clock.val();
             self.s3_p1[i].clock.next = self.clock.val();
             self.s3_p2[i].clock.next = self.clock.val();
             self.s3_n1[i].clock.next = self.clock.val();
@@ -214,14 +231,22 @@ impl Logic for LightIter {
             self.s2_n1[i].d.next = self.s1_d1[i].q.val().get_bit(8);
             self.s2_n2[i].d.next = self.s1_d2[i].q.val().get_bit(8);
             self.s2_base[i].d.next = self.s1_base[i].q.val();
+            // stage 2b: carried; the weights once per component (`mop_`: see `rtl/README.md`)
+            self.s2b_m1[i].d.next = self.s2_m1[i].q.val();
+            self.s2b_m2[i].d.next = self.s2_m2[i].q.val();
+            self.s2b_n1[i].d.next = self.s2_n1[i].q.val();
+            self.s2b_n2[i].d.next = self.s2_n2[i].q.val();
+            self.s2b_base[i].d.next = self.s2_base[i].q.val();
+            self.mop_w1[i].d.next = self.s2_w1.q.val();
+            self.mop_w2[i].d.next = self.s2_w2.q.val();
             // stage 3: 16 × 16 → 32, of which 17 bits are used
-            self.w_p1[i].next = self.s2_m1[i].q.val() * self.s2_w1.q.val();
-            self.w_p2[i].next = self.s2_m2[i].q.val() * self.s2_w2.q.val();
+            self.w_p1[i].next = self.s2b_m1[i].q.val() * self.mop_w1[i].q.val();
+            self.w_p2[i].next = self.s2b_m2[i].q.val() * self.mop_w2[i].q.val();
             self.s3_p1[i].d.next = self.w_p1[i].val().get_bits::<17>(0);
             self.s3_p2[i].d.next = self.w_p2[i].val().get_bits::<17>(0);
-            self.s3_n1[i].d.next = self.s2_n1[i].q.val();
-            self.s3_n2[i].d.next = self.s2_n2[i].q.val();
-            self.s3_base[i].d.next = self.s2_base[i].q.val();
+            self.s3_n1[i].d.next = self.s2b_n1[i].q.val();
+            self.s3_n2[i].d.next = self.s2b_n2[i].q.val();
+            self.s3_base[i].d.next = self.s2b_base[i].q.val();
             // stage 4
             if self.s3_n1[i].q.val() {
                 self.s4_t1[i].d.next = !self.p20_1[i].val() + 1;

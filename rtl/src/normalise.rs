@@ -1,6 +1,7 @@
 //! `normalise`: three S10 components → a unit vector in Sq1.10 (S12), by a seed table of 1/√m (`TABLE_BITS` = 10,
 //! 1,024 × 13-bit entries, a ROM) and no Newton step; see `vectors::normalise` for the exact recipe and the zero
-//! vector (zero in, zero out). Latency 10: magnitudes; squares; their sum; the leading-zero pairs; the shifts and
+//! vector (zero in, zero out). Latency 11: magnitudes; the squarers' operand register (it feeds nothing else, so it
+//! can sit beside the DSP); squares; their sum; the leading-zero pairs; the shifts and
 //! the table address; the table (the block RAM's own read register); a register after the block RAM, so that its
 //! slow clock-to-output (5.6 ns on an ECP5-6) does not add to the multiplier's delay; the products; the rounding;
 //! the signs.
@@ -11,7 +12,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 10;
+pub const LATENCY: usize = 11;
 
 pub const TABLE_BITS: u32 = 10;
 type Sq9_0 = Bits<10>; // input components, two's complement (the bump's Q8.0 or the light's Q8.2)
@@ -49,6 +50,8 @@ pub struct Normalise {
     // stage 1: magnitudes ≤ 512 (U10) and signs
     s1_m: [DFF<Bits<10>>; 3],
     s1_neg: [DFF<Bit>; 3],
+    s1b_m: [DFF<Bits<10>>; 3], // the squarers' operands again
+    s1b_neg: [DFF<Bit>; 3],
     // stage 2: squares ≤ 2^18 (U19)
     s2_sq: [DFF<Bits<19>>; 3],
     s2_m: [DFF<Bits<10>>; 3],
@@ -71,7 +74,7 @@ pub struct Normalise {
     s6_c: [DFF<Bits<10>>; 3],
     s6_neg: [DFF<Bit>; 3],
     // stage 6b: the table entry and the shifted components, registered again after the block RAM
-    s6b_r: DFF<Uq1_12>,
+    mop_r: [DFF<Uq1_12>; 3], // the table value once per multiplier (`mop_`: see `rtl/README.md`)
     s6b_c: [DFF<Bits<10>>; 3],
     s6b_neg: [DFF<Bit>; 3],
     // stage 7: |c|·2^e·r ≤ 1023·4096 (U23)
@@ -89,7 +92,7 @@ pub struct Normalise {
     w_e2: Signal<Local, Bits<5>>,
     w_sn: Signal<Local, Bits<20>>,
     w_c: [Signal<Local, Bits<16>>; 3],
-    w_r: Signal<Local, Bits<16>>,
+    w_r: [Signal<Local, Bits<16>>; 3],
     w_p: [Signal<Local, Bits<32>>; 3],
     w_u: [Signal<Local, Bits<23>>; 3],
 }
@@ -111,6 +114,8 @@ impl Default for Normalise {
             rsqrt: ROM::new(rom),
             s1_m: Default::default(),
             s1_neg: Default::default(),
+            s1b_m: Default::default(),
+            s1b_neg: Default::default(),
             s2_sq: Default::default(),
             s2_m: Default::default(),
             s2_neg: Default::default(),
@@ -127,7 +132,7 @@ impl Default for Normalise {
             s6_r: Default::default(),
             s6_c: Default::default(),
             s6_neg: Default::default(),
-            s6b_r: Default::default(),
+            mop_r: Default::default(),
             s6b_c: Default::default(),
             s6b_neg: Default::default(),
             s7_p: Default::default(),
@@ -152,12 +157,14 @@ impl Default for Normalise {
 impl Logic for Normalise {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r, s6b_r);
+        dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r);
         self.valid.clock.next = self.clock.val();
         self.valid.d.next = self.valid_in.val();
         for i in 0..3 {
             self.s1_m[i].clock.next = self.clock.val();
             self.s1_neg[i].clock.next = self.clock.val();
+            self.s1b_m[i].clock.next = self.clock.val();
+            self.s1b_neg[i].clock.next = self.clock.val();
             self.s2_sq[i].clock.next = self.clock.val();
             self.s2_m[i].clock.next = self.clock.val();
             self.s2_neg[i].clock.next = self.clock.val();
@@ -170,6 +177,7 @@ impl Logic for Normalise {
             self.s6_c[i].clock.next = self.clock.val();
             self.s6_neg[i].clock.next = self.clock.val();
             self.s6b_c[i].clock.next = self.clock.val();
+            self.mop_r[i].clock.next = self.clock.val();
             self.s6b_neg[i].clock.next = self.clock.val();
             self.s7_p[i].clock.next = self.clock.val();
             self.s7_neg[i].clock.next = self.clock.val();
@@ -183,7 +191,7 @@ impl Logic for Normalise {
             self.s1_m[0].d.next = !self.vec_x.val() + 1;
         }
         self.s1_neg[0].d.next = self.vec_x.val().get_bit(9);
-        self.w_m[0].next = bit_cast::<16, 10>(self.s1_m[0].q.val());
+        self.w_m[0].next = bit_cast::<16, 10>(self.s1b_m[0].q.val());
         self.w_c[0].next = bit_cast::<16, 10>(self.s6b_c[0].q.val());
         // ---- component y: magnitude and sign (stage 1), widened for the multipliers
         self.s1_m[1].d.next = self.vec_y.val();
@@ -191,7 +199,7 @@ impl Logic for Normalise {
             self.s1_m[1].d.next = !self.vec_y.val() + 1;
         }
         self.s1_neg[1].d.next = self.vec_y.val().get_bit(9);
-        self.w_m[1].next = bit_cast::<16, 10>(self.s1_m[1].q.val());
+        self.w_m[1].next = bit_cast::<16, 10>(self.s1b_m[1].q.val());
         self.w_c[1].next = bit_cast::<16, 10>(self.s6b_c[1].q.val());
         // ---- component z: magnitude and sign (stage 1), widened for the multipliers
         self.s1_m[2].d.next = self.vec_z.val();
@@ -199,17 +207,22 @@ impl Logic for Normalise {
             self.s1_m[2].d.next = !self.vec_z.val() + 1;
         }
         self.s1_neg[2].d.next = self.vec_z.val().get_bit(9);
-        self.w_m[2].next = bit_cast::<16, 10>(self.s1_m[2].q.val());
+        self.w_m[2].next = bit_cast::<16, 10>(self.s1b_m[2].q.val());
         self.w_c[2].next = bit_cast::<16, 10>(self.s6b_c[2].q.val());
         // stage 6 reads the table at the stage-5 address
         self.rsqrt.address.next = self.s5_addr.q.val();
-        self.w_r.next = bit_cast::<16, 13>(self.s6b_r.q.val());
+        self.w_r[0].next = bit_cast::<16, 13>(self.mop_r[0].q.val());
+        self.w_r[1].next = bit_cast::<16, 13>(self.mop_r[1].q.val());
+        self.w_r[2].next = bit_cast::<16, 13>(self.mop_r[2].q.val());
         for i in 0..3 {
+            // stage 1b: carried
+            self.s1b_m[i].d.next = self.s1_m[i].q.val();
+            self.s1b_neg[i].d.next = self.s1_neg[i].q.val();
             // stage 2
             self.w_sq[i].next = self.w_m[i].val() * self.w_m[i].val();
             self.s2_sq[i].d.next = self.w_sq[i].val().get_bits::<19>(0);
-            self.s2_m[i].d.next = self.s1_m[i].q.val();
-            self.s2_neg[i].d.next = self.s1_neg[i].q.val();
+            self.s2_m[i].d.next = self.s1b_m[i].q.val();
+            self.s2_neg[i].d.next = self.s1b_neg[i].q.val();
             // stages 3, 4: carried
             self.s3_m[i].d.next = self.s2_m[i].q.val();
             self.s3_neg[i].d.next = self.s2_neg[i].q.val();
@@ -223,9 +236,10 @@ impl Logic for Normalise {
             self.s6_neg[i].d.next = self.s5_neg[i].q.val();
             // stage 6b: carried
             self.s6b_c[i].d.next = self.s6_c[i].q.val();
+            self.mop_r[i].d.next = self.s6_r.q.val();
             self.s6b_neg[i].d.next = self.s6_neg[i].q.val();
             // stage 7: 10 × 13 → 23 bits
-            self.w_p[i].next = self.w_c[i].val() * self.w_r.val();
+            self.w_p[i].next = self.w_c[i].val() * self.w_r[i].val();
             self.s7_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
             self.s7_neg[i].d.next = self.s6b_neg[i].q.val();
             // stage 8: (p + 2^10) >> 11
@@ -273,7 +287,6 @@ impl Logic for Normalise {
         self.s5_addr.d.next = self.w_sn.val().get_bits::<10>(10);
         // stage 6
         self.s6_r.d.next = self.rsqrt.data.val();
-        self.s6b_r.d.next = self.s6_r.q.val();
         self.norm_x.next = self.s9_out[0].q.val();
         self.norm_y.next = self.s9_out[1].q.val();
         self.norm_z.next = self.s9_out[2].q.val();

@@ -1,7 +1,7 @@
 //! `polar_pipeline`: seed 000's first embodiment, one pixel per clock, built from the unit blocks themselves:
 //! polar_shade(S, R, Q, k1, k2, k3) → power(p) → α → blend(src, dst).
 //! p rides beside the shade unit in a DFF chain; the mode and the colours wait in the `DelayedBlend`.
-//! Latency 21 = polar_shade 10 + power 7 + blend 4.
+//! Latency 22 = polar_shade 10 + power 7 + blend 5.
 
 use crate::delay::Delay;
 use crate::polar_shade::PolarShade;
@@ -14,7 +14,7 @@ type U8 = Bits<8>;
 
 pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
 pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 17
-pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 21
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 22
 
 /// `DC`: the Dreamcast toolchains' angle scale in the shade unit's tables (unit `polar_pipeline_dc`).
 #[derive(LogicBlock, Default)]
@@ -44,7 +44,7 @@ pub struct PolarPipeline<const DC: bool> {
     pub power: Power,
     pw_dly: Delay<U8, AT_POWER>,
     pub blend: DelayedBlend<5, AT_BLEND>,
-    alpha_dly: Delay<U8, 4>,
+    alpha_dly: Delay<U8, { crate::blend::LATENCY }>,
 }
 
 impl<const DC: bool> Logic for PolarPipeline<DC> {

@@ -192,12 +192,18 @@ fn cells(family: Family, log: &str) -> Cells {
     }
 }
 
+/// Run before synthesis, after reading the Verilog: registers named `mop_*` are a multiplier's operand copied once
+/// per multiplier, so that each copy can be placed beside its DSP. yosys would merge the copies back into one (they
+/// have the same D), so they are marked `keep`. rust-hdl writes every DFF as its own module, which is what the
+/// selection names.
+pub const KEEP_OPERAND_COPIES: &str = "proc; setattr -set keep 1 *$mop_*/t:$dff";
+
 fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>) -> Result<String, String> {
     let mut script = String::new();
     for f in files {
         let _ = write!(script, "read_verilog {f}; ");
     }
-    let _ = write!(script, "{} -top {top}", family.synth_command());
+    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {} -top {top}", family.synth_command());
     if let Some(j) = json {
         let _ = write!(script, " -json {j}");
     }
@@ -212,7 +218,7 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
 pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
     let v = export::<U>();
     v.write(dir)?;
-    let key = format!("{}\n{}", family.synth_command(), v.text);
+    let key = format!("{}\n{KEEP_OPERAND_COPIES}\n{}", family.synth_command(), v.text);
     let (stamp, saved) = (dir.join(format!("{family:?}.cells.stamp")), dir.join(format!("{family:?}.cells")));
     if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
         let n: Vec<u64> = std::fs::read_to_string(&saved).unwrap_or_default().split_whitespace().filter_map(|x| x.parse().ok()).collect();
@@ -369,7 +375,7 @@ impl SynthReport {
 /// `synth_and_place`, reusing the figures of an earlier run in `dir` when the unit's Verilog, the wrapper, the part
 /// and the target frequency are all unchanged (place-and-route takes minutes; the demo asks for it on every run).
 pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
-    let key = format!("{}\n{}\n{}\n{freq_mhz}", export::<U>().text, wrapper::<U>(), part.name);
+    let key = format!("{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}", export::<U>().text, wrapper::<U>(), part.name);
     let (stamp, saved) = (dir.join("report.stamp"), dir.join("report.txt"));
     if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
         if let Some(r) = std::fs::read_to_string(&saved).ok().as_deref().and_then(SynthReport::from_text) {

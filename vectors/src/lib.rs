@@ -5,6 +5,7 @@
 pub mod blend;
 pub mod bilinear;
 pub mod cart_decode;
+pub mod cart_decode_hemi_oct;
 pub mod cart_encode;
 pub mod cart_pipeline;
 pub mod cos_sign;

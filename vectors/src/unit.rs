@@ -51,6 +51,7 @@ impl UnitModel {
 /// Every unit with an rtl block, by name.
 pub const UNITS: &[&UnitModel] = &[
     &crate::cart_decode::MODEL,
+    &crate::cart_decode_hemi_oct::MODEL,
     &crate::bilinear::MODEL,
     &crate::light_iter::MODEL,
     &crate::normalise::MODEL,
@@ -58,6 +59,7 @@ pub const UNITS: &[&UnitModel] = &[
     &crate::gloss::MODEL,
     &crate::blend::MODEL,
     &crate::cart_pipeline::MODEL,
+    &crate::cart_pipeline::MODEL_HEMI_OCT,
     &crate::sincos::MODEL,
     &crate::cos_sign::MODEL,
     &crate::polar_shade::MODEL,
