@@ -49,7 +49,7 @@ fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], o
         None
     };
     let mism = |a: &Image| (0..inputs.len()).filter(|&k| a.p[k] != model.p[k] || a.rgb[k] != model.rgb[k]).count();
-    // both Verilator runs, the one-process and the split one, against the model
+    // both Verilator runs, the one-thread and the split one, against the model
     let mism_vl = vl.as_ref().map(|r| mism(&r.image) + mism(&r.single)).unwrap_or(0);
     let mism_hdl = mism(&hdl);
     Ok(Paths { model, hdl, vl, mism_hdl, mism_vl })
@@ -217,15 +217,15 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     println!("{:<34} {:>14} {:>14}", "rust-hdl (loop-driven)", pps(&cart.hdl, cart.mism_hdl), pps(&polar.hdl, polar.mism_hdl));
     match (&cart.vl, &polar.vl) {
         (Some(c), Some(p)) => {
-            println!("{:<34} {:>14} {:>14}", "Verilator, whole frame, 1 process", pps(&c.single, cart.mism_vl), pps(&p.single, polar.mism_vl));
-            let label = format!("Verilator, whole frame, {} processes", c.procs);
+            println!("{:<34} {:>14} {:>14}", "Verilator, whole frame, 1 thread", pps(&c.single, cart.mism_vl), pps(&p.single, polar.mism_vl));
+            let label = format!("Verilator, whole frame, {} threads", c.threads);
             println!("{label:<34} {:>14} {:>14}", pps(&c.image, cart.mism_vl), pps(&p.image, polar.mism_vl));
             println!("{:<34} {:>14.0} {:>14.0}", "Verilator bare loop (cycles/s)", c.bare_cycles_per_second, p.bare_cycles_per_second);
             let ratio = |r: &render::VerilatorRun| {
                 let slots = r.single.size * r.single.size;
                 format!("{:.2}", slots as f64 / r.single.seconds / r.bare_cycles_per_second)
             };
-            println!("{:<34} {:>14} {:>14}", "  1 process against the bare loop", ratio(c), ratio(p));
+            println!("{:<34} {:>14} {:>14}", "  1 thread against the bare loop", ratio(c), ratio(p));
         }
         _ => println!("Verilator path skipped: {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", ")),
     }
