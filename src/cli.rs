@@ -59,7 +59,7 @@ enum Cmd {
     /// Exact against ideal for every unit, and the encoders' angular error
     Accuracy {
         /// random hemisphere directions per encoder
-        #[arg(long, default_value_t = 1_000_000)]
+        #[arg(long, default_value_t = sim::accuracy::DIRECTIONS)]
         directions: usize,
         #[arg(long, default_value_t = 200_000)]
         samples: usize,

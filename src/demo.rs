@@ -24,20 +24,24 @@ fn bar(len: u64, what: &str) -> ProgressBar {
     b
 }
 
-/// One pipeline through the three bit-exact paths (Verilator's only where it is installed).
+/// One pipeline through the three bit-exact paths (rust-hdl's only when asked for, Verilator's only where it is
+/// installed).
 struct Paths {
     model: Image,
-    hdl: Image,
+    hdl: Option<Image>,
     vl: Option<render::VerilatorRun>,
     mism_hdl: usize,
     mism_vl: usize,
 }
 
-fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], out: &Path, verilator: bool) -> Result<Paths, String> {
+fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], out: &Path, rust_hdl: bool, verilator: bool) -> Result<Paths, String> {
     let model = render::model(m, size, inputs);
-    let b = bar(inputs.len() as u64, &format!("rust-hdl: {}", m.name));
-    let hdl = render::rust_hdl::<U>(m, size, inputs, &|k| b.set_position(k as u64));
-    b.finish_and_clear();
+    let hdl = rust_hdl.then(|| {
+        let b = bar(inputs.len() as u64, &format!("rust-hdl: {}", m.name));
+        let hdl = render::rust_hdl::<U>(m, size, inputs, &|k| b.set_position(k as u64));
+        b.finish_and_clear();
+        hdl
+    });
     let vl = if verilator {
         let b = ProgressBar::new_spinner();
         b.set_message(format!("Verilator: building and running {}", m.name));
@@ -51,7 +55,7 @@ fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], o
     let mism = |a: &Image| (0..inputs.len()).filter(|&k| a.p[k] != model.p[k] || a.rgb[k] != model.rgb[k]).count();
     // both Verilator runs, the one-thread and the split one, against the model
     let mism_vl = vl.as_ref().map(|r| mism(&r.image) + mism(&r.single)).unwrap_or(0);
-    let mism_hdl = mism(&hdl);
+    let mism_hdl = hdl.as_ref().map(mism).unwrap_or(0);
     Ok(Paths { model, hdl, vl, mism_hdl, mism_vl })
 }
 
@@ -83,25 +87,37 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     let t = Instant::now();
     let prep = scene.prepare();
     let cart_ideal_s = t.elapsed().as_secs_f64();
-    let cart = three_paths::<rtl::cart_pipeline::CartPipeline>(&vectors::cart_pipeline::MODEL, size, &prep.inputs, out, no_vl.is_empty())?;
+    let cart = three_paths::<rtl::cart_pipeline::CartPipeline>(&vectors::cart_pipeline::MODEL, size, &prep.inputs, out, true, no_vl.is_empty())?;
+    // the same scene, its normals hemi-octahedrally encoded, through the pipeline built with that decode (rust-hdl
+    // is left to the tests here: the model and Verilator are the two fast paths)
+    let t = Instant::now();
+    let prep_h = Scene { encoder: vectors::cart_encode::Encoder::HemiOct, ..scene.clone() }.prepare();
+    let hemi_ideal_s = t.elapsed().as_secs_f64();
+    let hm = &vectors::cart_pipeline::MODEL_HEMI_OCT;
+    let hemi = three_paths::<rtl::cart_pipeline::CartPipelineHemiOct>(hm, size, &prep_h.inputs, out, false, no_vl.is_empty())?;
     // polar
     let t = Instant::now();
     let pol = scene.prepare_polar(scale, POLAR_PW, POLAR_H);
     let polar_ideal_s = t.elapsed().as_secs_f64();
     let pm = vectors::polar_pipeline::MODEL_FOR[scale as usize];
     let polar = match scale {
-        Scale::Seed => three_paths::<rtl::polar_pipeline::PolarPipelineSeed>(pm, size, &pol.inputs, out, no_vl.is_empty())?,
-        Scale::Dc255 => three_paths::<rtl::polar_pipeline::PolarPipelineDc>(pm, size, &pol.inputs, out, no_vl.is_empty())?,
+        Scale::Seed => three_paths::<rtl::polar_pipeline::PolarPipelineSeed>(pm, size, &pol.inputs, out, true, no_vl.is_empty())?,
+        Scale::Dc255 => three_paths::<rtl::polar_pipeline::PolarPipelineDc>(pm, size, &pol.inputs, out, true, no_vl.is_empty())?,
     };
 
     // error of each model against the scene's ideal
-    let (mut c_shade, mut c_colour, mut c_normal) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
-    for k in 0..n {
-        c_shade.add((cart.model.p[k] as f64 / 4.0 - prep.ideal_p[k] / 1023.0 * 255.0).abs(), || where_(k));
-        c_colour.add(colour_err(cart.model.rgb[k], prep.ideal_rgb[k]), || where_(k));
-        let tr = vectors::cart_pipeline::exact_trace(&prep.inputs[k]);
-        c_normal.add(angle_deg(tr.normal.map(|c| c as f64), prep.ideal_normal[k]), || where_(k));
-    }
+    let cart_errors = |paths: &Paths, prep: &vectors::scene::Prepared, decode: vectors::cart_pipeline::Decode| {
+        let (mut shade, mut colour, mut normal) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
+        for k in 0..n {
+            shade.add((paths.model.p[k] as f64 / 4.0 - prep.ideal_p[k] / 1023.0 * 255.0).abs(), || where_(k));
+            colour.add(colour_err(paths.model.rgb[k], prep.ideal_rgb[k]), || where_(k));
+            let tr = vectors::cart_pipeline::exact_trace_with(decode, &prep.inputs[k]);
+            normal.add(angle_deg(tr.normal.map(|c| c as f64), prep.ideal_normal[k]), || where_(k));
+        }
+        (shade, colour, normal)
+    };
+    let (c_shade, c_colour, c_normal) = cart_errors(&cart, &prep, vectors::cart_pipeline::Decode::Seed);
+    let (h_shade, h_colour, h_normal) = cart_errors(&hemi, &prep_h, vectors::cart_pipeline::Decode::HemiOct);
     // the polar path against the scene's ideal; against an ideal lit by the surface's one light (what remains is
     // the normal's encoding and filtering, and the arithmetic); against its own codes (the arithmetic alone)
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -148,7 +164,9 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     let png = |name: &str, f: &dyn Fn(usize) -> [u8; 3]| render::write_png(&out.join(name), size, f);
     png("ideal.png", &|k| prep.ideal_rgb[k].map(to8))?;
     png("model.png", &|k| cart.model.rgb[k].map(|c| c as u8))?;
-    png("rust_hdl.png", &|k| cart.hdl.rgb[k].map(|c| c as u8))?;
+    if let Some(hdl) = &cart.hdl {
+        png("rust_hdl.png", &|k| hdl.rgb[k].map(|c| c as u8))?;
+    }
     if let Some(vl) = &cart.vl {
         png("verilator.png", &|k| vl.image.rgb[k].map(|c| c as u8))?;
     }
@@ -157,7 +175,10 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     png("error_heat.png", &|k| render::heat(colour_err(cart.model.rgb[k], prep.ideal_rgb[k]), hmax))?;
     png("polar_ideal.png", &|k| pol.ideal_rgb[k].map(to8))?;
     png("polar_model.png", &|k| polar.model.rgb[k].map(|c| c as u8))?;
-    png("polar_rust_hdl.png", &|k| polar.hdl.rgb[k].map(|c| c as u8))?;
+    if let Some(hdl) = &polar.hdl {
+        png("polar_rust_hdl.png", &|k| hdl.rgb[k].map(|c| c as u8))?;
+    }
+    png("hemi_oct_model.png", &|k| hemi.model.rgb[k].map(|c| c as u8))?;
     if let Some(vl) = &polar.vl {
         png("polar_verilator.png", &|k| vl.image.rgb[k].map(|c| c as u8))?;
     }
@@ -181,6 +202,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     };
     let vdir = out.join("verilog");
     synth::export::<rtl::cart_pipeline::CartPipeline>().write(&vdir)?;
+    synth::export::<rtl::cart_pipeline::CartPipelineHemiOct>().write(&vdir)?;
     match scale {
         Scale::Seed => synth::export::<rtl::polar_pipeline::PolarPipelineSeed>().write(&vdir)?,
         Scale::Dc255 => synth::export::<rtl::polar_pipeline::PolarPipelineDc>().write(&vdir)?,
@@ -193,6 +215,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         let (hd, ps) = (&hdir, &parts);
         let jobs: Vec<crate::hardware::Job> = vec![
             Box::new(move |say| crate::hardware::measure::<rtl::cart_pipeline::CartPipeline>(hd, ps, say)),
+            Box::new(move |say| crate::hardware::measure::<rtl::cart_pipeline::CartPipelineHemiOct>(hd, ps, say)),
             match scale {
                 Scale::Seed => Box::new(move |say| crate::hardware::measure::<rtl::polar_pipeline::PolarPipelineSeed>(hd, ps, say)),
                 Scale::Dc255 => Box::new(move |say| crate::hardware::measure::<rtl::polar_pipeline::PolarPipelineDc>(hd, ps, say)),
@@ -205,29 +228,34 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
 
     println!("scene: {size}x{size} quad, 128x128 height map, 4 vertex lights towards a point light");
     println!("  Cartesian: seed-encoded texels, bilinear, lights interpolated per pixel, gloss C = {}", scene.conc);
+    println!("  hemi-oct: the same, its normals hemi-octahedrally encoded, through cart_pipeline_hemi_oct");
     println!(
         "  polar ({}): S, R bilinear as numbers, one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
         scale.name(), pol.light.t.to_degrees(), pol.light.q, pol.light.k1, pol.light.k2, pol.light.k3, POLAR_PW as f64 / 4.0
     );
     println!();
-    println!("{:<34} {:>14} {:>14}", "pixels/s (mismatches vs model)", "Cartesian", "polar");
+    let cols = [&cart, &hemi, &polar];
+    let line = |label: &str, f: &dyn Fn(&Paths) -> String| {
+        let cells: String = cols.iter().map(|p| format!(" {:>14}", f(p))).collect();
+        println!("{label:<34}{cells}");
+    };
+    println!("{:<34} {:>14} {:>14} {:>14}", "pixels/s (mismatches vs model)", "Cartesian", "hemi-oct", "polar");
     let pps = |i: &Image, m: usize| format!("{:.0} ({m})", i.pixels_per_second());
-    println!("{:<34} {:>14.0} {:>14.0}", "f64 ideal (scene set-up included)", n as f64 / cart_ideal_s, n as f64 / polar_ideal_s);
-    println!("{:<34} {:>14} {:>14}", "bit-exact model", pps(&cart.model, 0), pps(&polar.model, 0));
-    println!("{:<34} {:>14} {:>14}", "rust-hdl (loop-driven)", pps(&cart.hdl, cart.mism_hdl), pps(&polar.hdl, polar.mism_hdl));
-    match (&cart.vl, &polar.vl) {
-        (Some(c), Some(p)) => {
-            println!("{:<34} {:>14} {:>14}", "Verilator, whole frame, 1 thread", pps(&c.single, cart.mism_vl), pps(&p.single, polar.mism_vl));
-            let label = format!("Verilator, whole frame, {} threads", c.threads);
-            println!("{label:<34} {:>14} {:>14}", pps(&c.image, cart.mism_vl), pps(&p.image, polar.mism_vl));
-            println!("{:<34} {:>14.0} {:>14.0}", "Verilator bare loop (cycles/s)", c.bare_cycles_per_second, p.bare_cycles_per_second);
-            let ratio = |r: &render::VerilatorRun| {
-                let slots = r.single.size * r.single.size;
-                format!("{:.2}", slots as f64 / r.single.seconds / r.bare_cycles_per_second)
-            };
-            println!("{:<34} {:>14} {:>14}", "  1 thread against the bare loop", ratio(c), ratio(p));
-        }
-        _ => println!("Verilator path skipped: {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", ")),
+    let ideal_s = [cart_ideal_s, hemi_ideal_s, polar_ideal_s];
+    println!("{:<34} {:>14.0} {:>14.0} {:>14.0}", "f64 ideal (scene set-up included)", n as f64 / ideal_s[0], n as f64 / ideal_s[1], n as f64 / ideal_s[2]);
+    line("bit-exact model", &|p| pps(&p.model, 0));
+    line("rust-hdl (loop-driven)", &|p| p.hdl.as_ref().map(|h| pps(h, p.mism_hdl)).unwrap_or("in the tests".into()));
+    if let Some(c) = &cart.vl {
+        line("Verilator, whole frame, 1 thread", &|p| p.vl.as_ref().map(|v| pps(&v.single, p.mism_vl)).unwrap_or_default());
+        line(&format!("Verilator, whole frame, {} threads", c.threads), &|p| p.vl.as_ref().map(|v| pps(&v.image, p.mism_vl)).unwrap_or_default());
+        line("Verilator bare loop (cycles/s)", &|p| p.vl.as_ref().map(|v| format!("{:.0}", v.bare_cycles_per_second)).unwrap_or_default());
+        line("  1 thread against the bare loop", &|p| {
+            p.vl.as_ref()
+                .map(|v| format!("{:.2}", (v.single.size * v.single.size) as f64 / v.single.seconds / v.bare_cycles_per_second))
+                .unwrap_or_default()
+        });
+    } else {
+        println!("Verilator path skipped: {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", "));
     }
     println!();
     if !no_pnr.is_empty() {
@@ -236,13 +264,16 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         println!("ECP5 figures skipped: {e}\n");
     }
     if let Some(hw) = &hw {
-        hardware_table(&["Cartesian", "polar"], hw);
+        hardware_table(&["Cartesian", "hemi-oct", "polar"], hw);
     }
     println!("{:<52} {:>9} {:>9}   {}", "error of the bit-exact models vs the scene's ideal", "mean", "max", "max at");
     let row = |name: &str, s: &ErrorStats| println!("{name:<52} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax);
     row("Cartesian shade, 8-bit LSB (P/4)", &c_shade);
     row("Cartesian blended colour, 8-bit LSB", &c_colour);
     row("Cartesian normal angle, degrees", &c_normal);
+    row("hemi-oct texels: shade, 8-bit LSB (P/4)", &h_shade);
+    row("hemi-oct texels: blended colour, 8-bit LSB", &h_colour);
+    row("hemi-oct texels: normal angle, degrees", &h_normal);
     row("polar shade, 8-bit LSB (α)", &p_shade);
     row("polar blended colour, 8-bit LSB", &p_colour);
     row("polar shade vs an ideal lit by the surface's light", &p_surf);
@@ -256,14 +287,14 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     row(&format!("    polar N·L, the light moved onto it: {}", low_p.light.moved), &low_pe);
     println!();
     let vl_png = if cart.vl.is_some() { " verilator," } else { "" };
-    println!("wrote {}: ideal, model, rust_hdl,{vl_png} shade_model, error_heat, polar_*, below_horizon_* .png;", out.display());
+    println!("wrote {}: ideal, model, rust_hdl,{vl_png} shade_model, error_heat, hemi_oct_model, polar_*, below_horizon_* .png;", out.display());
     println!("      cart_pipeline.vcd, polar_pipeline.vcd; verilog/{}", if synth { "; synth/" } else { "" });
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
-    let bad = cart.mism_hdl + cart.mism_vl + polar.mism_hdl + polar.mism_vl;
+    let bad = cols.iter().map(|p| p.mism_hdl + p.mism_vl).sum::<usize>();
     if bad != 0 {
         return Err(format!(
-            "the bit-exact paths disagree: Cartesian rust-hdl {} / Verilator {}, polar rust-hdl {} / Verilator {} pixels differ from the model",
-            cart.mism_hdl, cart.mism_vl, polar.mism_hdl, polar.mism_vl
+            "the bit-exact paths disagree: Cartesian rust-hdl {} / Verilator {}, hemi-oct Verilator {}, polar rust-hdl {} / Verilator {} pixels differ from the model",
+            cart.mism_hdl, cart.mism_vl, hemi.mism_vl, polar.mism_hdl, polar.mism_vl
         ));
     }
     Ok(())

@@ -39,24 +39,27 @@ pub fn measure<U: StreamUnit>(dir: &Path, parts: &[Part], say: &dyn Fn(String)) 
 pub type Job<'a> = Box<dyn FnOnce(&dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> + Send + 'a>;
 
 /// Run the jobs on two threads (the machine's two cores), each with its own progress line; results in job order.
+/// The jobs are taken from one queue in order, each by whichever thread is free: give the longest first.
 pub fn run_jobs(jobs: Vec<Job<'_>>) -> Result<Vec<Vec<(Part, Fit)>>, String> {
     let multi = MultiProgress::new();
     let n = jobs.len();
-    let mut queues: [Vec<(usize, Job<'_>)>; 2] = [Vec::new(), Vec::new()];
-    for (k, j) in jobs.into_iter().enumerate() {
-        queues[k % 2].push((k, j));
-    }
+    let queue = std::sync::Mutex::new(jobs.into_iter().enumerate().collect::<std::collections::VecDeque<_>>());
     let mut results: Vec<Option<Result<Vec<(Part, Fit)>, String>>> = (0..n).map(|_| None).collect();
     std::thread::scope(|s| {
-        let handles: Vec<_> = queues
-            .into_iter()
-            .map(|q| {
+        let handles: Vec<_> = (0..2)
+            .map(|_| {
                 let bar = multi.add(ProgressBar::new_spinner());
                 bar.enable_steady_tick(std::time::Duration::from_millis(200));
+                let queue = &queue;
                 s.spawn(move || {
                     let t = std::time::Instant::now();
                     let say = |m: String| bar.set_message(format!("{m} [{:.0} s]", t.elapsed().as_secs_f64()));
-                    let out: Vec<_> = q.into_iter().map(|(k, job)| (k, job(&say))).collect();
+                    let mut out = Vec::new();
+                    loop {
+                        let next = queue.lock().unwrap_or_else(|e| e.into_inner()).pop_front();
+                        let Some((k, job)) = next else { break };
+                        out.push((k, job(&say)));
+                    }
                     bar.finish_and_clear();
                     out
                 })

@@ -136,6 +136,10 @@ pub fn sincos_sizes() -> Vec<sincos::SizeRow> {
     sincos::LUT_SIZES.iter().map(|&(tb, w)| sincos::size_error(tb, w)).collect()
 }
 
+/// How many random hemisphere directions `bumprtl accuracy` draws per encoder, and the seed of their stream.
+pub const DIRECTIONS: usize = 1_000_000;
+pub const ENCODER_SEED: u64 = 2;
+
 /// Encode then decode `n` random hemisphere directions with each encoder: degrees against the original.
 pub fn encoders(n: usize, seed: u64) -> Vec<Row> {
     let mut rows = vec![];

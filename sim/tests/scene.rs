@@ -1,4 +1,4 @@
-//! The demo scene at a small size: both pipelines bit-identical across model, rust-hdl and Verilator, and the
+//! The demo scene at a small size: every pipeline bit-identical across model, rust-hdl and Verilator, and the
 //! seed's polar shortcomings shown, not hidden (these are the demo's claims; a change that hid one fails here).
 use vectors::polar_encode::Scale;
 use vectors::scene::Scene;
@@ -17,17 +17,19 @@ fn agree<U: rtl::StreamUnit>(m: &vectors::UnitModel, inputs: &[Vec<i64>]) {
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(model.p, hdl.p, "{}: rust-hdl", m.name);
     assert_eq!(model.rgb, hdl.rgb, "{}: rust-hdl", m.name);
-    // the frame on one process and split across two
-    for (how, img) in [("one process", &vl.single), ("two processes", &vl.image)] {
+    // the frame on one model and split across two threads
+    for (how, img) in [("one thread", &vl.single), ("two threads", &vl.image)] {
         assert_eq!(model.p, img.p, "{}: Verilator, {how}", m.name);
         assert_eq!(model.rgb, img.rgb, "{}: Verilator, {how}", m.name);
     }
 }
 
 #[test]
-fn both_pipelines_render_bit_identically_in_the_three_paths() {
+fn every_pipeline_renders_bit_identically_in_the_three_paths() {
     let s = scene();
     agree::<rtl::cart_pipeline::CartPipeline>(&vectors::cart_pipeline::MODEL, &s.prepare().inputs);
+    let hemi = Scene { encoder: vectors::cart_encode::Encoder::HemiOct, ..s.clone() };
+    agree::<rtl::cart_pipeline::CartPipelineHemiOct>(&vectors::cart_pipeline::MODEL_HEMI_OCT, &hemi.prepare().inputs);
     agree::<rtl::polar_pipeline::PolarPipelineSeed>(&vectors::polar_pipeline::MODEL, &s.prepare_polar(Scale::Seed, 16, 1.0).inputs);
     agree::<rtl::polar_pipeline::PolarPipelineDc>(&vectors::polar_pipeline::MODEL_DC, &s.prepare_polar(Scale::Dc255, 16, 1.0).inputs);
 }
