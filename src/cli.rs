@@ -98,33 +98,27 @@ impl From<PolarScale> for vectors::polar_encode::Scale {
     }
 }
 
-/// Run `$body` with `U` bound to the rtl block of the unit called `$name`.
-macro_rules! with_unit {
-    ($name:expr, $u:ident => $body:expr) => {
-        match $name {
-            "cart_decode" => { type $u = rtl::cart_decode::CartDecode; $body }
-            "cart_decode_hemi_oct" => { type $u = rtl::cart_decode_hemi_oct::CartDecodeHemiOct; $body }
-            "bilinear" => { type $u = rtl::bilinear::Bilinear; $body }
-            "light_iter" => { type $u = rtl::light_iter::LightIter; $body }
-            "normalise" => { type $u = rtl::normalise::Normalise; $body }
-            "dot3" => { type $u = rtl::dot3::Dot3; $body }
-            "gloss" => { type $u = rtl::gloss::Gloss; $body }
-            "blend" => { type $u = rtl::blend::Blend; $body }
-            "cart_pipeline" => { type $u = rtl::cart_pipeline::CartPipeline; $body }
-            "cart_pipeline_hemi_oct" => { type $u = rtl::cart_pipeline::CartPipelineHemiOct; $body }
-            "sincos" => { type $u = rtl::sincos::SinCosUnit; $body }
-            "cos_sign" => { type $u = rtl::cos_sign::CosSignUnit; $body }
-            "polar_shade" => { type $u = rtl::polar_shade::PolarShade<false>; $body }
-            "power" => { type $u = rtl::power::Power; $body }
-            "polar_pipeline" => { type $u = rtl::polar_pipeline::PolarPipelineSeed; $body }
-            "polar_pipeline_dc" => { type $u = rtl::polar_pipeline::PolarPipelineDc; $body }
-            other => Err(format!("`{other}` has no rtl block (cart_encode and polar_encode are software only)")),
+/// Defines `with_unit!(name, U => body)`: run `body` with `U` bound to the rtl block of the unit called `name`,
+/// for every unit of `vectors::unit_table!` (the `$` passed through lets this macro write one of its own).
+macro_rules! define_with_unit {
+    ([$d:tt] rtl { $($name:ident: $model:expr, $block:ty, [$($waiver:tt)*];)* } software { $($soft:ident),* }) => {
+        macro_rules! with_unit {
+            ($d unit:expr, $d u:ident => $d body:expr) => {
+                match $d unit {
+                    $(stringify!($name) => {
+                        type $d u = $block;
+                        $d body
+                    })*
+                    other => Err(format!("`{other}` has no rtl block")),
+                }
+            };
         }
     };
 }
+vectors::unit_table!(define_with_unit, $);
 
 pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
-    if name == "cart_encode" || name == "polar_encode" {
+    if vectors::unit::SOFTWARE_ONLY.contains(&name) {
         return Err(format!("`{name}` is software only (no rtl block, no vectors): its errors are in `bumprtl accuracy`"));
     }
     vectors::unit::find(name).ok_or_else(|| {

@@ -3,11 +3,11 @@
 use vectors::stats::ErrorStats;
 
 fn stat_line(unit: &str, metric: &str, s: &ErrorStats) {
-    println!("{unit:<13} {metric:<52} {:>9.4} {:>9.4}   {}", s.mean(), s.max, s.argmax);
+    println!("{unit:<20} {metric:<52} {:>9.4} {:>9.4}   {}", s.mean(), s.max, s.argmax);
 }
 
 pub fn accuracy(directions: usize, samples: usize) {
-    println!("{:<13} {:<52} {:>9} {:>9}   {}", "unit", "error (exact against ideal)", "mean", "max", "max at");
+    println!("{:<20} {:<52} {:>9} {:>9}   {}", "unit", "error (exact against ideal)", "mean", "max", "max at");
     for r in sim::accuracy::units(samples, 1) {
         stat_line(&r.unit, &r.metric, &r.stats);
     }

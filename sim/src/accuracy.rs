@@ -34,6 +34,15 @@ pub fn units(samples: usize, seed: u64) -> Vec<Row> {
     }
     rows.push(row("cart_decode", "degrees, seed decode (L1 = 255), all texels", s));
     rows.push(row("cart_decode", "degrees, consistent decode (L1 = 254)", c));
+    // cart_decode_hemi_oct: every texel, angle against what it means (the decode is exact: this is a check)
+    let mut h = ErrorStats::default();
+    for u in 0..=255u8 {
+        for v in 0..=255u8 {
+            let b = vectors::cart_decode_hemi_oct::exact(u, v).map(|c| c as f64);
+            h.add(angle_deg(b, vectors::cart_decode_hemi_oct::ideal(u, v)), || format!("texel ({u}, {v})"));
+        }
+    }
+    rows.push(row("cart_decode_hemi_oct", "degrees, all texels", h));
     // gloss: every (C, X)
     let mut s = ErrorStats::default();
     for cc in 0..256 {

@@ -3,42 +3,50 @@
 
 use std::path::Path;
 
-/// rust-hdl's code-generation habits, each with why it is rust-hdl's and harmless. A warning is waived only when
-/// the Verilog line it points at shows the habit; anything else is the design's and fails the lint.
-pub const WAIVERS: &[(&str, &str)] = &[
-    ("WIDTH/literal", "rust-hdl writes every literal as a 32-bit constant (`32'h3ff - x`); each signal still wraps \
-        at its own width on assignment, the rust-hdl semantics the co-simulation checks bit for bit"),
-    ("WIDTH/bit_cast", "rust-hdl exports bit_cast as `((x) & N'hmask)`, a zero-extension that Verilog's own \
-        widening would do anyway"),
-    ("UNUSEDSIGNAL/slice", "a named intermediate whose dropped bits are unused: rust-hdl can slice only named \
-        signals, so a shift (`get_bits`) or a 16×16→32 product (its only multiply) leaves bits unread by design"),
-    ("DECLFILENAME/dff", "rust-hdl writes every DFF as its own module (`unit$stage`) in the unit's one file"),
+/// One of rust-hdl's code-generation habits: its name, why it is rust-hdl's and harmless, and the test that
+/// recognises it from the warning's code, its message and the Verilog line it points at.
+pub struct Habit {
+    pub name: &'static str,
+    pub why: &'static str,
+    matches: fn(code: &str, msg: &str, src: &str) -> bool,
+}
+
+/// rust-hdl's habits. A warning is waived only when the Verilog line it points at shows the habit; anything else is
+/// the design's, and fails the lint unless the unit's own table entry (`vectors::unit_table!`) waives that signal.
+pub const HABITS: &[Habit] = &[
+    Habit {
+        name: "WIDTH/literal",
+        why: "rust-hdl writes every literal as a 32-bit constant (`32'h3ff - x`); each signal still wraps at its own \
+            width on assignment, the rust-hdl semantics the co-simulation checks bit for bit",
+        matches: |code, _, src| code == "WIDTH" && src.contains("32'h"),
+    },
+    Habit {
+        name: "WIDTH/bit_cast",
+        why: "rust-hdl exports bit_cast as `((x) & N'hmask)`, a zero-extension that Verilog's own widening would do \
+            anyway",
+        matches: |code, _, src| code == "WIDTH" && src.contains(") & ") && src.contains("'h"),
+    },
+    Habit {
+        name: "UNUSEDSIGNAL/slice",
+        why: "a named intermediate whose dropped bits are unused: rust-hdl can slice only named signals, so a shift \
+            (`get_bits`) or a 16×16→32 product (its only multiply) leaves bits unread by design",
+        matches: |code, msg, _| code == "UNUSEDSIGNAL" && msg.contains("Bits of signal are not used"),
+    },
+    Habit {
+        name: "DECLFILENAME/dff",
+        why: "rust-hdl writes every DFF as its own module (`unit$stage`) in the unit's one file",
+        matches: |code, msg, _| code == "DECLFILENAME" && msg.contains("MODULE name:") && msg.contains('$'),
+    },
 ];
 
-/// The design's own unused signals, each named exactly, with its reason.
-pub const DESIGN_WAIVERS: &[(&str, &str)] = &[
-    ("'filter$out_b'", "the Cartesian path filters TexelX and TexelZ on red and green; blue and alpha are the same \
-        bilinear unit's other channels, tied to 0 and removed by synthesis"),
-    ("'filter$out_a'", "as above"),
-    ("'light$valid_out'", "the light path runs in lockstep with the bump path; the bump path's valid is used"),
-    ("'light_norm$valid_out'", "as above"),
-    ("'shader$sum'", "polar_shade's S11 before the clamp is an output for tests and waveforms; the polar pipeline \
-        uses the clamped shade"),
-];
-
-fn classify(code: &str, msg: &str, src: &str) -> Option<&'static str> {
+/// What waives a warning: a habit of rust-hdl's, or the unit's own waiver of an unused signal.
+fn classify(code: &str, msg: &str, src: &str, design: &[(&'static str, &'static str)]) -> Option<&'static str> {
     if code == "UNUSEDSIGNAL" {
-        if let Some((name, _)) = DESIGN_WAIVERS.iter().find(|(n, _)| msg.ends_with(n)) {
-            return Some(name);
+        if let Some((sig, _)) = design.iter().find(|(sig, _)| msg.ends_with(&format!("'{sig}'"))) {
+            return Some(sig);
         }
     }
-    match code {
-        "WIDTH" if src.contains("32'h") => Some(WAIVERS[0].0),
-        "WIDTH" if src.contains(") & ") && src.contains("'h") => Some(WAIVERS[1].0),
-        "UNUSEDSIGNAL" if msg.contains("Bits of signal are not used") => Some(WAIVERS[2].0),
-        "DECLFILENAME" if msg.contains("MODULE name:") && msg.contains('$') => Some(WAIVERS[3].0),
-        _ => None,
-    }
+    HABITS.iter().find(|h| (h.matches)(code, msg, src)).map(|h| h.name)
 }
 
 #[derive(Debug, Default)]
@@ -47,7 +55,8 @@ pub struct LintReport {
     pub design: Vec<String>,
 }
 
-pub fn lint(dir: &Path, file: &Path, module: &str) -> Result<LintReport, String> {
+/// Lint the unit `module` in `file`; `design` is the unit's own waivers (signal, reason).
+pub fn lint(dir: &Path, file: &Path, module: &str, design: &[(&'static str, &'static str)]) -> Result<LintReport, String> {
     let f = file.to_str().ok_or("non-UTF-8 path")?;
     let out = std::process::Command::new("verilator")
         .args(["--lint-only", "-Wall", "--top-module", module, f])
@@ -66,7 +75,7 @@ pub fn lint(dir: &Path, file: &Path, module: &str) -> Result<LintReport, String>
         // %Warning-CODE: file:LINE:COL: message
         let lineno: usize = line.split(':').nth(2).and_then(|x| x.trim().parse().ok()).unwrap_or(0);
         let src = lineno.checked_sub(1).and_then(|k| lines.get(k)).copied().unwrap_or("");
-        match classify(&code, line, src) {
+        match classify(&code, line, src, design) {
             Some(habit) => r.waived.push((habit.to_string(), line.to_string())),
             None => r.design.push(line.to_string()),
         }

@@ -150,14 +150,14 @@ pub fn lint<U: StreamUnit>() -> Vec<String> {
     let dir = work_dir("lint", U::NAME);
     let v = synth::export::<U>();
     let f = v.write(&dir).unwrap_or_else(|e| panic!("{e}"));
-    synth::lint::lint(&dir, &f, U::NAME).unwrap_or_else(|e| panic!("{e}")).design
+    synth::lint::lint(&dir, &f, U::NAME, vectors::unit::lint_waivers(U::NAME)).unwrap_or_else(|e| panic!("{e}")).design
 }
 
 /// The standard tests every unit gets: golden vectors, three-way identity, bubbles, lint.
 #[macro_export]
 macro_rules! unit_tests {
     ($unit:ident, $block:ty, $model:expr) => {
-        mod standard {
+        mod $unit {
             use super::*;
             use synth::cosim::Simulator;
             use $crate::{Bubbles, assert_ports_agree, external, golden, lint, rust_hdl};

@@ -48,25 +48,75 @@ impl UnitModel {
     }
 }
 
-/// Every unit with an rtl block, by name.
-pub const UNITS: &[&UnitModel] = &[
-    &crate::cart_decode::MODEL,
-    &crate::cart_decode_hemi_oct::MODEL,
-    &crate::bilinear::MODEL,
-    &crate::light_iter::MODEL,
-    &crate::normalise::MODEL,
-    &crate::dot3::MODEL,
-    &crate::gloss::MODEL,
-    &crate::blend::MODEL,
-    &crate::cart_pipeline::MODEL,
-    &crate::cart_pipeline::MODEL_HEMI_OCT,
-    &crate::sincos::MODEL,
-    &crate::cos_sign::MODEL,
-    &crate::polar_shade::MODEL,
-    &crate::power::MODEL,
-    &crate::polar_pipeline::MODEL,
-    &crate::polar_pipeline::MODEL_DC,
-];
+/// Every unit, once. Each hardware unit gives its name, its model, its rtl block (a path into the `rtl` crate: this
+/// crate never expands it, only the crates that depend on `rtl` do) and the design's own lint waivers, each a
+/// signal the Verilog leaves unused on purpose with the reason; the software-only units follow. Everything that
+/// lists units is made from this table by a callback macro: `unit_table!(callback)` expands to
+/// `callback! { [extra] rtl { name: model, block, [waivers]; ... } software { name, ... } }`, where `extra` is
+/// whatever followed the callback's name (a `$` to let the callback define a macro of its own, say).
+#[macro_export]
+macro_rules! unit_table {
+    ($then:ident $(, $extra:tt)*) => {
+        $then! { [$($extra)*]
+            rtl {
+                cart_decode: $crate::cart_decode::MODEL, rtl::cart_decode::CartDecode, [];
+                cart_decode_hemi_oct: $crate::cart_decode_hemi_oct::MODEL, rtl::cart_decode_hemi_oct::CartDecodeHemiOct, [];
+                bilinear: $crate::bilinear::MODEL, rtl::bilinear::Bilinear, [];
+                light_iter: $crate::light_iter::MODEL, rtl::light_iter::LightIter, [];
+                normalise: $crate::normalise::MODEL, rtl::normalise::Normalise, [];
+                dot3: $crate::dot3::MODEL, rtl::dot3::Dot3, [];
+                gloss: $crate::gloss::MODEL, rtl::gloss::Gloss, [];
+                blend: $crate::blend::MODEL, rtl::blend::Blend, [];
+                cart_pipeline: $crate::cart_pipeline::MODEL, rtl::cart_pipeline::CartPipeline, [
+                    ("filter$out_b", "the texel's two components ride the bilinear unit's red and green; blue and alpha \
+                        are the same unit's other channels, tied to 0 and removed by synthesis"),
+                    ("filter$out_a", "as filter$out_b"),
+                    ("light$valid_out", "the light path runs in lockstep with the bump path, whose valid is used"),
+                    ("light_norm$valid_out", "as light$valid_out"),
+                ];
+                cart_pipeline_hemi_oct: $crate::cart_pipeline::MODEL_HEMI_OCT, rtl::cart_pipeline::CartPipelineHemiOct, [
+                    ("filter$out_b", "as in cart_pipeline: the texel rides red and green"),
+                    ("filter$out_a", "as filter$out_b"),
+                    ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
+                    ("light_norm$valid_out", "as light$valid_out"),
+                ];
+                sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
+                cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
+                polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];
+                power: $crate::power::MODEL, rtl::power::Power, [];
+                polar_pipeline: $crate::polar_pipeline::MODEL, rtl::polar_pipeline::PolarPipelineSeed, [
+                    ("shader$sum", "polar_shade's S11 before the clamp is an output for tests and waveforms; the \
+                        pipeline uses the clamped shade"),
+                ];
+                polar_pipeline_dc: $crate::polar_pipeline::MODEL_DC, rtl::polar_pipeline::PolarPipelineDc, [
+                    ("shader$sum", "as in polar_pipeline"),
+                ];
+            }
+            software { cart_encode, polar_encode }
+        }
+    };
+}
+
+macro_rules! models {
+    ([] rtl { $($name:ident: $model:expr, $block:ty, [$(($sig:literal, $why:literal)),* $(,)?];)* }
+        software { $($soft:ident),* }) => {
+        /// Every unit with an rtl block, by name, in the table's order.
+        pub const UNITS: &[&UnitModel] = &[$(&$model),*];
+
+        /// The units that are software only (no rtl block, no vectors): their errors are in `bumprtl accuracy`.
+        pub const SOFTWARE_ONLY: &[&str] = &[$(stringify!($soft)),*];
+
+        /// The design's own lint waivers of a unit: (signal, reason).
+        pub fn lint_waivers(name: &str) -> &'static [(&'static str, &'static str)] {
+            match name {
+                $(stringify!($name) => &[$(($sig, $why)),*],)*
+                _ => &[],
+            }
+        }
+    };
+}
+
+unit_table!(models);
 
 /// A vector's values as the bit patterns its ports carry (two's complement for signed ports), in port order.
 pub fn to_patterns(values: &[i64], ports: &[Port]) -> Vec<u64> {
