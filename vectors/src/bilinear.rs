@@ -5,18 +5,20 @@
 //! `r = round_half_up((a·(2^F − v) + b·v), 2F)` (U8). The rtl computes the same value as `a·2^F + (b − a)·v`.
 
 use crate::fixed::round_half_up;
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
 pub const F: u32 = 8;
 
-pub const INPUTS: &[Port] = &[
-    Port::u("t00_r", 8), Port::u("t00_g", 8), Port::u("t00_b", 8), Port::u("t00_a", 8),
-    Port::u("t10_r", 8), Port::u("t10_g", 8), Port::u("t10_b", 8), Port::u("t10_a", 8),
-    Port::u("t01_r", 8), Port::u("t01_g", 8), Port::u("t01_b", 8), Port::u("t01_a", 8),
-    Port::u("t11_r", 8), Port::u("t11_g", 8), Port::u("t11_b", 8), Port::u("t11_a", 8),
-    Port::u("ublend", 8), Port::u("vblend", 8),
-];
-pub const OUTPUTS: &[Port] = &[Port::u("out_r", 8), Port::u("out_g", 8), Port::u("out_b", 8), Port::u("out_a", 8)];
+crate::ports! {
+    inputs: [
+        t00_r: u 8, t00_g: u 8, t00_b: u 8, t00_a: u 8, t10_r: u 8, t10_g: u 8, t10_b: u 8, t10_a: u 8, t01_r: u 8,
+        t01_g: u 8, t01_b: u 8, t01_a: u 8, t11_r: u 8, t11_g: u 8, t11_b: u 8, t11_a: u 8, ublend: u 8,
+        vblend: u 8,
+    ],
+    outputs: [
+        out_r: u 8, out_g: u 8, out_b: u 8, out_a: u 8,
+    ],
+}
 
 /// One channel with `f` blend-factor bits; `u`, `v` in 0..2^f (weight of the second texel is u/2^f).
 pub fn exact_channel(t00: i64, t10: i64, t01: i64, t11: i64, u: i64, v: i64, f: u32) -> i64 {

@@ -5,14 +5,16 @@
 //! The division: `t = num + 128`, `out = (t + (t >> 8)) >> 8`, which equals round-half-up(num/255) for every
 //! num ≤ 255·255 (checked exhaustively below).
 
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
-pub const INPUTS: &[Port] = &[
-    Port::u("alpha", 8), Port::u("mode", 1),
-    Port::u("src_r", 8), Port::u("src_g", 8), Port::u("src_b", 8),
-    Port::u("dst_r", 8), Port::u("dst_g", 8), Port::u("dst_b", 8),
-];
-pub const OUTPUTS: &[Port] = &[Port::u("out_r", 8), Port::u("out_g", 8), Port::u("out_b", 8)];
+crate::ports! {
+    inputs: [
+        alpha: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+    ],
+    outputs: [
+        out_r: u 8, out_g: u 8, out_b: u 8,
+    ],
+}
 
 /// num/255 rounded half up, by shifts and adds only (U16 in, U8 out).
 pub fn div255(num: i64) -> i64 {

@@ -8,10 +8,16 @@
 //!    `|BumpX| = 127 + ax − az`, `|BumpZ| = 127 + az − ax`, `BumpY = 1`. The result is a legal hemisphere vector on
 //!    the encodable boundary (|x| + |z| = 254, y = 1, the same as a legal texel on the diamond's edge).
 
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
-pub const INPUTS: &[Port] = &[Port::u("texel_x", 8), Port::u("texel_z", 8)];
-pub const OUTPUTS: &[Port] = &[Port::s("bump_x", 9), Port::u("bump_y", 8), Port::s("bump_z", 9)];
+crate::ports! {
+    inputs: [
+        texel_x: u 8, texel_z: u 8,
+    ],
+    outputs: [
+        bump_x: s 9, bump_y: u 8, bump_z: s 9,
+    ],
+}
 
 /// Decoded bump vector, Q8.0 components: x, z in INT9 (−254..254), y in UINT8 (1..255).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

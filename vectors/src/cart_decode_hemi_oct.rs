@@ -6,10 +6,16 @@
 //! (UINT8, 0..255). Every one of the 65,536 texels is a legal hemisphere vector: |BumpX| + |BumpZ| =
 //! max(|2U − 255|, |2V − 255|) ≤ 255, so no guard is needed and none is built.
 
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
-pub const INPUTS: &[Port] = &[Port::u("texel_u", 8), Port::u("texel_v", 8)];
-pub const OUTPUTS: &[Port] = &[Port::s("bump_x", 9), Port::u("bump_y", 8), Port::s("bump_z", 9)];
+crate::ports! {
+    inputs: [
+        texel_u: u 8, texel_v: u 8,
+    ],
+    outputs: [
+        bump_x: s 9, bump_y: u 8, bump_z: s 9,
+    ],
+}
 
 /// The decode as the rtl does it: [BumpX, BumpY, BumpZ], exact (no rounding anywhere).
 pub fn exact(u: u8, v: u8) -> [i64; 3] {

@@ -5,22 +5,20 @@
 //! `cart_pipeline_hemi_oct` is the same pipeline with `cart_decode_hemi_oct` in place of `cart_decode`: its texel
 //! ports carry (U, V) where the seed's carry (TexelX, TexelZ).
 
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 use crate::{bilinear, blend, cart_decode, cart_decode_hemi_oct, dot3, gloss, light_iter, normalise};
 
-pub const INPUTS: &[Port] = &[
-    Port::u("t00_x", 8), Port::u("t00_z", 8), Port::u("t10_x", 8), Port::u("t10_z", 8),
-    Port::u("t01_x", 8), Port::u("t01_z", 8), Port::u("t11_x", 8), Port::u("t11_z", 8),
-    Port::u("ublend", 8), Port::u("vblend", 8),
-    Port::s("l0_x", 8), Port::s("l0_y", 8), Port::s("l0_z", 8),
-    Port::s("l1_x", 8), Port::s("l1_y", 8), Port::s("l1_z", 8),
-    Port::s("l2_x", 8), Port::s("l2_y", 8), Port::s("l2_z", 8),
-    Port::u("w1", 9), Port::u("w2", 9),
-    Port::u("conc", 8), Port::u("mode", 1),
-    Port::u("src_r", 8), Port::u("src_g", 8), Port::u("src_b", 8),
-    Port::u("dst_r", 8), Port::u("dst_g", 8), Port::u("dst_b", 8),
-];
-pub const OUTPUTS: &[Port] = &[Port::u("p", 10), Port::u("out_r", 8), Port::u("out_g", 8), Port::u("out_b", 8)];
+crate::ports! {
+    inputs: [
+        t00_x: u 8, t00_z: u 8, t10_x: u 8, t10_z: u 8, t01_x: u 8, t01_z: u 8, t11_x: u 8, t11_z: u 8,
+        ublend: u 8, vblend: u 8, l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8,
+        l2_y: s 8, l2_z: s 8, w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+        dst_r: u 8, dst_g: u 8, dst_b: u 8,
+    ],
+    outputs: [
+        p: u 10, out_r: u 8, out_g: u 8, out_b: u 8,
+    ],
+}
 
 /// Every intermediate value, for waveforms and for reports.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -66,8 +64,27 @@ pub fn exact_trace(i: &[i64]) -> Trace {
     exact_trace_with(Decode::Seed, i)
 }
 
+/// The four texels' inputs, in the bilinear unit's order (t00, t10, t01, t11), each (x or u, z or v).
+pub const TEXELS: [[usize; 2]; 4] = [
+    [input::t00_x, input::t00_z],
+    [input::t10_x, input::t10_z],
+    [input::t01_x, input::t01_z],
+    [input::t11_x, input::t11_z],
+];
+/// The three vertex lights' inputs, (x, y, z) each.
+pub const LIGHTS: [[usize; 3]; 3] = [
+    [input::l0_x, input::l0_y, input::l0_z],
+    [input::l1_x, input::l1_y, input::l1_z],
+    [input::l2_x, input::l2_y, input::l2_z],
+];
+pub const SRC: [usize; 3] = [input::src_r, input::src_g, input::src_b];
+pub const DST: [usize; 3] = [input::dst_r, input::dst_g, input::dst_b];
+
 pub fn exact_trace_with(decode: Decode, i: &[i64]) -> Trace {
-    let f = |c: usize| bilinear::exact_channel(i[c], i[2 + c], i[4 + c], i[6 + c], i[8], i[9], bilinear::F);
+    let f = |c: usize| {
+        let [t00, t10, t01, t11] = TEXELS.map(|t| i[t[c]]);
+        bilinear::exact_channel(t00, t10, t01, t11, i[input::ublend], i[input::vblend], bilinear::F)
+    };
     let texel = [f(0), f(1)];
     let bump = match decode {
         Decode::Seed => {
@@ -77,13 +94,15 @@ pub fn exact_trace_with(decode: Decode, i: &[i64]) -> Trace {
         Decode::HemiOct => cart_decode_hemi_oct::exact(texel[0] as u8, texel[1] as u8),
     };
     let normal = normalise::exact(bump);
-    let light: [i64; 3] =
-        std::array::from_fn(|c| light_iter::exact_component(i[10 + c], i[13 + c], i[16 + c], i[19], i[20]));
+    let light: [i64; 3] = std::array::from_fn(|c| {
+        let [l0, l1, l2] = LIGHTS.map(|l| i[l[c]]);
+        light_iter::exact_component(l0, l1, l2, i[input::w1], i[input::w2])
+    });
     let light_n = normalise::exact(light);
     let x = dot3::exact(normal, light_n);
-    let p = gloss::exact(i[21], x);
-    let alpha = p >> 2; // U10 → U8, truncate
-    let out = std::array::from_fn(|c| blend::exact_channel(alpha, i[22], i[23 + c], i[26 + c]));
+    let p = gloss::exact(i[input::conc], x);
+    let alpha = crate::fixed::truncate(p, 2); // U10 → U8, the two fraction bits dropped (floor)
+    let out = std::array::from_fn(|c| blend::exact_channel(alpha, i[input::mode], i[SRC[c]], i[DST[c]]));
     Trace { texel, bump, normal, light, light_n, x, p, alpha, out }
 }
 
@@ -97,22 +116,31 @@ fn exact_ports_hemi_oct(i: &[i64]) -> Vec<i64> {
     vec![t.p, t.out[0], t.out[1], t.out[2]]
 }
 
+/// Every port drawn over its range, except the barycentric weights, which come from `light_iter`'s generator so
+/// that they stay inside the triangle (w1 + w2 ≤ 256).
 fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    let mut v: Vec<i64> = INPUTS[..19].iter().map(|p| crate::unit::draw(rng, p)).collect();
+    let mut v: Vec<i64> = INPUTS[..input::w1].iter().map(|p| crate::unit::draw(rng, p)).collect();
     let w = (light_iter::MODEL.random)(rng);
-    v.extend_from_slice(&w[9..11]);
-    v.extend(INPUTS[21..].iter().map(|p| crate::unit::draw(rng, p)));
+    v.extend_from_slice(&[w[light_iter::input::w1], w[light_iter::input::w2]]);
+    v.extend(INPUTS[input::w2 + 1..].iter().map(|p| crate::unit::draw(rng, p)));
     v
 }
 
 pub fn hard_cases() -> Vec<Vec<i64>> {
     let base = |tx: i64, tz: i64, l: [i64; 3], w: [i64; 2], c: i64| -> Vec<i64> {
-        let mut v = vec![tx, tz, tx, tz, tx, tz, tx, tz, 0, 0];
-        for _ in 0..3 {
-            v.extend_from_slice(&l);
+        let mut v = vec![0; INPUTS.len()];
+        for t in TEXELS {
+            (v[t[0]], v[t[1]]) = (tx, tz);
         }
-        v.extend_from_slice(&w);
-        v.extend_from_slice(&[c, 1, 200, 150, 100, 10, 20, 30]);
+        for k in LIGHTS {
+            for c in 0..3 {
+                v[k[c]] = l[c];
+            }
+        }
+        (v[input::w1], v[input::w2], v[input::conc], v[input::mode]) = (w[0], w[1], c, 1);
+        for c in 0..3 {
+            (v[SRC[c]], v[DST[c]]) = ([200, 150, 100][c], [10, 20, 30][c]);
+        }
         v
     };
     let mut v = vec![
@@ -124,7 +152,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     ];
     // opposite vertex lights interpolated through zero length
     let mut z = base(127, 127, [127, 0, 0], [128, 0], 0);
-    z[13] = -127;
+    z[input::l1_x] = -127;
     v.push(z);
     v
 }
@@ -135,12 +163,13 @@ pub fn hard_cases_hemi_oct() -> Vec<Vec<i64>> {
     let mut v = hard_cases();
     for (t, l) in [((0, 0), [-127, 0, 0]), ((255, 0), [0, 0, 127]), ((0, 0), [0, 127, 0]), ((255, 255), [0, -127, 0])] {
         let mut x = v[0].clone();
-        for k in 0..4 {
-            x[2 * k] = t.0;
-            x[2 * k + 1] = t.1;
+        for k in TEXELS {
+            (x[k[0]], x[k[1]]) = t;
         }
-        for k in 0..3 {
-            x[10 + 3 * k..13 + 3 * k].copy_from_slice(&l);
+        for k in LIGHTS {
+            for c in 0..3 {
+                x[k[c]] = l[c];
+            }
         }
         v.push(x);
     }

@@ -3,7 +3,7 @@
 //! from a 2^TB-entry table over the full turn addressed by d's top TB bits (truncation). The unit `cos_sign` is
 //! TB = 8, W = 8, the table the polar shade unit holds; other sizes go into the LUT-size table.
 
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 use std::f64::consts::TAU;
 
 pub const TABLE_BITS: u32 = 8;
@@ -11,8 +11,14 @@ pub const WIDTH: u32 = 8;
 /// The (table bits, width) pairs of the LUT-size table: 16, 64 and 256 entries of 8 and 12 bits.
 pub const LUT_SIZES: &[(u32, u32)] = &[(4, 8), (6, 8), (8, 8), (4, 12), (6, 12), (8, 12)];
 
-pub const INPUTS: &[Port] = &[Port::u("d", 8)];
-pub const OUTPUTS: &[Port] = &[Port::u("mag", WIDTH), Port::u("neg", 1)];
+crate::ports! {
+    inputs: [
+        d: u 8,
+    ],
+    outputs: [
+        mag: u WIDTH, neg: u 1,
+    ],
+}
 
 /// The table entry for d with a 2^tb-entry table of w-bit magnitudes: (|cos|, negative).
 pub fn exact_with(tb: u32, w: u32, d: i64) -> (i64, bool) {

@@ -3,13 +3,16 @@
 //! the bump gives 0; a dot of 1.0 (1024) reads as 1023, the seed's 1.0.
 
 use crate::fixed::{saturate, truncate};
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
-pub const INPUTS: &[Port] = &[
-    Port::s("n_x", 12), Port::s("n_y", 12), Port::s("n_z", 12),
-    Port::s("l_x", 12), Port::s("l_y", 12), Port::s("l_z", 12),
-];
-pub const OUTPUTS: &[Port] = &[Port::u("x", 10)];
+crate::ports! {
+    inputs: [
+        n_x: s 12, n_y: s 12, n_z: s 12, l_x: s 12, l_y: s 12, l_z: s 12,
+    ],
+    outputs: [
+        x: u 10,
+    ],
+}
 
 pub fn exact(n: [i64; 3], l: [i64; 3]) -> i64 {
     let d = n[0] * l[0] + n[1] * l[1] + n[2] * l[2]; // S25, Q2.20

@@ -4,10 +4,16 @@
 //! X, L, Q, P are 10-bit fractions (Uq0.10); C = 0 gives P = X.
 
 use crate::fixed::truncate;
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
-pub const INPUTS: &[Port] = &[Port::u("conc", 8), Port::u("x", 10)];
-pub const OUTPUTS: &[Port] = &[Port::u("p", 10)];
+crate::ports! {
+    inputs: [
+        conc: u 8, x: u 10,
+    ],
+    outputs: [
+        p: u 10,
+    ],
+}
 
 pub fn exact(c: i64, x: i64) -> i64 {
     let k = c + 8; // U9, Q6.3

@@ -6,15 +6,17 @@
 //! triangle; outside it the saturation keeps the S10 output defined).
 
 use crate::fixed::{saturate, signed_range, truncate};
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
-pub const INPUTS: &[Port] = &[
-    Port::s("l0_x", 8), Port::s("l0_y", 8), Port::s("l0_z", 8),
-    Port::s("l1_x", 8), Port::s("l1_y", 8), Port::s("l1_z", 8),
-    Port::s("l2_x", 8), Port::s("l2_y", 8), Port::s("l2_z", 8),
-    Port::u("w1", 9), Port::u("w2", 9),
-];
-pub const OUTPUTS: &[Port] = &[Port::s("light_x", 10), Port::s("light_y", 10), Port::s("light_z", 10)];
+crate::ports! {
+    inputs: [
+        l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8, w1: u 9,
+        w2: u 9,
+    ],
+    outputs: [
+        light_x: s 10, light_y: s 10, light_z: s 10,
+    ],
+}
 
 /// The seed's per-vertex quantisation of a unit light direction: `(int)(d·127)`, truncating toward zero.
 pub fn quantise_vertex(d: [f64; 3]) -> [i64; 3] {

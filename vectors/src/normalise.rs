@@ -12,15 +12,21 @@
 //! dot product, and the shade, are 0: no light direction, no light. Defined and tested.
 
 use crate::fixed::round_half_away;
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 
 pub const TABLE_BITS: u32 = 10;
 pub const NEWTON: u32 = 0;
 /// Fraction bits of the table entries (2^12/√m, m ∈ [1, 4) → 2049..4096, U13).
 pub const R_FRAC: u32 = 12;
 
-pub const INPUTS: &[Port] = &[Port::s("vec_x", 10), Port::s("vec_y", 10), Port::s("vec_z", 10)];
-pub const OUTPUTS: &[Port] = &[Port::s("norm_x", 12), Port::s("norm_y", 12), Port::s("norm_z", 12)];
+crate::ports! {
+    inputs: [
+        vec_x: s 10, vec_y: s 10, vec_z: s 10,
+    ],
+    outputs: [
+        norm_x: s 12, norm_y: s 12, norm_z: s 12,
+    ],
+}
 
 /// Table entry `idx` of a `t`-bit seed table: 2^12/√m at the midpoint of the bin (entries below 2^(t−2) unused, 0).
 pub fn table_entry(idx: u64, t: u32) -> u64 {

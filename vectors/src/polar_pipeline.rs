@@ -3,17 +3,18 @@
 //! Every stage is the unit of the same name; this file only wires them, as the rtl top does.
 
 use crate::polar_encode::Scale;
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 use crate::{blend, polar_shade, power};
 
-pub const INPUTS: &[Port] = &[
-    Port::u("s", 8), Port::u("r", 8), Port::u("q", 8),
-    Port::u("k1", 8), Port::u("k2", 8), Port::u("k3", 8), Port::u("pw", 8),
-    Port::u("mode", 1),
-    Port::u("src_r", 8), Port::u("src_g", 8), Port::u("src_b", 8),
-    Port::u("dst_r", 8), Port::u("dst_g", 8), Port::u("dst_b", 8),
-];
-pub const OUTPUTS: &[Port] = &[Port::u("alpha", 8), Port::u("out_r", 8), Port::u("out_g", 8), Port::u("out_b", 8)];
+crate::ports! {
+    inputs: [
+        s: u 8, r: u 8, q: u 8, k1: u 8, k2: u 8, k3: u 8, pw: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+        dst_r: u 8, dst_g: u 8, dst_b: u 8,
+    ],
+    outputs: [
+        alpha: u 8, out_r: u 8, out_g: u 8, out_b: u 8,
+    ],
+}
 
 /// The shade before the power unit, the alpha after it, and the blended colour.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -25,9 +26,11 @@ pub struct Trace {
 }
 
 pub fn exact_trace(sc: Scale, i: &[i64]) -> Trace {
-    let (sum, shade) = polar_shade::exact(sc, i[0], i[1], i[2], i[3], i[4], i[5]);
-    let alpha = power::exact(shade, i[6]);
-    let out = std::array::from_fn(|c| blend::exact_channel(alpha, i[7], i[8 + c], i[11 + c]));
+    let (sum, shade) = polar_shade::exact(sc, i[input::s], i[input::r], i[input::q], i[input::k1], i[input::k2], i[input::k3]);
+    let alpha = power::exact(shade, i[input::pw]);
+    let src = [input::src_r, input::src_g, input::src_b];
+    let dst = [input::dst_r, input::dst_g, input::dst_b];
+    let out = std::array::from_fn(|c| blend::exact_channel(alpha, i[input::mode], i[src[c]], i[dst[c]]));
     Trace { sum, shade, alpha, out }
 }
 

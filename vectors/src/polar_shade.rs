@@ -16,12 +16,13 @@ use crate::blend::div255;
 use crate::fixed::saturate;
 use crate::polar_encode::Scale;
 use crate::sincos::{cos_sign_table, elevation_table, TABLE_BITS, WIDTH};
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 use std::sync::OnceLock;
 
-pub const INPUTS: &[Port] =
-    &[Port::u("s", 8), Port::u("r", 8), Port::u("q", 8), Port::u("k1", 8), Port::u("k2", 8), Port::u("k3", 8)];
-pub const OUTPUTS: &[Port] = &[Port::s("sum", 11), Port::u("shade", 8)];
+crate::ports! {
+    inputs: [s: u 8, r: u 8, q: u 8, k1: u 8, k2: u 8, k3: u 8],
+    outputs: [sum: s 11, shade: u 8],
+}
 
 /// The two tables of one scale.
 pub struct Tables {

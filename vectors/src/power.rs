@@ -12,11 +12,17 @@
 //! - E(f) = round(255·2^(−f/256)·2^7) (U15, E(0) = 32,640).
 //! - y = (E(f) + 2^(n+6)) >> (n + 7), rounded to nearest; n ≥ 9 gives 0 (E < 2^15), so n saturates at 9.
 
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 use std::sync::OnceLock;
 
-pub const INPUTS: &[Port] = &[Port::u("x", 8), Port::u("pw", 8)];
-pub const OUTPUTS: &[Port] = &[Port::u("y", 8)];
+crate::ports! {
+    inputs: [
+        x: u 8, pw: u 8,
+    ],
+    outputs: [
+        y: u 8,
+    ],
+}
 
 /// L(x), entry 0 unused (0).
 pub fn log_table() -> &'static [i64] {

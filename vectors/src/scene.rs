@@ -144,23 +144,23 @@ impl Scene {
         let q: Vec<[i64; 3]> = corner.iter().map(|&d| light_iter::quantise_vertex(d)).collect();
         let mut p = Prepared { size: self.size, inputs: vec![], ideal_p: vec![], ideal_rgb: vec![], ideal_normal: vec![] };
         for px in self.pixels(&normals) {
-            let mut x = vec![];
-            for (i, j) in px.corners {
-                x.push(texels[j * t + i].0 as i64);
-                x.push(texels[j * t + i].1 as i64);
+            use cart_pipeline::input;
+            let mut x = vec![0; cart_pipeline::INPUTS.len()];
+            for (slot, (i, j)) in cart_pipeline::TEXELS.iter().zip(px.corners) {
+                (x[slot[0]], x[slot[1]]) = (texels[j * t + i].0 as i64, texels[j * t + i].1 as i64);
             }
-            x.push(px.ub);
-            x.push(px.vb);
-            for k in px.tri {
-                x.extend_from_slice(&q[k]);
+            (x[input::ublend], x[input::vblend]) = (px.ub, px.vb);
+            for (l, k) in cart_pipeline::LIGHTS.iter().zip(px.tri) {
+                for c in 0..3 {
+                    x[l[c]] = q[k][c];
+                }
             }
-            x.push((px.w1 * 256.0).round() as i64); // weights in 1/256, rounded
-            x.push((px.w2 * 256.0).round() as i64);
-            x.push(self.conc);
-            x.push(1);
-            x.extend_from_slice(&self.src);
-            x.extend_from_slice(&self.dst);
-            debug_assert_eq!(x.len(), cart_pipeline::INPUTS.len());
+            // weights in 1/256, rounded
+            (x[input::w1], x[input::w2]) = ((px.w1 * 256.0).round() as i64, (px.w2 * 256.0).round() as i64);
+            (x[input::conc], x[input::mode]) = (self.conc, 1);
+            for c in 0..3 {
+                (x[cart_pipeline::SRC[c]], x[cart_pipeline::DST[c]]) = (self.src[c], self.dst[c]);
+            }
             p.inputs.push(x);
             let (nrm, ld) = (px.normal, px.light);
             let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
@@ -194,10 +194,12 @@ impl Scene {
             let r = bilinear::exact_channel(c[0].1, c[1].1, c[2].1, c[3].1, px.ub, px.vb, bilinear::F);
             let (rmin, rmax) = c.iter().fold((255, 0), |(lo, hi), &(_, r)| (lo.min(r), hi.max(r)));
             p.straddles.push(rmax - rmin > 128);
-            let mut x = vec![s, r, light.q, light.k1, light.k2, light.k3, pw, 1];
-            x.extend_from_slice(&self.src);
-            x.extend_from_slice(&self.dst);
-            debug_assert_eq!(x.len(), polar_pipeline::INPUTS.len());
+            use polar_pipeline::input;
+            let mut x = vec![0; polar_pipeline::INPUTS.len()];
+            (x[input::s], x[input::r], x[input::q]) = (s, r, light.q);
+            (x[input::k1], x[input::k2], x[input::k3], x[input::pw], x[input::mode]) = (light.k1, light.k2, light.k3, pw, 1);
+            (x[input::src_r], x[input::src_g], x[input::src_b]) = (self.src[0], self.src[1], self.src[2]);
+            (x[input::dst_r], x[input::dst_g], x[input::dst_b]) = (self.dst[0], self.dst[1], self.dst[2]);
             p.inputs.push(x);
             let (nrm, ld) = (px.normal, px.light);
             let d = (1.0 - h) + h * (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]);

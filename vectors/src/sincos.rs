@@ -12,7 +12,7 @@
 //! table and the LUT-size table (`size_error`) shows what 64, 256 and 1024 entries buy.
 
 use crate::polar_encode::Scale;
-use crate::unit::{Port, UnitModel};
+use crate::unit::UnitModel;
 use std::f64::consts::FRAC_PI_2;
 
 /// Table bits and output width of the rtl units.
@@ -64,8 +64,14 @@ pub fn pack_cos_sign(e: (i64, bool), w: u32) -> u64 {
     (e.0 as u64) | ((e.1 as u64) << w)
 }
 
-pub const INPUTS: &[Port] = &[Port::u("angle", ANGLE_BITS)];
-pub const OUTPUTS: &[Port] = &[Port::u("sin", WIDTH), Port::u("cos", WIDTH)];
+crate::ports! {
+    inputs: [
+        angle: u ANGLE_BITS,
+    ],
+    outputs: [
+        sin: u WIDTH, cos: u WIDTH,
+    ],
+}
 
 /// The standalone unit: 10-bit angle → table entry at its top TB bits.
 pub fn exact_with(sc: Scale, tb: u32, w: u32, angle: i64) -> (i64, i64) {

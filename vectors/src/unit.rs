@@ -27,6 +27,31 @@ impl Port {
     }
 }
 
+/// Declares a unit's ports once, in order: `INPUTS` and `OUTPUTS` (`u` unsigned, `s` two's complement, and the
+/// width), and modules `input` and `output` holding each port's index by its own name, so that a vector is read
+/// as `v[input::conc]`, never by a number.
+#[macro_export]
+macro_rules! ports {
+    (inputs: [$($i:ident: $ik:ident $iw:expr),* $(,)?], outputs: [$($o:ident: $ok:ident $ow:expr),* $(,)?] $(,)?) => {
+        pub const INPUTS: &[$crate::unit::Port] = &[$($crate::unit::Port::$ik(stringify!($i), $iw)),*];
+        pub const OUTPUTS: &[$crate::unit::Port] = &[$($crate::unit::Port::$ok(stringify!($o), $ow)),*];
+        /// Each input port's index in an input vector.
+        #[allow(non_upper_case_globals, dead_code)]
+        pub mod input {
+            #[allow(non_camel_case_types)]
+            enum Index { $($i),* }
+            $(pub const $i: usize = Index::$i as usize;)*
+        }
+        /// Each output port's index in an output vector.
+        #[allow(non_upper_case_globals, dead_code)]
+        pub mod output {
+            #[allow(non_camel_case_types)]
+            enum Index { $($o),* }
+            $(pub const $o: usize = Index::$o as usize;)*
+        }
+    };
+}
+
 /// A streaming unit as the testbench sees it: inputs in, outputs out, one vector per clock.
 pub struct UnitModel {
     pub name: &'static str,
