@@ -66,6 +66,9 @@ enum Cmd {
         /// also cost every sin/cos table size with yosys (iCE40 LUT4 / FF / BRAM)
         #[arg(long)]
         lut_cost: bool,
+        /// working folder for yosys's files (with --lut-cost)
+        #[arg(long, default_value = "target/synth/lut-sizes")]
+        dir: PathBuf,
     },
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
@@ -224,9 +227,9 @@ pub fn main() -> Result<(), String> {
             })?;
             crate::report::synth_row(&r);
         }
-        Cmd::Accuracy { directions, samples, lut_cost } => {
+        Cmd::Accuracy { directions, samples, lut_cost, dir } => {
             crate::report::accuracy(directions, samples);
-            crate::report::lut_sizes(lut_cost)?;
+            crate::report::lut_sizes(lut_cost, &dir)?;
         }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

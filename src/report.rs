@@ -24,11 +24,10 @@ pub fn accuracy(directions: usize, samples: usize) {
 
 /// The LUT-size tables of the sine/cosine unit [10] and the cosine unit with sign [18]: entries and width against
 /// error (every input) and, when `cost` is on, against what yosys makes of the rtl block of that size for iCE40.
-pub fn lut_sizes(cost: bool) -> Result<(), String> {
+pub fn lut_sizes(cost: bool, dir: &std::path::Path) -> Result<(), String> {
     use rtl::cos_sign::CosSign;
     use rtl::sincos::SinCos;
     use synth::fpga::{synth_unit, Family};
-    let dir = std::env::temp_dir().join(format!("bumprtl-lut-{}", std::process::id()));
     println!("\nsin/cos unit [10]: table size and width (10-bit elevation in; error in 8-bit LSB; the rtl has 256 × 8):");
     lut_header();
     for r in sim::accuracy::sincos_sizes() {
@@ -70,7 +69,6 @@ pub fn lut_sizes(cost: bool) -> Result<(), String> {
         };
         lut_row(&r, c.as_ref());
     }
-    let _ = std::fs::remove_dir_all(&dir);
     Ok(())
 }
 

@@ -33,7 +33,7 @@ fn software_only_units_say_so() {
 
 #[test]
 fn software_only_unit_has_no_verilog() {
-    let d = std::env::temp_dir().join(format!("bumprtl-cli-{}", std::process::id()));
+    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bumprtl-cli-{}", std::process::id()));
     let (code, _, err) = bumprtl(&["verilog", "cart_encode", "--out", d.to_str().unwrap()]);
     assert_ne!(code, 0);
     assert_eq!(err.lines().count(), 1, "{err}");
@@ -93,7 +93,7 @@ fn vectors_command_reproduces_the_committed_golden_file() {
 
 #[test]
 fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
-    let d = std::env::temp_dir().join(format!("bumprtl-demo-notools-{}", std::process::id()));
+    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bumprtl-demo-notools-{}", std::process::id()));
     let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
         .args(["demo", "--size", "16", "--out", d.to_str().unwrap()])
         .env("PATH", "")

@@ -170,3 +170,6 @@ impl<const DC: bool> Logic for PolarShade<DC> {
 stream_unit!(PolarShade<false>, "polar_shade", LATENCY,
     inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8],
     outputs: [sum: 11, shade: 8]);
+stream_unit!(PolarShade<true>, "polar_shade_dc", LATENCY,
+    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8],
+    outputs: [sum: 11, shade: 8]);

@@ -12,7 +12,7 @@ fn scene() -> Scene {
 fn agree<U: rtl::StreamUnit>(m: &vectors::UnitModel, inputs: &[Vec<i64>]) {
     let model = sim::render::model(m, SIZE, inputs);
     let hdl = sim::render::rust_hdl::<U>(m, SIZE, inputs, &|_| {});
-    let dir = std::env::temp_dir().join(format!("bumprtl-scene-{}-{}", m.name, std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bumprtl-scene-{}-{}", m.name, std::process::id()));
     let vl = sim::render::verilator::<U>(m, SIZE, inputs, &dir, 2).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(model.p, hdl.p, "{}: rust-hdl", m.name);

@@ -8,7 +8,7 @@ fn value(v: &vcd::Vector) -> u64 {
 
 #[test]
 fn gloss_vcd_outputs_are_the_models() {
-    let dir = std::env::temp_dir().join(format!("bumprtl-wave-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bumprtl-wave-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("gloss.vcd");
     let inputs = (MODEL.hard_cases)();

@@ -19,7 +19,6 @@ fn dot3_random_vs_model_verilator() {
 fn dot3_hard_cases() {
     rust_hdl::<Dot3>(&MODEL, &(MODEL.hard_cases)(), Bubbles::BackToBack).assert_clean("hard cases");
     let e = |v: &[i64]| (MODEL.exact)(v);
-    let _ = e;
     // N = L = 1.0: 1024 reads as the seed's 1.0, 1023
     assert_eq!(e(&[0, 1024, 0, 0, 1024, 0]), vec![1023]);
     // light on the normal's horizon and below it: 0

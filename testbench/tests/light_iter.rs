@@ -19,7 +19,6 @@ fn light_iter_random_vs_model_verilator() {
 fn light_iter_hard_cases() {
     rust_hdl::<LightIter>(&MODEL, &(MODEL.hard_cases)(), Bubbles::BackToBack).assert_clean("hard cases");
     let e = |v: &[i64]| (MODEL.exact)(v);
-    let _ = e;
     // opposite vertex lights through their midpoint: exactly zero length at w1 = 128
     assert_eq!(e(&[127, 0, 0, -127, 0, 0, 127, 0, 0, 128, 0]), vec![0, 0, 0]);
     // the most negative S8 vertex comes back exactly at its own vertex

@@ -19,7 +19,6 @@ fn normalise_random_vs_model_verilator() {
 fn normalise_hard_cases() {
     rust_hdl::<Normalise>(&MODEL, &(MODEL.hard_cases)(), Bubbles::BackToBack).assert_clean("hard cases");
     let e = |v: &[i64]| (MODEL.exact)(v);
-    let _ = e;
     // zero length (opposite lights through their midpoint): a defined zero vector
     assert_eq!(e(&[0, 0, 0]), vec![0, 0, 0]);
     // the most negative S10 everywhere: −1/√3 each, 591.2 → −591

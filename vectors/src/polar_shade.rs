@@ -81,9 +81,17 @@ pub fn ideal(sc: Scale, s: i64, r: i64, q: i64, k1: i64, k2: i64, k3: i64) -> f6
     k1 as f64 + k2 as f64 * es.sin() + k3 as f64 * es.cos() * dr.cos()
 }
 
-fn exact_ports(i: &[i64]) -> Vec<i64> {
-    let (sum, shade) = exact(Scale::Seed, i[0], i[1], i[2], i[3], i[4], i[5]);
+fn exact_ports_in(scale: Scale, i: &[i64]) -> Vec<i64> {
+    let (sum, shade) = exact(scale, i[input::s], i[input::r], i[input::q], i[input::k1], i[input::k2], i[input::k3]);
     vec![sum, shade]
+}
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    exact_ports_in(Scale::Seed, i)
+}
+
+fn exact_ports_dc(i: &[i64]) -> Vec<i64> {
+    exact_ports_in(Scale::Dc255, i)
 }
 
 fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
@@ -138,6 +146,18 @@ pub static MODEL: UnitModel = UnitModel {
     inputs: INPUTS,
     outputs: OUTPUTS,
     exact: exact_ports,
+    random,
+    exhaustive: Some(exhaustive),
+    hard_cases,
+};
+
+/// The same unit with the Dreamcast toolchains' angle scale in its tables (the block `PolarShade<true>`, inside
+/// `polar_pipeline_dc`).
+pub static MODEL_DC: UnitModel = UnitModel {
+    name: "polar_shade_dc",
+    inputs: INPUTS,
+    outputs: OUTPUTS,
+    exact: exact_ports_dc,
     random,
     exhaustive: Some(exhaustive),
     hard_cases,

@@ -108,6 +108,7 @@ macro_rules! unit_table {
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];
+                polar_shade_dc: $crate::polar_shade::MODEL_DC, rtl::polar_shade::PolarShade<true>, [];
                 power: $crate::power::MODEL, rtl::power::Power, [];
                 polar_pipeline: $crate::polar_pipeline::MODEL, rtl::polar_pipeline::PolarPipelineSeed, [
                     ("shader$sum", "polar_shade's S11 before the clamp is an output for tests and waveforms; the \
