@@ -10,11 +10,11 @@
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+use crate::q::U8;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
 
-type U8 = Bits<8>;
 
 #[derive(LogicBlock, Default)]
 pub struct Bilinear {

@@ -5,12 +5,11 @@
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+use crate::q::{Sq8_0, U8};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 4;
 
-type U8 = Bits<8>;
-type Sq8_0 = Bits<9>; // INT9, two's complement
 
 #[derive(LogicBlock, Default)]
 pub struct CartDecode {

@@ -24,13 +24,12 @@ use crate::ram_delay::{DelayedBlend, RamDelay};
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 
-type U8 = Bits<8>;
-type S8 = Bits<8>;
 
 macro_rules! cart_pipeline {
     ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident) => {
 pub mod $m {
 use super::*;
+use crate::q::{S8, U8};
 
 /// Cycles from the pipeline's input to each unit's input (seed decode: 15, 8, 32, 43, 48).
 pub const AT_NORMALISE: usize = crate::bilinear::LATENCY + crate::$dec_mod::LATENCY;

@@ -5,12 +5,11 @@
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+use crate::q::{Sq1_10, Sq4_20};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 6;
 
-type Sq1_10 = Bits<12>; // two's complement, 1024 = 1.0
-type Sq2_20 = Bits<25>; // a product or the sum of three, two's complement
 
 #[derive(LogicBlock, Default)]
 pub struct Dot3 {
@@ -32,8 +31,8 @@ pub struct Dot3 {
     s1b_neg: [DFF<Bit>; 3],
     s2_p: [DFF<Bits<23>>; 3], // |n|·|l| ≤ 2^22 (U23)
     s2_neg: [DFF<Bit>; 3],
-    s3_t: [DFF<Sq2_20>; 3],
-    s4_sum: DFF<Sq2_20>,
+    s3_t: [DFF<Sq4_20>; 3],
+    s4_sum: DFF<Sq4_20>,
     s5_x: DFF<Bits<10>>,
     valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     n_in: [Signal<Local, Sq1_10>; 3],
@@ -41,8 +40,8 @@ pub struct Dot3 {
     w_n: [Signal<Local, Bits<16>>; 3],
     w_l: [Signal<Local, Bits<16>>; 3],
     w_p: [Signal<Local, Bits<32>>; 3],
-    w_t: [Signal<Local, Sq2_20>; 3],
-    w_partial: Signal<Local, Sq2_20>,
+    w_t: [Signal<Local, Sq4_20>; 3],
+    w_partial: Signal<Local, Sq4_20>,
     w_q: Signal<Local, Bits<15>>,
 }
 

@@ -8,13 +8,11 @@
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+use crate::q::{U8, Uq0_10, Uq6_3};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
 
-type Uq0_10 = Bits<10>; // X, L, Q, P: 10-bit fractions, 1023 ≈ 1.0
-type Uq6_3 = Bits<9>; // k = C + 8, 3 fraction bits
-type U8 = Bits<8>;
 
 #[derive(LogicBlock)]
 pub struct Gloss {

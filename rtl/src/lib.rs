@@ -23,6 +23,7 @@ pub mod normalise;
 pub mod polar_pipeline;
 pub mod polar_shade;
 pub mod power;
+pub mod q;
 pub mod ram_delay;
 pub mod sincos;
 pub mod stream;

@@ -1,5 +1,5 @@
 //! `light_iter`: per-vertex S8 light directions interpolated across a triangle from U9 barycentric weights:
-//! `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Q8.8) → `truncate` 6 (floor) → `saturate` to S10 (Sq8.2).
+//! `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Sq11.8) → `truncate` 6 (floor) → `saturate` to S10 (Sq7.2).
 //! Latency 7: differences; magnitudes; the multiplier's operand register; products; signs; the sum; the shift and
 //! saturation. The operand register feeds nothing but the multiplier, so the placer can put it beside the DSP: the
 //! long route lands on a register-to-register path instead of in front of the multiplier's 3.9 ns.
@@ -7,13 +7,11 @@
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+use crate::q::{S8, Sq11_8, Sq7_2};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 7;
 
-type S8 = Bits<8>; // two's complement vertex components
-type Sq8_2 = Bits<10>; // the interpolated light, two's complement
-type Sq8_8 = Bits<20>; // accumulator, two's complement
 
 #[derive(LogicBlock, Default)]
 pub struct LightIter {
@@ -31,13 +29,13 @@ pub struct LightIter {
     pub w1: Signal<In, Bits<9>>,
     pub w2: Signal<In, Bits<9>>,
     pub valid_out: Signal<Out, Bit>,
-    pub light_x: Signal<Out, Sq8_2>,
-    pub light_y: Signal<Out, Sq8_2>,
-    pub light_z: Signal<Out, Sq8_2>,
+    pub light_x: Signal<Out, Sq7_2>,
+    pub light_y: Signal<Out, Sq7_2>,
+    pub light_z: Signal<Out, Sq7_2>,
     // stage 1: differences (S9), l0·256 (S20), weights widened
     s1_d1: [DFF<Bits<9>>; 3],
     s1_d2: [DFF<Bits<9>>; 3],
-    s1_base: [DFF<Sq8_8>; 3],
+    s1_base: [DFF<Sq11_8>; 3],
     s1_w1: DFF<Bits<16>>,
     s1_w2: DFF<Bits<16>>,
     // stage 2: magnitudes ≤ 255 (in the multiplier's 16 bits), signs
@@ -45,7 +43,7 @@ pub struct LightIter {
     s2_m2: [DFF<Bits<16>>; 3],
     s2_n1: [DFF<Bit>; 3],
     s2_n2: [DFF<Bit>; 3],
-    s2_base: [DFF<Sq8_8>; 3],
+    s2_base: [DFF<Sq11_8>; 3],
     s2_w1: DFF<Bits<16>>,
     s2_w2: DFF<Bits<16>>,
     // stage 2b: the multiplier's operands again, and what travels beside them
@@ -53,7 +51,7 @@ pub struct LightIter {
     s2b_m2: [DFF<Bits<16>>; 3],
     s2b_n1: [DFF<Bit>; 3],
     s2b_n2: [DFF<Bit>; 3],
-    s2b_base: [DFF<Sq8_8>; 3],
+    s2b_base: [DFF<Sq11_8>; 3],
     mop_w1: [DFF<Bits<16>>; 3],
     mop_w2: [DFF<Bits<16>>; 3],
     // stage 3: |d|·w ≤ 255·511 (U17)
@@ -61,27 +59,27 @@ pub struct LightIter {
     s3_p2: [DFF<Bits<17>>; 3],
     s3_n1: [DFF<Bit>; 3],
     s3_n2: [DFF<Bit>; 3],
-    s3_base: [DFF<Sq8_8>; 3],
+    s3_base: [DFF<Sq11_8>; 3],
     // stage 4: signed terms (S20)
-    s4_t1: [DFF<Sq8_8>; 3],
-    s4_t2: [DFF<Sq8_8>; 3],
-    s4_base: [DFF<Sq8_8>; 3],
+    s4_t1: [DFF<Sq11_8>; 3],
+    s4_t2: [DFF<Sq11_8>; 3],
+    s4_base: [DFF<Sq11_8>; 3],
     // stage 5: the sum (S20; |L| ≤ 293,378 < 2^19)
-    s5_acc: [DFF<Sq8_8>; 3],
-    // stage 6: floor to Q8.2 and saturate to S10
-    s6_out: [DFF<Sq8_2>; 3],
+    s5_acc: [DFF<Sq11_8>; 3],
+    // stage 6: floor to Sq7.2 and saturate to S10
+    s6_out: [DFF<Sq7_2>; 3],
     valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
     e9_0: [Signal<Local, Bits<9>>; 3],
     e9_1: [Signal<Local, Bits<9>>; 3],
     e9_2: [Signal<Local, Bits<9>>; 3],
-    e20: [Signal<Local, Sq8_8>; 3],
+    e20: [Signal<Local, Sq11_8>; 3],
     m9_1: [Signal<Local, Bits<9>>; 3],
     m9_2: [Signal<Local, Bits<9>>; 3],
     w_p1: [Signal<Local, Bits<32>>; 3],
     w_p2: [Signal<Local, Bits<32>>; 3],
-    p20_1: [Signal<Local, Sq8_8>; 3],
-    p20_2: [Signal<Local, Sq8_8>; 3],
-    w_part: [Signal<Local, Sq8_8>; 3],
+    p20_1: [Signal<Local, Sq11_8>; 3],
+    p20_2: [Signal<Local, Sq11_8>; 3],
+    w_part: [Signal<Local, Sq11_8>; 3],
     w_q: [Signal<Local, Bits<14>>; 3],
     w_hi: [Signal<Local, Bits<5>>; 3],
 }

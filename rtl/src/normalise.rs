@@ -10,14 +10,12 @@ use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
+use crate::q::{Sq1_10, Sq9_0, Uq1_12};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
 
 pub const TABLE_BITS: u32 = 10;
-type Sq9_0 = Bits<10>; // input components, two's complement (the bump's Q8.0 or the light's Q8.2)
-type Sq1_10 = Bits<12>; // output components, two's complement, 1024 = 1.0
-type Uq1_12 = Bits<13>; // table entries, 2^12/√m ∈ 2049..4096
 
 /// The seed table, entry `idx` = round(2^12/√m) at the midpoint m of its bin; bins below m = 1 are unused (0).
 /// The model's `vectors::normalise::table_entry` is the same formula; a test compares the two entry by entry.

@@ -9,8 +9,8 @@ use crate::power::Power;
 use crate::ram_delay::DelayedBlend;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
+use crate::q::U8;
 
-type U8 = Bits<8>;
 
 pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
 pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 17

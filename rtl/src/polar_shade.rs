@@ -14,11 +14,10 @@ use crate::div255::Div255;
 use crate::stream_unit;
 use crate::tables::{CosSignTable, ElevationTable};
 use rust_hdl::prelude::*;
+use crate::q::{S11, U8};
 
 pub const LATENCY: usize = 10;
 
-type U8 = Bits<8>;
-type S11 = Bits<11>; // two's complement
 
 /// `DC`: the Dreamcast toolchains' angle scale (255 steps) in both tables; the seed's (256) when false.
 #[derive(LogicBlock, Default)]

@@ -8,10 +8,10 @@ use crate::delay::Delay;
 use crate::stream_unit;
 use crate::tables::{ExpTable, LogTable};
 use rust_hdl::prelude::*;
+use crate::q::U8;
 
 pub const LATENCY: usize = 7;
 
-type U8 = Bits<8>;
 
 #[derive(LogicBlock, Default)]
 pub struct Power {

@@ -78,7 +78,7 @@ pub fn units(samples: usize, seed: u64) -> Vec<Row> {
         bl.add((blend::exact_channel(v[0], v[1], v[2], v[5]) as f64 - blend::ideal_channel(v[0], v[1], v[2], v[5])).abs(), || format!("{v:?}"));
     }
     rows.push(row("dot3", "10-bit LSB", d));
-    rows.push(row("light_iter", "Sq8.2 LSB", li));
+    rows.push(row("light_iter", "Sq7.2 LSB", li));
     rows.push(row("bilinear", "8-bit LSB", bi));
     rows.push(row("blend", "8-bit LSB", bl));
     rows.extend(polar_units(samples, seed));

@@ -1,7 +1,7 @@
 //! `light_iter`: per-vertex light directions, signed 8 bits each (`(int)(LightDir·127) & 0xFF`, seed 000),
 //! interpolated across a triangle from barycentric weights, one pixel per clock.
 //!
-//! exact: `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Q8.8), then `truncate` 6 bits (floor) to Sq8.2 and
+//! exact: `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Sq11.8), then `truncate` 6 bits (floor) to Sq7.2 and
 //! `saturate` to S10. `w1`, `w2` are U9 weights in 1/256 (256 = the vertex itself; w1 + w2 ≤ 256 inside the
 //! triangle; outside it the saturation keeps the S10 output defined).
 
@@ -23,14 +23,14 @@ pub fn quantise_vertex(d: [f64; 3]) -> [i64; 3] {
     [(d[0] * 127.0) as i64, (d[1] * 127.0) as i64, (d[2] * 127.0) as i64]
 }
 
-/// One component: S8 vertices, U9 weights → Sq8.2 (S10).
+/// One component: S8 vertices, U9 weights → Sq7.2 (S10).
 pub fn exact_component(l0: i64, l1: i64, l2: i64, w1: i64, w2: i64) -> i64 {
-    let acc = l0 * 256 + (l1 - l0) * w1 + (l2 - l0) * w2; // S20, Q8.8 (±293,378 at most)
+    let acc = l0 * 256 + (l1 - l0) * w1 + (l2 - l0) * w2; // S20, Sq11.8 (±293,378 at most)
     let (lo, hi) = signed_range(10);
-    saturate(truncate(acc, 6), lo, hi) // Q8.8 → Q8.2, floor; S10
+    saturate(truncate(acc, 6), lo, hi) // Sq11.8 → Sq7.2, floor; S10
 }
 
-/// The same interpolation in reals, in Q8.2 units.
+/// The same interpolation in reals, in Sq7.2 units.
 pub fn ideal_component(l0: f64, l1: f64, l2: f64, w1: f64, w2: f64) -> f64 {
     4.0 * (l0 + (l1 - l0) * w1 / 256.0 + (l2 - l0) * w2 / 256.0)
 }

@@ -1,5 +1,5 @@
 //! `normalise`: the inverse-square-root normaliser every pipeline shares. Three S10 components in (any common
-//! scale: the bump vector's Q8.0, the light's Q8.2) → a unit vector in Sq1.10 (S12, 1024 = 1.0).
+//! scale: the bump vector's Q8.0, the light's Sq7.2) → a unit vector in Sq1.10 (S12, 1024 = 1.0).
 //!
 //! exact (the rtl has `TABLE_BITS` = 10, `NEWTON` = 0):
 //! 1. `s = x² + y² + z²` (U20: at most 3·512² < 2^20);

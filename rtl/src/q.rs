@@ -1,0 +1,61 @@
+//! The rtl's one fixed-point convention, and the types every block shares.
+//!
+//! - `SqM_N`: two's complement with M integer bits, **not counting the sign bit**, and N fraction bits: it is
+//!   `Bits<1 + M + N>` and holds −2^M .. 2^M − 2^−N.
+//! - `UqM_N`: unsigned with M integer bits and N fraction bits: `Bits<M + N>`, 0 .. 2^M − 2^−N.
+//! - Plain integers are named by their width: `U8` is `Bits<8>` (0..255), `S8` an 8-bit two's complement integer
+//!   (the sign counted in the 8: an `S8` is an `Sq7_0`).
+//!
+//! The same bits can be read at two scales by two blocks: the light leaves `light_iter` as an `Sq7_2` and enters
+//! `normalise` as an `Sq9_0` (the normaliser is scale-free: it reads any 10-bit vector as an integer).
+//!
+//! Narrowing in hdl_gen code is written with `get_bits` on a named signal (rust-hdl can slice only named signals)
+//! and says beside it, in a comment, whether it truncates (floor), rounds (and how) or saturates, and why it cannot
+//! overflow; the models in `vectors::fixed` carry the same steps by name (`truncate`, `round_half_up`, `saturate`).
+
+use rust_hdl::prelude::Bits;
+
+pub type U8 = Bits<8>;
+pub type U16 = Bits<16>;
+pub type S8 = Bits<8>;
+pub type S11 = Bits<11>;
+
+/// The bump vector's components (INT9: −255..255).
+pub type Sq8_0 = Bits<9>;
+/// The normaliser's input components, read as integers.
+pub type Sq9_0 = Bits<10>;
+/// The interpolated light, two fraction bits.
+pub type Sq7_2 = Bits<10>;
+/// The light interpolator's accumulator: l0·256 + Σ d·w, eight fraction bits.
+pub type Sq11_8 = Bits<20>;
+/// A unit vector's components, 1024 = 1.0.
+pub type Sq1_10 = Bits<12>;
+/// A product of two `Sq1_10`, or the sum of three (|Σ| < 3·2^20 < 2^22, with room).
+pub type Sq4_20 = Bits<25>;
+/// A 10-bit fraction: X, L, Q and P of the gloss unit, 1023 ≈ 1.0.
+pub type Uq0_10 = Bits<10>;
+/// The gloss unit's k = C + 8, three fraction bits.
+pub type Uq6_3 = Bits<9>;
+/// The normaliser's table entries, 2^12/√m ∈ 2049..4096.
+pub type Uq1_12 = Bits<13>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rust_hdl::prelude::Synth;
+
+    #[test]
+    fn every_type_is_as_wide_as_its_name_says() {
+        // SqM_N: 1 + M + N bits (the sign not counted in M); UqM_N: M + N
+        assert_eq!(Sq8_0::BITS, 1 + 8);
+        assert_eq!(Sq9_0::BITS, 1 + 9);
+        assert_eq!(Sq7_2::BITS, 1 + 7 + 2);
+        assert_eq!(Sq11_8::BITS, 1 + 11 + 8);
+        assert_eq!(Sq1_10::BITS, 1 + 1 + 10);
+        assert_eq!(Sq4_20::BITS, 1 + 4 + 20);
+        assert_eq!(Uq0_10::BITS, 10);
+        assert_eq!(Uq6_3::BITS, 6 + 3);
+        assert_eq!(Uq1_12::BITS, 1 + 12);
+        assert_eq!((U8::BITS, U16::BITS, S8::BITS, S11::BITS), (8, 16, 8, 11));
+    }
+}
