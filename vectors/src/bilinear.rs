@@ -38,10 +38,6 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     (0..4).map(|c| exact_channel(i[c], i[4 + c], i[8 + c], i[12 + c], i[16], i[17], F)).collect()
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 pub fn hard_cases() -> Vec<Vec<i64>> {
     let mut v = vec![];
     for (t, u, w) in [(0, 0, 0), (255, 255, 255), (255, 0, 0), (255, 128, 128), (255, 255, 0), (0, 255, 255)] {
@@ -62,15 +58,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "bilinear",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("bilinear", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases);
 
 #[cfg(test)]
 mod tests {

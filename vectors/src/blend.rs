@@ -43,10 +43,6 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     (0..3).map(|c| exact_channel(i[0], i[1], i[2 + c], i[5 + c])).collect()
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 pub fn hard_cases() -> Vec<Vec<i64>> {
     let mut v = vec![];
     for a in [0, 1, 127, 128, 254, 255] {
@@ -57,15 +53,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "blend",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("blend", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases);
 
 #[cfg(test)]
 mod tests {

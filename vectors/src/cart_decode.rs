@@ -76,10 +76,6 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     vec![b.x, b.y, b.z]
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 fn exhaustive() -> Vec<Vec<i64>> {
     (0..65536i64).map(|t| vec![t & 255, t >> 8]).collect()
 }
@@ -99,15 +95,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "cart_decode",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: Some(exhaustive),
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("cart_decode", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
 
 #[cfg(test)]
 mod tests {

@@ -39,10 +39,6 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     exact(i[0] as u8, i[1] as u8).to_vec()
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 fn exhaustive() -> Vec<Vec<i64>> {
     (0..65536i64).map(|t| vec![t & 255, t >> 8]).collect()
 }
@@ -61,15 +57,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     .collect()
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "cart_decode_hemi_oct",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: Some(exhaustive),
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("cart_decode_hemi_oct", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
 
 #[cfg(test)]
 mod tests {

@@ -176,22 +176,6 @@ pub fn hard_cases_hemi_oct() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "cart_pipeline",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("cart_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases);
 
-pub static MODEL_HEMI_OCT: UnitModel = UnitModel {
-    name: "cart_pipeline_hemi_oct",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports_hemi_oct,
-    random,
-    exhaustive: None,
-    hard_cases: hard_cases_hemi_oct,
-};
+pub static MODEL_HEMI_OCT: UnitModel = UnitModel::new("cart_pipeline_hemi_oct", (INPUTS, OUTPUTS), exact_ports_hemi_oct, random, hard_cases_hemi_oct);

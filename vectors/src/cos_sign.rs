@@ -37,10 +37,6 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     vec![m, n as i64]
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 fn exhaustive() -> Vec<Vec<i64>> {
     (0..256).map(|d| vec![d]).collect()
 }
@@ -50,15 +46,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     [0, 63, 64, 65, 128, 191, 192, 193, 255].iter().map(|&d| vec![d]).collect()
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "cos_sign",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: Some(exhaustive),
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("cos_sign", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
 
 /// Mean and max |error| of the signed cosine over every d, in LSBs of an 8-bit output, and where the max is.
 pub fn size_error(tb: u32, w: u32) -> crate::sincos::SizeRow {

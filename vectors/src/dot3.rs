@@ -56,12 +56,4 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     ]
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "dot3",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("dot3", (INPUTS, OUTPUTS), exact_ports, random, hard_cases);

@@ -39,10 +39,6 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     vec![exact(i[0], i[1])]
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 fn exhaustive() -> Vec<Vec<i64>> {
     (0..1i64 << 18).map(|t| vec![t >> 10, t & 1023]).collect()
 }
@@ -57,15 +53,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "gloss",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: Some(exhaustive),
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("gloss", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
 
 #[cfg(test)]
 mod tests {

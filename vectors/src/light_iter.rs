@@ -73,15 +73,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "light_iter",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("light_iter", (INPUTS, OUTPUTS), exact_ports, random, hard_cases);
 
 #[cfg(test)]
 mod tests {

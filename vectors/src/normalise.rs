@@ -98,15 +98,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     ]
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "normalise",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("normalise", (INPUTS, OUTPUTS), exact_ports, random, hard_cases);
 
 #[cfg(test)]
 mod tests {

@@ -47,10 +47,6 @@ fn exact_ports_dc(i: &[i64]) -> Vec<i64> {
     ports(Scale::Dc255, i)
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 pub fn hard_cases() -> Vec<Vec<i64>> {
     let colours = [1, 200, 150, 100, 10, 20, 30];
     let mut v = vec![];
@@ -67,27 +63,11 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "polar_pipeline",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("polar_pipeline", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases);
 
 /// The same pipeline with the Dreamcast toolchains' angle scale in its tables: maps made by those tools shade as
 /// their authors saw them.
-pub static MODEL_DC: UnitModel = UnitModel {
-    name: "polar_pipeline_dc",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports_dc,
-    random,
-    exhaustive: None,
-    hard_cases,
-};
+pub static MODEL_DC: UnitModel = UnitModel::new("polar_pipeline_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases);
 
 /// The pipeline's model for a scale, indexed by `Scale as usize`.
 pub static MODEL_FOR: [&UnitModel; 2] = [&MODEL, &MODEL_DC];

@@ -94,10 +94,6 @@ fn exact_ports_dc(i: &[i64]) -> Vec<i64> {
     exact_ports_in(Scale::Dc255, i)
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 /// The k sweep of the exhaustive set: every (S, R − Q) pair is run under each of these (k1, k2, k3).
 pub const K_SWEEP: &[(i64, i64, i64)] = &[(0, 0, 255), (0, 255, 255), (255, 255, 255), (128, 90, 90), (0, 180, 180), (255, 0, 0), (64, 1, 254), (17, 200, 73)];
 
@@ -141,27 +137,11 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "polar_shade",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: Some(exhaustive),
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("polar_shade", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
 
 /// The same unit with the Dreamcast toolchains' angle scale in its tables (the block `PolarShade<true>`, inside
 /// `polar_pipeline_dc`).
-pub static MODEL_DC: UnitModel = UnitModel {
-    name: "polar_shade_dc",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports_dc,
-    random,
-    exhaustive: Some(exhaustive),
-    hard_cases,
-};
+pub static MODEL_DC: UnitModel = UnitModel::new("polar_shade_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases).with_exhaustive(exhaustive);
 
 #[cfg(test)]
 mod tests {

@@ -99,10 +99,6 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     vec![s, c]
 }
 
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
-    INPUTS.iter().map(|p| crate::unit::draw(rng, p)).collect()
-}
-
 fn exhaustive() -> Vec<Vec<i64>> {
     (0..1i64 << ANGLE_BITS).map(|a| vec![a]).collect()
 }
@@ -112,15 +108,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     [0, 1, 3, 4, 341, 512, 1020, 1022, 1023].iter().map(|&a| vec![a]).collect()
 }
 
-pub static MODEL: UnitModel = UnitModel {
-    name: "sincos",
-    inputs: INPUTS,
-    outputs: OUTPUTS,
-    exact: exact_ports,
-    random,
-    exhaustive: Some(exhaustive),
-    hard_cases,
-};
+pub static MODEL: UnitModel = UnitModel::new("sincos", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
 
 /// The (table bits, width) pairs of the LUT-size table: 64, 256 and 1,024 entries of 8, 10 and 12 bits.
 pub const LUT_SIZES: &[(u32, u32)] = &[(6, 8), (8, 8), (10, 8), (6, 10), (8, 10), (10, 10), (6, 12), (8, 12), (10, 12)];

@@ -35,6 +35,11 @@ macro_rules! ports {
     (inputs: [$($i:ident: $ik:ident $iw:expr),* $(,)?], outputs: [$($o:ident: $ok:ident $ow:expr),* $(,)?] $(,)?) => {
         pub const INPUTS: &[$crate::unit::Port] = &[$($crate::unit::Port::$ik(stringify!($i), $iw)),*];
         pub const OUTPUTS: &[$crate::unit::Port] = &[$($crate::unit::Port::$ok(stringify!($o), $ow)),*];
+        /// One random input vector: every input port drawn over its range, its ends weighted in.
+        #[allow(dead_code)]
+        pub fn random_inputs(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+            INPUTS.iter().map(|p| $crate::unit::draw(rng, p)).collect()
+        }
         /// Each input port's index in an input vector.
         #[allow(non_upper_case_globals, dead_code)]
         pub mod input {
@@ -68,6 +73,21 @@ pub struct UnitModel {
 }
 
 impl UnitModel {
+    /// A unit whose input space is too large to enumerate (the exhaustive set is added by `with_exhaustive`).
+    pub const fn new(
+        name: &'static str,
+        ports: (&'static [Port], &'static [Port]),
+        exact: fn(&[i64]) -> Vec<i64>,
+        random: fn(&mut dyn rand::RngCore) -> Vec<i64>,
+        hard_cases: fn() -> Vec<Vec<i64>>,
+    ) -> UnitModel {
+        UnitModel { name, inputs: ports.0, outputs: ports.1, exact, random, exhaustive: None, hard_cases }
+    }
+
+    pub const fn with_exhaustive(self, all: fn() -> Vec<Vec<i64>>) -> UnitModel {
+        UnitModel { exhaustive: Some(all), ..self }
+    }
+
     pub fn header(&self) -> Vec<&'static str> {
         self.inputs.iter().chain(self.outputs.iter()).map(|p| p.name).collect()
     }
