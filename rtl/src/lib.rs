@@ -8,25 +8,42 @@
 //!   signals. This keeps the exported Verilog (32-bit literals) equal to rust-hdl's simulation.
 //! - Every stage boundary is a `DFF`; `LATENCY` is the number of clock edges from an input to its output.
 
-pub mod bilinear;
-pub mod blend;
-pub mod cart_decode;
-pub mod cart_decode_hemi_oct;
-pub mod cart_pipeline;
-pub mod cos_sign;
-pub mod delay;
-pub mod div255;
-pub mod dot3;
-pub mod gloss;
-pub mod light_iter;
-pub mod normalise;
-pub mod polar_pipeline;
-pub mod polar_shade;
-pub mod power;
-pub mod q;
-pub mod ram_delay;
-pub mod sincos;
-pub mod stream;
-pub mod tables;
+/// Blocks more than one family uses: the colour filter, the normaliser, N·L, glossiness, the blend, the delay lines,
+/// the /255 and the fixed-point types.
+pub mod shared {
+    pub mod bilinear;
+    pub mod blend;
+    pub mod delay;
+    pub mod div255;
+    pub mod dot3;
+    pub mod gloss;
+    pub mod normalise;
+    pub mod q;
+    pub mod ram_delay;
+}
 
+/// Seed 000's second embodiment: Cartesian texels, per-pixel lights.
+pub mod cartesian {
+    pub mod cart_decode;
+    pub mod cart_decode_hemi_oct;
+    pub mod cart_pipeline;
+    pub mod light_iter;
+}
+
+/// Seed 000's first embodiment (FIG. 3): polar texels, one light per surface.
+pub mod polar {
+    pub mod cos_sign;
+    pub mod polar_pipeline;
+    pub mod polar_shade;
+    pub mod power;
+    pub mod sincos;
+    pub mod tables;
+}
+
+pub mod stream;
+
+// every unit also at the crate root, by its own name, whatever its family
+pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
+pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
+pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay};
 pub use stream::StreamUnit;

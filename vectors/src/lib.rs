@@ -2,27 +2,43 @@
 //! approximates) and a bit-exact `exact()` in integers of exactly the rtl widths, plus the vector generator.
 //! It has no rust-hdl dependency: the rtl is checked against it, never the other way round.
 
-pub mod blend;
-pub mod bilinear;
-pub mod cart_decode;
-pub mod cart_decode_hemi_oct;
-pub mod cart_encode;
-pub mod cart_pipeline;
-pub mod cos_sign;
+/// Units more than one family uses, the fixed-point steps, and normals from heights.
+pub mod shared {
+    pub mod bilinear;
+    pub mod blend;
+    pub mod dot3;
+    pub mod fixed;
+    pub mod gloss;
+    pub mod height;
+    pub mod normalise;
+}
+
+/// Seed 000's second embodiment: Cartesian texels (and their encoders), per-pixel lights.
+pub mod cartesian {
+    pub mod cart_decode;
+    pub mod cart_decode_hemi_oct;
+    pub mod cart_encode;
+    pub mod cart_pipeline;
+    pub mod light_iter;
+}
+
+/// Seed 000's first embodiment (FIG. 3): polar texels (and their encoder), one light per surface.
+pub mod polar {
+    pub mod cos_sign;
+    pub mod polar_encode;
+    pub mod polar_pipeline;
+    pub mod polar_shade;
+    pub mod power;
+    pub mod sincos;
+}
+
 pub mod csv;
-pub mod dot3;
-pub mod fixed;
-pub mod gloss;
-pub mod height;
-pub mod light_iter;
-pub mod normalise;
-pub mod polar_encode;
-pub mod polar_pipeline;
-pub mod polar_shade;
-pub mod power;
 pub mod scene;
-pub mod sincos;
 pub mod stats;
 pub mod unit;
 
+// every unit also at the crate root, by its own name, whatever its family
+pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, light_iter};
+pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
+pub use shared::{bilinear, blend, dot3, fixed, gloss, height, normalise};
 pub use unit::{Port, UnitModel, UNITS};
