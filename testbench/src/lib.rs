@@ -153,10 +153,12 @@ pub fn lint<U: StreamUnit>() -> Vec<String> {
     synth::lint::lint(&dir, &f, U::NAME, vectors::unit::lint_waivers(U::NAME)).unwrap_or_else(|e| panic!("{e}")).design
 }
 
-/// The standard tests every unit gets: golden vectors, three-way identity, bubbles, lint.
+/// The standard tests every unit gets: golden vectors, three-way identity, bubbles, lint; and, for a unit whose
+/// input space is enumerable, `exhaustive: [rust_hdl, verilator, icarus] with <bubbles>` runs all of it through the
+/// simulators named. Every test sits in a module named after the unit: `gloss::exhaustive_verilator`.
 #[macro_export]
 macro_rules! unit_tests {
-    ($unit:ident, $block:ty, $model:expr) => {
+    ($unit:ident, $block:ty, $model:expr $(, exhaustive: [$($sim:ident),*] with $bubbles:expr)? $(,)?) => {
         mod $unit {
             use super::*;
             use synth::cosim::Simulator;
@@ -197,6 +199,31 @@ macro_rules! unit_tests {
                 let (inputs, _) = golden(&$model);
                 external::<$block>(Simulator::Icarus, &$model, &inputs, Bubbles::Random { one_in: 5, seed: 4 }).assert_clean("icarus");
             }
+
+            $($($crate::unit_tests!(@exhaustive $sim, $block, $model, $bubbles);)*)?
+        }
+    };
+    // every input of the unit's exhaustive set (≤ 2^20), through one simulator: rust-hdl with the given bubbles,
+    // the external simulators back to back
+    (@exhaustive rust_hdl, $block:ty, $model:expr, $bubbles:expr) => {
+        #[test]
+        fn exhaustive_rust_hdl() {
+            let all = ($model.exhaustive.expect("an exhaustive set"))();
+            rust_hdl::<$block>(&$model, &all, $bubbles).assert_clean("rust-hdl, every input");
+        }
+    };
+    (@exhaustive verilator, $block:ty, $model:expr, $bubbles:expr) => {
+        #[test]
+        fn exhaustive_verilator() {
+            let all = ($model.exhaustive.expect("an exhaustive set"))();
+            external::<$block>(Simulator::Verilator, &$model, &all, Bubbles::BackToBack).assert_clean("verilator, every input");
+        }
+    };
+    (@exhaustive icarus, $block:ty, $model:expr, $bubbles:expr) => {
+        #[test]
+        fn exhaustive_icarus() {
+            let all = ($model.exhaustive.expect("an exhaustive set"))();
+            external::<$block>(Simulator::Icarus, &$model, &all, Bubbles::BackToBack).assert_clean("icarus, every input");
         }
     };
 }

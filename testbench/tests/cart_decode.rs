@@ -1,28 +1,12 @@
 //! cart_decode: all 65,536 texel pairs, three ways; the guard's hard cases.
 use rtl::cart_decode::CartDecode;
-use synth::cosim::Simulator;
-use testbench::{external, rust_hdl, unit_tests, Bubbles};
+use testbench::{rust_hdl, unit_tests, Bubbles};
 use vectors::cart_decode::MODEL;
 
-unit_tests!(cart_decode, CartDecode, MODEL);
+unit_tests!(cart_decode, CartDecode, MODEL, exhaustive: [rust_hdl, verilator, icarus] with Bubbles::Random { one_in: 7, seed: 2 });
 
 fn all() -> Vec<Vec<i64>> {
     (MODEL.exhaustive.unwrap())()
-}
-
-#[test]
-fn cart_decode_exhaustive_rust_hdl() {
-    rust_hdl::<CartDecode>(&MODEL, &all(), Bubbles::Random { one_in: 7, seed: 2 }).assert_clean("rust-hdl, all texels");
-}
-
-#[test]
-fn cart_decode_exhaustive_verilator() {
-    external::<CartDecode>(Simulator::Verilator, &MODEL, &all(), Bubbles::BackToBack).assert_clean("verilator, all texels");
-}
-
-#[test]
-fn cart_decode_exhaustive_icarus() {
-    external::<CartDecode>(Simulator::Icarus, &MODEL, &all(), Bubbles::BackToBack).assert_clean("icarus, all texels");
 }
 
 #[test]

@@ -1,28 +1,12 @@
 //! cart_decode_hemi_oct: all 65,536 texel pairs, three ways; the horizon and the pole.
 use rtl::cart_decode_hemi_oct::CartDecodeHemiOct;
-use synth::cosim::Simulator;
-use testbench::{external, rust_hdl, unit_tests, Bubbles};
+use testbench::{rust_hdl, unit_tests, Bubbles};
 use vectors::cart_decode_hemi_oct::MODEL;
 
-unit_tests!(cart_decode_hemi_oct, CartDecodeHemiOct, MODEL);
+unit_tests!(cart_decode_hemi_oct, CartDecodeHemiOct, MODEL, exhaustive: [rust_hdl, verilator, icarus] with Bubbles::Random { one_in: 7, seed: 2 });
 
 fn all() -> Vec<Vec<i64>> {
     (MODEL.exhaustive.unwrap())()
-}
-
-#[test]
-fn cart_decode_hemi_oct_exhaustive_rust_hdl() {
-    rust_hdl::<CartDecodeHemiOct>(&MODEL, &all(), Bubbles::Random { one_in: 7, seed: 2 }).assert_clean("rust-hdl, all texels");
-}
-
-#[test]
-fn cart_decode_hemi_oct_exhaustive_verilator() {
-    external::<CartDecodeHemiOct>(Simulator::Verilator, &MODEL, &all(), Bubbles::BackToBack).assert_clean("verilator, all texels");
-}
-
-#[test]
-fn cart_decode_hemi_oct_exhaustive_icarus() {
-    external::<CartDecodeHemiOct>(Simulator::Icarus, &MODEL, &all(), Bubbles::BackToBack).assert_clean("icarus, all texels");
 }
 
 #[test]

@@ -1,24 +1,9 @@
 //! gloss: the seed's quadratic glossiness, all 2^18 (C, X) pairs.
 use rtl::gloss::Gloss;
-use testbench::{external, rust_hdl, unit_tests, Bubbles};
+use testbench::{rust_hdl, unit_tests, Bubbles};
 use vectors::gloss::MODEL;
-use synth::cosim::Simulator;
 
-unit_tests!(gloss, Gloss, MODEL);
-
-fn all() -> Vec<Vec<i64>> {
-    (MODEL.exhaustive.unwrap())()
-}
-
-#[test]
-fn gloss_exhaustive_rust_hdl() {
-    rust_hdl::<Gloss>(&MODEL, &all(), Bubbles::Random { one_in: 9, seed: 1 }).assert_clean("rust-hdl, all 2^18 pairs");
-}
-
-#[test]
-fn gloss_exhaustive_verilator() {
-    external::<Gloss>(Simulator::Verilator, &MODEL, &all(), Bubbles::BackToBack).assert_clean("verilator, all 2^18 pairs");
-}
+unit_tests!(gloss, Gloss, MODEL, exhaustive: [rust_hdl, verilator] with Bubbles::Random { one_in: 9, seed: 1 });
 
 #[test]
 fn gloss_hard_cases() {

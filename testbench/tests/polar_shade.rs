@@ -1,26 +1,11 @@
 //! polar_shade: every (S, R − Q) pair under a sweep of k's (2^19 vectors) in rust-hdl and Verilator; hard cases
 //! (R − Q wrap, S at its ends, both S11 extremes, k's at 0 and max, a light on the horizon) with bubbles.
 type PolarShade = rtl::polar_shade::PolarShade<false>;
-use synth::cosim::Simulator;
-use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
+use testbench::{random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::polar_encode::Scale;
 use vectors::polar_shade::{exact_trace, MODEL};
 
-unit_tests!(polar_shade, PolarShade, MODEL);
-
-fn all() -> Vec<Vec<i64>> {
-    (MODEL.exhaustive.unwrap())()
-}
-
-#[test]
-fn polar_shade_exhaustive_rust_hdl() {
-    rust_hdl::<PolarShade>(&MODEL, &all(), Bubbles::Random { one_in: 11, seed: 6 }).assert_clean("rust-hdl, (S, R − Q) × k sweep");
-}
-
-#[test]
-fn polar_shade_exhaustive_verilator() {
-    external::<PolarShade>(Simulator::Verilator, &MODEL, &all(), Bubbles::BackToBack).assert_clean("verilator, (S, R − Q) × k sweep");
-}
+unit_tests!(polar_shade, PolarShade, MODEL, exhaustive: [rust_hdl, verilator] with Bubbles::Random { one_in: 11, seed: 6 });
 
 #[test]
 fn polar_shade_random_vs_model() {

@@ -1,24 +1,13 @@
 //! polar_shade_dc: the shade unit in the Dreamcast toolchains' angle scale (its own tables), every (S, R − Q) pair
 //! under the k sweep in rust-hdl and Verilator; the standard tests on its own golden vectors.
 type PolarShadeDc = rtl::polar_shade::PolarShade<true>;
-use synth::cosim::Simulator;
-use testbench::{external, rust_hdl, unit_tests, Bubbles};
+use testbench::unit_tests;
 use vectors::polar_shade::MODEL_DC;
 
-unit_tests!(polar_shade_dc, PolarShadeDc, MODEL_DC);
+unit_tests!(polar_shade_dc, PolarShadeDc, MODEL_DC, exhaustive: [rust_hdl, verilator] with Bubbles::Random { one_in: 11, seed: 8 });
 
 fn all() -> Vec<Vec<i64>> {
     (MODEL_DC.exhaustive.unwrap())()
-}
-
-#[test]
-fn polar_shade_dc_exhaustive_rust_hdl() {
-    rust_hdl::<PolarShadeDc>(&MODEL_DC, &all(), Bubbles::Random { one_in: 11, seed: 8 }).assert_clean("rust-hdl, (S, R − Q) × k sweep");
-}
-
-#[test]
-fn polar_shade_dc_exhaustive_verilator() {
-    external::<PolarShadeDc>(Simulator::Verilator, &MODEL_DC, &all(), Bubbles::BackToBack).assert_clean("verilator, (S, R − Q) × k sweep");
 }
 
 #[test]

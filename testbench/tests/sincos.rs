@@ -1,29 +1,13 @@
 //! sincos: the elevation sine/cosine table, every 10-bit angle three ways, and the rtl table against the model's.
 use rtl::sincos::{SinCos, SinCosUnit};
-use synth::cosim::Simulator;
-use testbench::{external, rust_hdl, unit_tests, Bubbles};
+use testbench::unit_tests;
 use vectors::polar_encode::Scale;
 use vectors::sincos::MODEL;
 
-unit_tests!(sincos, SinCosUnit, MODEL);
+unit_tests!(sincos, SinCosUnit, MODEL, exhaustive: [rust_hdl, verilator, icarus] with Bubbles::Random { one_in: 3, seed: 2 });
 
 fn all() -> Vec<Vec<i64>> {
     (MODEL.exhaustive.unwrap())()
-}
-
-#[test]
-fn sincos_exhaustive_rust_hdl() {
-    rust_hdl::<SinCosUnit>(&MODEL, &all(), Bubbles::Random { one_in: 3, seed: 2 }).assert_clean("rust-hdl, every angle");
-}
-
-#[test]
-fn sincos_exhaustive_verilator() {
-    external::<SinCosUnit>(Simulator::Verilator, &MODEL, &all(), Bubbles::BackToBack).assert_clean("verilator, every angle");
-}
-
-#[test]
-fn sincos_exhaustive_icarus() {
-    external::<SinCosUnit>(Simulator::Icarus, &MODEL, &all(), Bubbles::BackToBack).assert_clean("icarus, every angle");
 }
 
 #[test]
