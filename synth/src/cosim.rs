@@ -249,7 +249,7 @@ impl Built {
     /// Run the slots (None = a bubble), flushing the pipeline afterwards; collect (cycle, outputs) of valid cycles.
     pub fn run(&self, slots: &[Option<Vec<u64>>]) -> Result<rtl::stream::Collected, String> {
         match self.sim {
-            Simulator::Verilator => self.run_records(slots).map(|(c, _)| c),
+            Simulator::Verilator => self.run_frame(slots).map(|f| f.collected()),
             Simulator::Icarus => self.run_text(slots),
         }
     }
@@ -313,33 +313,24 @@ impl Built {
         }
     }
 
-    /// Verilator in this process, with its wall time in seconds (the slots' encoding, the simulation, and the
-    /// output records).
-    pub fn run_frame(&self, slots: &[Option<Vec<u64>>]) -> Result<(Frame, f64), String> {
+    /// Verilator in this process, on one model: the slots' encoding, the simulation and the output records (the
+    /// callers time it).
+    pub fn run_frame(&self, slots: &[Option<Vec<u64>>]) -> Result<Frame, String> {
         if self.sim != Simulator::Verilator {
             return Err("a frame in this process is Verilator's".into());
         }
-        let t = std::time::Instant::now();
-        let f = self.run_slots(slots)?;
-        Ok((f, t.elapsed().as_secs_f64()))
-    }
-
-    /// `run_frame`, as (cycle, outputs) pairs.
-    pub fn run_records(&self, slots: &[Option<Vec<u64>>]) -> Result<(rtl::stream::Collected, f64), String> {
-        let (f, secs) = self.run_frame(slots)?;
-        Ok((f.collected(), secs))
+        self.run_slots(slots)
     }
 
     /// The slots cut into `parts` runs at once, each on its own model in its own thread (the machine's cores),
-    /// joined in order, with the wall time of the whole. Only for units whose outputs depend on their inputs alone
+    /// joined in order. Only for units whose outputs depend on their inputs alone
     /// (every unit so far: no state carries from one slot to the next), since each part starts from a fresh model.
-    pub fn run_split(&self, slots: &[Option<Vec<u64>>], parts: usize) -> Result<(Frame, f64), String> {
+    pub fn run_split(&self, slots: &[Option<Vec<u64>>], parts: usize) -> Result<Frame, String> {
         if self.sim != Simulator::Verilator {
             return Err("a frame in this process is Verilator's".into());
         }
         let per = slots.len().div_ceil(parts.max(1)).max(1);
         let chunks: Vec<&[Option<Vec<u64>>]> = slots.chunks(per).collect();
-        let t = std::time::Instant::now();
         let results: Vec<Result<Frame, String>> = std::thread::scope(|s| {
             let hs: Vec<_> = chunks.iter().map(|ch| s.spawn(move || self.run_slots(ch))).collect();
             hs.into_iter().map(|h| h.join().unwrap_or_else(|_| Err("a simulator thread panicked".into()))).collect()
@@ -354,7 +345,7 @@ impl Built {
             }
             offset += ch.len() as u64;
         }
-        Ok((all, t.elapsed().as_secs_f64()))
+        Ok(all)
     }
 
     /// The bare loop: `cycles` clocks on inputs generated inside the library, no memory traffic and no output.

@@ -43,22 +43,6 @@ pub enum Decode {
     HemiOct,
 }
 
-impl Decode {
-    /// The decode that reads an encoder's texels.
-    pub fn for_encoder(e: crate::cart_encode::Encoder) -> Decode {
-        match e {
-            crate::cart_encode::Encoder::HemiOct => Decode::HemiOct,
-            _ => Decode::Seed,
-        }
-    }
-    pub fn model(self) -> &'static UnitModel {
-        match self {
-            Decode::Seed => &MODEL,
-            Decode::HemiOct => &MODEL_HEMI_OCT,
-        }
-    }
-}
-
 /// The seed pipeline's trace (`cart_decode`).
 pub fn exact_trace(i: &[i64]) -> Trace {
     exact_trace_with(Decode::Seed, i)
