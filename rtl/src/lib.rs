@@ -20,6 +20,7 @@ pub mod shared {
     pub mod normalise;
     pub mod q;
     pub mod ram_delay;
+    pub mod sm_mul;
 }
 
 /// Seed 000's second embodiment: Cartesian texels, per-pixel lights.
@@ -45,5 +46,5 @@ pub mod stream;
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
-pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay};
+pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
 pub use stream::StreamUnit;

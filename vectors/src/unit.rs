@@ -113,15 +113,10 @@ macro_rules! unit_table {
                 gloss: $crate::gloss::MODEL, rtl::gloss::Gloss, [];
                 blend: $crate::blend::MODEL, rtl::blend::Blend, [];
                 cart_pipeline: $crate::cart_pipeline::MODEL, rtl::cart_pipeline::CartPipeline, [
-                    ("filter$out_b", "the texel's two components ride the bilinear unit's red and green; blue and alpha \
-                        are the same unit's other channels, tied to 0 and removed by synthesis"),
-                    ("filter$out_a", "as filter$out_b"),
                     ("light$valid_out", "the light path runs in lockstep with the bump path, whose valid is used"),
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];
                 cart_pipeline_hemi_oct: $crate::cart_pipeline::MODEL_HEMI_OCT, rtl::cart_pipeline::CartPipelineHemiOct, [
-                    ("filter$out_b", "as in cart_pipeline: the texel rides red and green"),
-                    ("filter$out_a", "as filter$out_b"),
                     ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];
@@ -200,4 +195,9 @@ pub fn generate(unit: &UnitModel, exhaustive: bool, count: usize, seed: u64) -> 
         v.extend((0..count).map(|_| (unit.random)(&mut rng)));
     }
     Ok(v)
+}
+
+/// The values a vector's bit patterns stand for (sign-extended for signed ports), in port order.
+pub fn from_patterns(patterns: &[u64], ports: &[Port]) -> Vec<i64> {
+    patterns.iter().zip(ports).map(|(&p, port)| crate::fixed::from_pattern(p, port.bits, port.signed)).collect()
 }

@@ -12,7 +12,7 @@
 //!   green) through `cart_decode_hemi_oct`, latency 47. Bilinear filtering of (U, V) is filtering of (x, z): the
 //!   map between them is linear.
 
-use crate::bilinear::Bilinear;
+use crate::bilinear::BilinearUnit;
 use crate::cart_decode::CartDecode;
 use crate::cart_decode_hemi_oct::CartDecodeHemiOct;
 use crate::delay::Delay;
@@ -76,7 +76,8 @@ pub struct $t {
     pub out_r: Signal<Out, U8>,
     pub out_g: Signal<Out, U8>,
     pub out_b: Signal<Out, U8>,
-    pub filter: Bilinear,
+    pub filter: [BilinearUnit<8, 8>; 2], // TexelX (or U), TexelZ (or V)
+    filter_valid: Delay<Bit, { crate::bilinear::LATENCY }>,
     pub decode: $dec,
     pub bump_norm: Normalise,
     pub light: LightIter,
@@ -94,43 +95,29 @@ pub struct $t {
 impl Logic for $t {
     #[hdl_gen]
     fn update(&mut self) {
-        self.filter.clock.next = self.clock.val();
-        self.decode.clock.next = self.clock.val();
-        self.bump_norm.clock.next = self.clock.val();
-        self.light.clock.next = self.clock.val();
-        self.light_norm.clock.next = self.clock.val();
-        self.dot.clock.next = self.clock.val();
-        self.gloss.clock.next = self.clock.val();
-        self.blend.clock.next = self.clock.val();
-        self.conc_dly.clock.next = self.clock.val();
-        self.p_dly.clock.next = self.clock.val();
+        clock!(self, clock, filter_valid, decode, bump_norm, light, light_norm, dot, gloss, blend, conc_dly, p_dly);
         for i in 0..3 {
             self.light_dly[i].clock.next = self.clock.val();
         }
-        // filter: TexelX (or U) on red, TexelZ (or V) on green; blue and alpha unused (tied to 0, removed by synthesis)
-        self.filter.valid_in.next = self.valid_in.val();
-        self.filter.t00_r.next = self.t00_x.val();
-        self.filter.t00_g.next = self.t00_z.val();
-        self.filter.t10_r.next = self.t10_x.val();
-        self.filter.t10_g.next = self.t10_z.val();
-        self.filter.t01_r.next = self.t01_x.val();
-        self.filter.t01_g.next = self.t01_z.val();
-        self.filter.t11_r.next = self.t11_x.val();
-        self.filter.t11_g.next = self.t11_z.val();
-        self.filter.t00_b.next = 0.into();
-        self.filter.t00_a.next = 0.into();
-        self.filter.t10_b.next = 0.into();
-        self.filter.t10_a.next = 0.into();
-        self.filter.t01_b.next = 0.into();
-        self.filter.t01_a.next = 0.into();
-        self.filter.t11_b.next = 0.into();
-        self.filter.t11_a.next = 0.into();
-        self.filter.ublend.next = self.ublend.val();
-        self.filter.vblend.next = self.vblend.val();
+        // filter: two bilinear units, TexelX (or U) and TexelZ (or V)
+        for i in 0..2 {
+            self.filter[i].clock.next = self.clock.val();
+            self.filter[i].ublend.next = self.ublend.val();
+            self.filter[i].vblend.next = self.vblend.val();
+        }
+        self.filter_valid.d.next = self.valid_in.val();
+        self.filter[0].t00.next = self.t00_x.val();
+        self.filter[0].t10.next = self.t10_x.val();
+        self.filter[0].t01.next = self.t01_x.val();
+        self.filter[0].t11.next = self.t11_x.val();
+        self.filter[1].t00.next = self.t00_z.val();
+        self.filter[1].t10.next = self.t10_z.val();
+        self.filter[1].t01.next = self.t01_z.val();
+        self.filter[1].t11.next = self.t11_z.val();
         // decode the filtered texel
-        self.decode.valid_in.next = self.filter.valid_out.val();
-        self.decode.$tu.next = self.filter.out_r.val();
-        self.decode.$tv.next = self.filter.out_g.val();
+        self.decode.valid_in.next = self.filter_valid.q.val();
+        self.decode.$tu.next = self.filter[0].out.val();
+        self.decode.$tv.next = self.filter[1].out.val();
         // normalise the bump: INT9 → S10 by sign extension, UINT8 → S10 by zero extension
         self.bump_x10.next = bit_cast::<10, 9>(self.decode.bump_x.val());
         if self.decode.bump_x.val().get_bit(8) {

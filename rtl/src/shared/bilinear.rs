@@ -1,21 +1,183 @@
-//! `bilinear`: the colour filter's bilinear unit, four 8-bit channels, 8 blend-factor bits. Per channel:
-//! `a = t00·256 + (t10 − t00)·u`, `b = t01·256 + (t11 − t01)·u` (exact, U16), then
-//! `out = (a·256 + (b − a)·v + 2^15) >> 16` — the model's `a·(256 − v) + b·v` rounded half up, same value.
-//! Latency 11: widen; differences; magnitudes; the operand register; ·u; a and b; b − a; its magnitude; the operand
-//! register; ·v; the rounded sum. An operand register feeds nothing but its multiplier, so the placer can put it
-//! beside the DSP and the long route lands on a register-to-register path.
-//! Intermediates are carried in 16/32-bit registers (hdl_gen cannot bit_cast inside a loop); their real widths
-//! are in the comments, and yosys removes the constant upper bits.
+//! `bilinear`: the texture filter's bilinear units (seed 001, units 65–68).
+//!
+//! `BilinearUnit<W, F>` is one unit: one channel of `W` bits (W ≤ 8), `F` blend-factor bits (F ≤ 8), the patent's
+//! "four (usually identical) bilinear units, each of which computes one of the four colour channels". The colour
+//! filter holds four, the Cartesian pipeline two (its texel's two components), and the height-map normal generator
+//! will feed the same four with heights. Per channel:
+//! `a = t00·2^F + (t10 − t00)·u`, `b = t01·2^F + (t11 − t01)·u` (exact, U(W+F)), then
+//! `out = (a·2^F + (b − a)·v + 2^(2F−1)) >> 2F` — the model's `a·(2^F − v) + b·v` rounded half up, same value.
+//! Latency 11: widen; differences; the two `SmMul`s (|d|, operand registers, ·u); a and b; b − a; the `SmMul`
+//! (|b − a|, operand registers, ·v); the rounded sum.
+//!
+//! `Bilinear` is the unit `bilinear`: four `BilinearUnit<8, 8>` on the RGBA channels, with one valid flag.
+//! Values are carried in 16/32-bit containers (rust-hdl multiplies only 16 × 16 → 32); the comments give their real
+//! widths, and yosys removes the constant upper bits.
 
 use crate::delay::Delay;
+use crate::q::U8;
+use crate::sm_mul::{self, SmMul};
 use crate::stream_unit;
 use rust_hdl::prelude::*;
-use crate::q::U8;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
 
+/// One bilinear unit: `W`-bit texels, `F`-bit blend factors (`u`, `v` ∈ 0..2^F, the second texel's weight u/2^F).
+#[derive(LogicBlock)]
+pub struct BilinearUnit<const W: usize, const F: usize> {
+    pub clock: Signal<In, Clock>,
+    pub t00: Signal<In, Bits<W>>,
+    pub t10: Signal<In, Bits<W>>,
+    pub t01: Signal<In, Bits<W>>,
+    pub t11: Signal<In, Bits<W>>,
+    pub ublend: Signal<In, Bits<F>>,
+    pub vblend: Signal<In, Bits<F>>,
+    /// The filtered channel, LATENCY clocks later (UW).
+    pub out: Signal<Out, Bits<W>>,
+    shift_f: Constant<Bits<8>>,   // F
+    shift_2f: Constant<Bits<5>>,  // 2F, an index into 32 bits
+    half: Constant<Bits<32>>,     // 2^(2F−1), the rounding constant
+    u: Delay<Bits<16>, 2>,        // u, to meet the differences at the multipliers (UF)
+    v: Delay<Bits<16>, 7>,        // v, to meet b − a (UF)
+    // stage 1: the texels widened (UW in 16 bits), the two bases (UW in 32)
+    s1_t00: DFF<Bits<16>>,
+    s1_t10: DFF<Bits<16>>,
+    s1_t01: DFF<Bits<16>>,
+    s1_t11: DFF<Bits<16>>,
+    s1_b0: DFF<Bits<32>>,
+    s1_b1: DFF<Bits<32>>,
+    // stage 2: t10 − t00, t11 − t01 (S(W), two's complement in 16 bits; |d| ≤ 2^W − 1 fits SmMul's 16)
+    s2_d0: DFF<Bits<16>>,
+    s2_d1: DFF<Bits<16>>,
+    s2_b0: DFF<Bits<32>>,
+    s2_b1: DFF<Bits<32>>,
+    // stages 3–5: |d|·u ≤ (2^W − 1)(2^F − 1) < 2^(W+F), with the bases carried beside the multipliers
+    mul0: SmMul<16>,
+    mul1: SmMul<16>,
+    b0: Delay<Bits<32>, { sm_mul::LATENCY }>,
+    b1: Delay<Bits<32>, { sm_mul::LATENCY }>,
+    w_base0: Signal<Local, Bits<32>>, // t00·2^F (U(W+F))
+    w_base1: Signal<Local, Bits<32>>, // t01·2^F (U(W+F))
+    // stage 6: a, b ∈ 0..(2^W − 1)·2^F (U(W+F)), exact
+    s6_a: DFF<Bits<32>>,
+    s6_b: DFF<Bits<32>>,
+    // stage 7: b − a (S(W+F), two's complement in 32 bits; |b − a| ≤ (2^W − 1)·2^F < 2^16 fits SmMul's 16)
+    s7_e: DFF<Bits<32>>,
+    s7_a: DFF<Bits<32>>,
+    // stages 8–10: |b − a|·v < 2^(W+2F), a carried
+    mul2: SmMul<32>,
+    a: Delay<Bits<32>, { sm_mul::LATENCY }>,
+    w_a: Signal<Local, Bits<32>>, // a·2^F (U(W+2F))
+    w_r: Signal<Local, Bits<32>>, // a·2^F ± |b − a|·v + 2^(2F−1) ∈ 0..2^(W+2F) (U(W+2F) ≤ 24 bits), exact
+    // stage 11: the top W bits of W + 2F: truncation of the rounded sum, so round half up overall
+    s11_out: DFF<Bits<W>>,
+}
 
+impl<const W: usize, const F: usize> Default for BilinearUnit<W, F> {
+    fn default() -> Self {
+        assert!(W <= 8 && (1..=8).contains(&F), "BilinearUnit<{W}, {F}>: W ≤ 8 and 1 ≤ F ≤ 8 keep |b − a| in 16 bits");
+        Self {
+            clock: Default::default(),
+            t00: Default::default(),
+            t10: Default::default(),
+            t01: Default::default(),
+            t11: Default::default(),
+            ublend: Default::default(),
+            vblend: Default::default(),
+            out: Default::default(),
+            shift_f: Constant::new(Bits::from(F as u64)),
+            shift_2f: Constant::new(Bits::from(2 * F as u64)),
+            half: Constant::new(Bits::from(1u64 << (2 * F - 1))),
+            u: Default::default(),
+            v: Default::default(),
+            s1_t00: Default::default(),
+            s1_t10: Default::default(),
+            s1_t01: Default::default(),
+            s1_t11: Default::default(),
+            s1_b0: Default::default(),
+            s1_b1: Default::default(),
+            s2_d0: Default::default(),
+            s2_d1: Default::default(),
+            s2_b0: Default::default(),
+            s2_b1: Default::default(),
+            mul0: Default::default(),
+            mul1: Default::default(),
+            b0: Default::default(),
+            b1: Default::default(),
+            w_base0: Default::default(),
+            w_base1: Default::default(),
+            s6_a: Default::default(),
+            s6_b: Default::default(),
+            s7_e: Default::default(),
+            s7_a: Default::default(),
+            mul2: Default::default(),
+            a: Default::default(),
+            w_a: Default::default(),
+            w_r: Default::default(),
+            s11_out: Default::default(),
+        }
+    }
+}
+
+impl<const W: usize, const F: usize> Logic for BilinearUnit<W, F> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, u, v, s1_t00, s1_t10, s1_t01, s1_t11, s1_b0, s1_b1, s2_d0, s2_d1, s2_b0, s2_b1);
+        clock!(self, clock, mul0, mul1, b0, b1, s6_a, s6_b, s7_e, s7_a, mul2, a, s11_out);
+        self.u.d.next = bit_cast::<16, F>(self.ublend.val()); // UF in 16, widening
+        self.v.d.next = bit_cast::<16, F>(self.vblend.val()); // UF in 16, widening
+        // stage 1: widening only
+        self.s1_t00.d.next = bit_cast::<16, W>(self.t00.val());
+        self.s1_t10.d.next = bit_cast::<16, W>(self.t10.val());
+        self.s1_t01.d.next = bit_cast::<16, W>(self.t01.val());
+        self.s1_t11.d.next = bit_cast::<16, W>(self.t11.val());
+        self.s1_b0.d.next = bit_cast::<32, W>(self.t00.val());
+        self.s1_b1.d.next = bit_cast::<32, W>(self.t01.val());
+        // stage 2: S(W) differences, wrapping in 16 bits to their two's complement
+        self.s2_d0.d.next = self.s1_t10.q.val() - self.s1_t00.q.val();
+        self.s2_d1.d.next = self.s1_t11.q.val() - self.s1_t01.q.val();
+        self.s2_b0.d.next = self.s1_b0.q.val();
+        self.s2_b1.d.next = self.s1_b1.q.val();
+        // stages 3–5: |d|·u, the bases beside
+        self.mul0.x.next = self.s2_d0.q.val();
+        self.mul0.w.next = self.u.q.val();
+        self.mul1.x.next = self.s2_d1.q.val();
+        self.mul1.w.next = self.u.q.val();
+        self.b0.d.next = self.s2_b0.q.val();
+        self.b1.d.next = self.s2_b1.q.val();
+        // stage 6: t·2^F ± |d|·u, exact (U(W+F); the result is a weighted mean of two UW values times 2^F)
+        self.w_base0.next = self.b0.q.val() << self.shift_f.val();
+        self.w_base1.next = self.b1.q.val() << self.shift_f.val();
+        if self.mul0.neg.val() {
+            self.s6_a.d.next = self.w_base0.val() - self.mul0.p.val();
+        } else {
+            self.s6_a.d.next = self.w_base0.val() + self.mul0.p.val();
+        }
+        if self.mul1.neg.val() {
+            self.s6_b.d.next = self.w_base1.val() - self.mul1.p.val();
+        } else {
+            self.s6_b.d.next = self.w_base1.val() + self.mul1.p.val();
+        }
+        // stage 7: b − a, wrapping in 32 bits to its two's complement
+        self.s7_e.d.next = self.s6_b.q.val() - self.s6_a.q.val();
+        self.s7_a.d.next = self.s6_a.q.val();
+        // stages 8–10: |b − a|·v, a beside
+        self.mul2.x.next = self.s7_e.q.val();
+        self.mul2.w.next = self.v.q.val();
+        self.a.d.next = self.s7_a.q.val();
+        // stage 11: a·2^F + 2^(2F−1) ± |b − a|·v, then bits 2F.. (truncation: with the half added, round half up)
+        self.w_a.next = self.a.q.val() << self.shift_f.val();
+        if self.mul2.neg.val() {
+            self.w_r.next = self.w_a.val() + self.half.val() - self.mul2.p.val();
+        } else {
+            self.w_r.next = self.w_a.val() + self.half.val() + self.mul2.p.val();
+        }
+        self.s11_out.d.next = self.w_r.val().get_bits::<W>(self.shift_2f.val().index());
+        self.out.next = self.s11_out.q.val();
+    }
+}
+
+/// The unit `bilinear`: the colour filter's four bilinear units on R, G, B and A, 8-bit texels, 8 blend bits.
 #[derive(LogicBlock, Default)]
 pub struct Bilinear {
     pub clock: Signal<In, Clock>,
@@ -43,244 +205,40 @@ pub struct Bilinear {
     pub out_g: Signal<Out, U8>,
     pub out_b: Signal<Out, U8>,
     pub out_a: Signal<Out, U8>,
-    // stage 1: texels widened (U8 in 16 bits; the two bases in 32)
-    s1_t00: [DFF<Bits<16>>; 4],
-    s1_t10: [DFF<Bits<16>>; 4],
-    s1_t01: [DFF<Bits<16>>; 4],
-    s1_t11: [DFF<Bits<16>>; 4],
-    s1_b0: [DFF<Bits<32>>; 4],
-    s1_b1: [DFF<Bits<32>>; 4],
-    u: [DFF<Bits<16>>; 3], // u carried to stage 3
-    v: [DFF<Bits<16>>; 8], // v carried to stage 7
-    mop_u0: [DFF<Bits<16>>; 4], // stage 3b: u once per multiplier (`mop_`: see `rtl/README.md`)
-    mop_u1: [DFF<Bits<16>>; 4],
-    mop_v: [DFF<Bits<16>>; 4], // stage 7b: v once per multiplier
-    // stage 2: t10 − t00, t11 − t01 (S9 in 16 bits)
-    s2_d0: [DFF<Bits<16>>; 4],
-    s2_d1: [DFF<Bits<16>>; 4],
-    s2_b0: [DFF<Bits<32>>; 4],
-    s2_b1: [DFF<Bits<32>>; 4],
-    // stage 3: magnitudes ≤ 255, signs
-    s3_m0: [DFF<Bits<16>>; 4],
-    s3_m1: [DFF<Bits<16>>; 4],
-    s3_n0: [DFF<Bit>; 4],
-    s3_n1: [DFF<Bit>; 4],
-    s3_b0: [DFF<Bits<32>>; 4],
-    s3_b1: [DFF<Bits<32>>; 4],
-    // stage 3b: the multipliers' operands again, and what travels beside them
-    s3b_m0: [DFF<Bits<16>>; 4],
-    s3b_m1: [DFF<Bits<16>>; 4],
-    s3b_n0: [DFF<Bit>; 4],
-    s3b_n1: [DFF<Bit>; 4],
-    s3b_b0: [DFF<Bits<32>>; 4],
-    s3b_b1: [DFF<Bits<32>>; 4],
-    // stage 4: |d|·u ≤ 255·255 (U16)
-    s4_p0: [DFF<Bits<32>>; 4],
-    s4_p1: [DFF<Bits<32>>; 4],
-    s4_n0: [DFF<Bit>; 4],
-    s4_n1: [DFF<Bit>; 4],
-    s4_b0: [DFF<Bits<32>>; 4],
-    s4_b1: [DFF<Bits<32>>; 4],
-    // stage 5: a, b ∈ 0..65,280 (U16)
-    s5_a: [DFF<Bits<32>>; 4],
-    s5_b: [DFF<Bits<32>>; 4],
-    // stage 6: b − a (S17, two's complement in 32 bits)
-    s6_e: [DFF<Bits<32>>; 4],
-    s6_a: [DFF<Bits<32>>; 4],
-    // stage 7: |b − a| ≤ 65,280 (U16), sign
-    s7_m: [DFF<Bits<16>>; 4],
-    s7_n: [DFF<Bit>; 4],
-    s7_a: [DFF<Bits<32>>; 4],
-    // stage 7b: the multiplier's operand again, and what travels beside it
-    s7b_m: [DFF<Bits<16>>; 4],
-    s7b_n: [DFF<Bit>; 4],
-    s7b_a: [DFF<Bits<32>>; 4],
-    // stage 8: |b − a|·v < 2^24
-    s8_q: [DFF<Bits<32>>; 4],
-    s8_n: [DFF<Bit>; 4],
-    s8_a: [DFF<Bits<32>>; 4],
-    // stage 9: (a·256 + 2^15 ± q) >> 16
-    s9_out: [DFF<U8>; 4],
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    w_base0: [Signal<Local, Bits<32>>; 4],
-    w_base1: [Signal<Local, Bits<32>>; 4],
-    w_em: [Signal<Local, Bits<32>>; 4],
-    w_a256: [Signal<Local, Bits<32>>; 4],
-    w_r: [Signal<Local, Bits<32>>; 4],
+    pub unit: [BilinearUnit<8, 8>; 4], // R, G, B, A
+    valid: Delay<Bit, LATENCY>,        // the valid flag, beside the units
 }
 
 impl Logic for Bilinear {
     #[hdl_gen]
     fn update(&mut self) {
-        self.valid.clock.next = self.clock.val();
-        self.valid.d.next = self.valid_in.val();
-        for i in 0..3 {
-            self.u[i].clock.next = self.clock.val();
-        }
-        for i in 0..8 {
-            self.v[i].clock.next = self.clock.val();
-        }
-        self.u[0].d.next = bit_cast::<16, 8>(self.ublend.val());
-        self.v[0].d.next = bit_cast::<16, 8>(self.vblend.val());
-        for i in 1..3 {
-            self.u[i].d.next = self.u[i - 1].q.val();
-        }
-        for i in 1..8 {
-            self.v[i].d.next = self.v[i - 1].q.val();
-        }
-        self.s1_t00[0].d.next = bit_cast::<16, 8>(self.t00_r.val());
-        self.s1_t10[0].d.next = bit_cast::<16, 8>(self.t10_r.val());
-        self.s1_t01[0].d.next = bit_cast::<16, 8>(self.t01_r.val());
-        self.s1_t11[0].d.next = bit_cast::<16, 8>(self.t11_r.val());
-        self.s1_b0[0].d.next = bit_cast::<32, 8>(self.t00_r.val());
-        self.s1_b1[0].d.next = bit_cast::<32, 8>(self.t01_r.val());
-        self.s1_t00[1].d.next = bit_cast::<16, 8>(self.t00_g.val());
-        self.s1_t10[1].d.next = bit_cast::<16, 8>(self.t10_g.val());
-        self.s1_t01[1].d.next = bit_cast::<16, 8>(self.t01_g.val());
-        self.s1_t11[1].d.next = bit_cast::<16, 8>(self.t11_g.val());
-        self.s1_b0[1].d.next = bit_cast::<32, 8>(self.t00_g.val());
-        self.s1_b1[1].d.next = bit_cast::<32, 8>(self.t01_g.val());
-        self.s1_t00[2].d.next = bit_cast::<16, 8>(self.t00_b.val());
-        self.s1_t10[2].d.next = bit_cast::<16, 8>(self.t10_b.val());
-        self.s1_t01[2].d.next = bit_cast::<16, 8>(self.t01_b.val());
-        self.s1_t11[2].d.next = bit_cast::<16, 8>(self.t11_b.val());
-        self.s1_b0[2].d.next = bit_cast::<32, 8>(self.t00_b.val());
-        self.s1_b1[2].d.next = bit_cast::<32, 8>(self.t01_b.val());
-        self.s1_t00[3].d.next = bit_cast::<16, 8>(self.t00_a.val());
-        self.s1_t10[3].d.next = bit_cast::<16, 8>(self.t10_a.val());
-        self.s1_t01[3].d.next = bit_cast::<16, 8>(self.t01_a.val());
-        self.s1_t11[3].d.next = bit_cast::<16, 8>(self.t11_a.val());
-        self.s1_b0[3].d.next = bit_cast::<32, 8>(self.t00_a.val());
-        self.s1_b1[3].d.next = bit_cast::<32, 8>(self.t01_a.val());
+        clock!(self, clock, valid);
         for i in 0..4 {
-            self.s1_t00[i].clock.next = self.clock.val();
-            self.s1_t10[i].clock.next = self.clock.val();
-            self.s1_t01[i].clock.next = self.clock.val();
-            self.s1_t11[i].clock.next = self.clock.val();
-            self.s1_b0[i].clock.next = self.clock.val();
-            self.s1_b1[i].clock.next = self.clock.val();
-            self.s2_d0[i].clock.next = self.clock.val();
-            self.s2_d1[i].clock.next = self.clock.val();
-            self.s2_b0[i].clock.next = self.clock.val();
-            self.s2_b1[i].clock.next = self.clock.val();
-            self.s3_m0[i].clock.next = self.clock.val();
-            self.s3_m1[i].clock.next = self.clock.val();
-            self.s3_n0[i].clock.next = self.clock.val();
-            self.s3_n1[i].clock.next = self.clock.val();
-            self.s3_b0[i].clock.next = self.clock.val();
-            self.s3_b1[i].clock.next = self.clock.val();
-            self.mop_u0[i].clock.next = self.clock.val();
-            self.mop_u1[i].clock.next = self.clock.val();
-            self.mop_v[i].clock.next = self.clock.val();
-            self.s3b_m0[i].clock.next = self.clock.val();
-            self.s3b_m1[i].clock.next = self.clock.val();
-            self.s3b_n0[i].clock.next = self.clock.val();
-            self.s3b_n1[i].clock.next = self.clock.val();
-            self.s3b_b0[i].clock.next = self.clock.val();
-            self.s3b_b1[i].clock.next = self.clock.val();
-            self.s4_p0[i].clock.next = self.clock.val();
-            self.s4_p1[i].clock.next = self.clock.val();
-            self.s4_n0[i].clock.next = self.clock.val();
-            self.s4_n1[i].clock.next = self.clock.val();
-            self.s4_b0[i].clock.next = self.clock.val();
-            self.s4_b1[i].clock.next = self.clock.val();
-            self.s5_a[i].clock.next = self.clock.val();
-            self.s5_b[i].clock.next = self.clock.val();
-            self.s6_e[i].clock.next = self.clock.val();
-            self.s6_a[i].clock.next = self.clock.val();
-            self.s7_m[i].clock.next = self.clock.val();
-            self.s7_n[i].clock.next = self.clock.val();
-            self.s7_a[i].clock.next = self.clock.val();
-            self.s7b_m[i].clock.next = self.clock.val();
-            self.s7b_n[i].clock.next = self.clock.val();
-            self.s7b_a[i].clock.next = self.clock.val();
-            self.s8_q[i].clock.next = self.clock.val();
-            self.s8_n[i].clock.next = self.clock.val();
-            self.s8_a[i].clock.next = self.clock.val();
-            self.s9_out[i].clock.next = self.clock.val();
-            // stage 2
-            self.s2_d0[i].d.next = self.s1_t10[i].q.val() - self.s1_t00[i].q.val();
-            self.s2_d1[i].d.next = self.s1_t11[i].q.val() - self.s1_t01[i].q.val();
-            self.s2_b0[i].d.next = self.s1_b0[i].q.val();
-            self.s2_b1[i].d.next = self.s1_b1[i].q.val();
-            // stage 3
-            if self.s2_d0[i].q.val().get_bit(15) {
-                self.s3_m0[i].d.next = !self.s2_d0[i].q.val() + 1;
-            } else {
-                self.s3_m0[i].d.next = self.s2_d0[i].q.val();
-            }
-            if self.s2_d1[i].q.val().get_bit(15) {
-                self.s3_m1[i].d.next = !self.s2_d1[i].q.val() + 1;
-            } else {
-                self.s3_m1[i].d.next = self.s2_d1[i].q.val();
-            }
-            self.s3_n0[i].d.next = self.s2_d0[i].q.val().get_bit(15);
-            self.s3_n1[i].d.next = self.s2_d1[i].q.val().get_bit(15);
-            self.s3_b0[i].d.next = self.s2_b0[i].q.val();
-            self.s3_b1[i].d.next = self.s2_b1[i].q.val();
-            // stage 3b: carried
-            self.s3b_m0[i].d.next = self.s3_m0[i].q.val();
-            self.s3b_m1[i].d.next = self.s3_m1[i].q.val();
-            self.s3b_n0[i].d.next = self.s3_n0[i].q.val();
-            self.s3b_n1[i].d.next = self.s3_n1[i].q.val();
-            self.s3b_b0[i].d.next = self.s3_b0[i].q.val();
-            self.s3b_b1[i].d.next = self.s3_b1[i].q.val();
-            self.mop_u0[i].d.next = self.u[2].q.val();
-            self.mop_u1[i].d.next = self.u[2].q.val();
-            // stage 4: 16 × 16 → 32
-            self.s4_p0[i].d.next = self.s3b_m0[i].q.val() * self.mop_u0[i].q.val();
-            self.s4_p1[i].d.next = self.s3b_m1[i].q.val() * self.mop_u1[i].q.val();
-            self.s4_n0[i].d.next = self.s3b_n0[i].q.val();
-            self.s4_n1[i].d.next = self.s3b_n1[i].q.val();
-            self.s4_b0[i].d.next = self.s3b_b0[i].q.val();
-            self.s4_b1[i].d.next = self.s3b_b1[i].q.val();
-            // stage 5: t·256 ± |d|·u
-            self.w_base0[i].next = self.s4_b0[i].q.val() << 8;
-            self.w_base1[i].next = self.s4_b1[i].q.val() << 8;
-            if self.s4_n0[i].q.val() {
-                self.s5_a[i].d.next = self.w_base0[i].val() - self.s4_p0[i].q.val();
-            } else {
-                self.s5_a[i].d.next = self.w_base0[i].val() + self.s4_p0[i].q.val();
-            }
-            if self.s4_n1[i].q.val() {
-                self.s5_b[i].d.next = self.w_base1[i].val() - self.s4_p1[i].q.val();
-            } else {
-                self.s5_b[i].d.next = self.w_base1[i].val() + self.s4_p1[i].q.val();
-            }
-            // stage 6
-            self.s6_e[i].d.next = self.s5_b[i].q.val() - self.s5_a[i].q.val();
-            self.s6_a[i].d.next = self.s5_a[i].q.val();
-            // stage 7
-            if self.s6_e[i].q.val().get_bit(31) {
-                self.w_em[i].next = !self.s6_e[i].q.val() + 1;
-            } else {
-                self.w_em[i].next = self.s6_e[i].q.val();
-            }
-            self.s7_m[i].d.next = self.w_em[i].val().get_bits::<16>(0);
-            self.s7_n[i].d.next = self.s6_e[i].q.val().get_bit(31);
-            self.s7_a[i].d.next = self.s6_a[i].q.val();
-            // stage 7b: carried
-            self.s7b_m[i].d.next = self.s7_m[i].q.val();
-            self.s7b_n[i].d.next = self.s7_n[i].q.val();
-            self.s7b_a[i].d.next = self.s7_a[i].q.val();
-            self.mop_v[i].d.next = self.v[7].q.val();
-            // stage 8: 16 × 16 → 32
-            self.s8_q[i].d.next = self.s7b_m[i].q.val() * self.mop_v[i].q.val();
-            self.s8_n[i].d.next = self.s7b_n[i].q.val();
-            self.s8_a[i].d.next = self.s7b_a[i].q.val();
-            // stage 9: a·256 + 2^15 ± q, then the top byte of 24
-            self.w_a256[i].next = self.s8_a[i].q.val() << 8;
-            if self.s8_n[i].q.val() {
-                self.w_r[i].next = self.w_a256[i].val() + 32768 - self.s8_q[i].q.val();
-            } else {
-                self.w_r[i].next = self.w_a256[i].val() + 32768 + self.s8_q[i].q.val();
-            }
-            self.s9_out[i].d.next = self.w_r[i].val().get_bits::<8>(16);
+            self.unit[i].clock.next = self.clock.val();
+            self.unit[i].ublend.next = self.ublend.val();
+            self.unit[i].vblend.next = self.vblend.val();
         }
-        self.out_r.next = self.s9_out[0].q.val();
-        self.out_g.next = self.s9_out[1].q.val();
-        self.out_b.next = self.s9_out[2].q.val();
-        self.out_a.next = self.s9_out[3].q.val();
+        self.valid.d.next = self.valid_in.val();
+        self.unit[0].t00.next = self.t00_r.val();
+        self.unit[0].t10.next = self.t10_r.val();
+        self.unit[0].t01.next = self.t01_r.val();
+        self.unit[0].t11.next = self.t11_r.val();
+        self.unit[1].t00.next = self.t00_g.val();
+        self.unit[1].t10.next = self.t10_g.val();
+        self.unit[1].t01.next = self.t01_g.val();
+        self.unit[1].t11.next = self.t11_g.val();
+        self.unit[2].t00.next = self.t00_b.val();
+        self.unit[2].t10.next = self.t10_b.val();
+        self.unit[2].t01.next = self.t01_b.val();
+        self.unit[2].t11.next = self.t11_b.val();
+        self.unit[3].t00.next = self.t00_a.val();
+        self.unit[3].t10.next = self.t10_a.val();
+        self.unit[3].t01.next = self.t01_a.val();
+        self.unit[3].t11.next = self.t11_a.val();
+        self.out_r.next = self.unit[0].out.val();
+        self.out_g.next = self.unit[1].out.val();
+        self.out_b.next = self.unit[2].out.val();
+        self.out_a.next = self.unit[3].out.val();
         self.valid_out.next = self.valid.q.val();
     }
 }
