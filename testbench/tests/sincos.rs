@@ -12,26 +12,31 @@ fn all() -> Vec<Vec<i64>> {
 
 #[test]
 fn rtl_tables_are_the_models() {
-    let e = vectors::sincos::elevation_table(Scale::Seed, 8, 8);
-    let c = vectors::sincos::cos_sign_table(Scale::Seed, 8);
-    let (re, rc) = (rtl::tables::elevation(false), rtl::tables::cos_sign(false));
-    for k in 0..256 {
-        assert_eq!(re[k], vectors::sincos::pack_elevation(e[k], 8), "elevation entry {k}");
-        assert_eq!(rc[k], vectors::sincos::pack_cos_sign(c[k], 8), "cosine entry {k}");
-    }
-    // and the Dreamcast scale's
-    let e = vectors::sincos::elevation_table(Scale::Dc255, 8, 8);
-    let c = vectors::sincos::cos_sign_table(Scale::Dc255, 8);
-    let (re, rc) = (rtl::tables::elevation(true), rtl::tables::cos_sign(true));
-    for k in 0..256 {
-        assert_eq!(re[k], vectors::sincos::pack_elevation(e[k], 8), "Dreamcast elevation entry {k}");
-        assert_eq!(rc[k], vectors::sincos::pack_cos_sign(c[k], 8), "Dreamcast cosine entry {k}");
+    for (sc, dc) in [(Scale::Seed, false), (Scale::Dc255, true)] {
+        let e = vectors::sincos::elevation_table(sc, 8, 8);
+        let c = vectors::sincos::cos_sign_table(sc, 8);
+        let (re, rc) = (rtl::tables::elevation(dc, 8, 8), rtl::tables::cos_sign(dc, 8, 8));
+        for k in 0..256 {
+            assert_eq!((re[k].0 as i64, re[k].1 as i64), e[k], "{sc:?} elevation entry {k}");
+            assert_eq!((rc[k].0 as i64, rc[k].1), c[k], "{sc:?} cosine entry {k}");
+        }
     }
     let (l, x) = (rtl::tables::log2(), rtl::tables::exp2());
     for k in 0..256 {
         assert_eq!(l[k] as i64, vectors::power::log_table()[k], "log entry {k}");
         assert_eq!(x[k] as i64, vectors::power::exp_table()[k], "exp entry {k}");
     }
+}
+
+#[test]
+fn the_polar_shade_unit_holds_the_tested_table_blocks() {
+    // a type check: polar_shade's sine/cosine and cosine blocks are the units `sincos` and `cos_sign` (with the
+    // Dreamcast contents in polar_shade_dc); this fails to compile if either becomes a block of its own again
+    fn same<T>(_: &T, _: &T) {}
+    let (seed, dc) = (rtl::polar_shade::PolarShade::<false>::default(), rtl::polar_shade::PolarShade::<true>::default());
+    same(&seed.sin_cos, &SinCosUnit::default());
+    same(&seed.cos_sign, &rtl::cos_sign::CosSignUnit::default());
+    same(&dc.sin_cos, &SinCos::<8, 8, true>::default());
 }
 
 // Two other sizes of the same block, every angle, three ways: 64 entries of 8 bits and 1,024 of 12.
@@ -72,7 +77,7 @@ fn other_table_sizes_three_ways() {
 fn rtl_entries_are_the_models_for_every_size_of_the_lut_table() {
     for &(tb, w) in vectors::sincos::LUT_SIZES {
         let m = vectors::sincos::elevation_table(Scale::Seed, tb, w);
-        let r = rtl::sincos::entries(tb as usize, w as usize);
+        let r = rtl::tables::elevation(false, tb as usize, w as usize);
         assert_eq!(r.len(), m.len());
         for k in 0..m.len() {
             assert_eq!((r[k].0 as i64, r[k].1 as i64), m[k], "{}x{w}, entry {k}", 1 << tb);

@@ -1,29 +1,18 @@
 //! `cos_sign`: the cosine unit [18] of seed 000's FIG. 3 on its own, table size and output width as parameters:
 //! d = (R − Q) mod 256 → |cos d| as UNORM_W and the sign bit [26], from 2^TB-entry tables over the full turn (the
 //! ROM widget) addressed by d's top TB bits (truncation). Latency 2: the address; the tables. The unit `cos_sign`
-//! is `CosSign<8, 8>`, the table the polar shade unit holds (there packed with its sign in one word).
+//! is `CosSign<8, 8>`, the block the polar shade unit holds (there `CosSign<8, 8, DC>`, with the Dreamcast scale's
+//! contents when `DC`). Contents: `crate::tables::cos_sign`.
 
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
-use std::f64::consts::TAU;
 
 pub const LATENCY: usize = 2;
 
-/// Entry i: (|cos|, cos < 0) of i·360°/2^TB, the magnitude rounded to UNORM_W. `vectors::cos_sign` computes the
-/// same independently; a test compares them for every size of the LUT-size table.
-pub fn entries(tb: usize, w: usize) -> Vec<(u64, bool)> {
-    (0..1u64 << tb)
-        .map(|i| {
-            let c = (i as f64 * TAU / (1u64 << tb) as f64).cos();
-            ((c.abs() * ((1u64 << w) - 1) as f64).round() as u64, c < 0.0)
-        })
-        .collect()
-}
-
 #[derive(LogicBlock)]
-pub struct CosSign<const TB: usize, const W: usize> {
+pub struct CosSign<const TB: usize, const W: usize, const DC: bool = false> {
     pub clock: Signal<In, Clock>,
     pub valid_in: Signal<In, Bit>,
     pub d: Signal<In, Bits<8>>,
@@ -41,10 +30,10 @@ pub struct CosSign<const TB: usize, const W: usize> {
     w_top: Signal<Local, Bits<8>>,
 }
 
-impl<const TB: usize, const W: usize> Default for CosSign<TB, W> {
+impl<const TB: usize, const W: usize, const DC: bool> Default for CosSign<TB, W, DC> {
     fn default() -> Self {
         assert!(TB <= 8 && W <= 16, "CosSign<{TB}, {W}>: at most 2^8 entries of 16 bits");
-        let e = entries(TB, W);
+        let e = crate::tables::cos_sign(DC, TB, W);
         Self {
             clock: Default::default(),
             valid_in: Default::default(),
@@ -64,7 +53,7 @@ impl<const TB: usize, const W: usize> Default for CosSign<TB, W> {
     }
 }
 
-impl<const TB: usize, const W: usize> Logic for CosSign<TB, W> {
+impl<const TB: usize, const W: usize, const DC: bool> Logic for CosSign<TB, W, DC> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_addr, s2_mag, s2_neg);

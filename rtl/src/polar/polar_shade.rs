@@ -1,7 +1,7 @@
 //! `polar_shade`: seed 000's FIG. 3 up to the clamp, `k1 + k2·sin S + k3·cos S·cos(R − Q)`, one texel per clock.
 //! See `vectors::polar_shade` for the recipe. Latency 10:
-//! 1 S, R − Q (mod 256, the subtractor [16]) and the k's registered;
-//! 2 the tables [10] and [18];
+//! 1 S, R − Q (mod 256, the subtractor [16]) and the k's registered (S and R − Q as the table blocks' addresses);
+//! 2 the tables: the sine/cosine unit [10] and the cosine unit [18], the tested `sincos` and `cos_sign` blocks;
 //! 3 the products k2·sin S [12] and k3·cos S [14];
 //! 4–5 both divided by 255 (`Div255`);
 //! 6 the product t14·|cos(R − Q)| [20] and the adder k1 + t12 [22];
@@ -12,11 +12,14 @@
 use crate::delay::Delay;
 use crate::div255::Div255;
 use crate::stream_unit;
-use crate::tables::{CosSignTable, ElevationTable};
+use crate::cos_sign::CosSign;
+use crate::sincos::SinCos;
 use rust_hdl::prelude::*;
 use crate::q::{S11, U8};
 
 pub const LATENCY: usize = 10;
+// the two table blocks run side by side, so they must take as long as each other
+const _: () = assert!(crate::sincos::LATENCY == crate::cos_sign::LATENCY);
 
 
 /// `DC`: the Dreamcast toolchains' angle scale (255 steps) in both tables; the seed's (256) when false.
@@ -33,17 +36,14 @@ pub struct PolarShade<const DC: bool> {
     pub valid_out: Signal<Out, Bit>,
     pub sum: Signal<Out, S11>,
     pub shade: Signal<Out, U8>,
-    sin_cos: ElevationTable<DC>,
-    cos_sign: CosSignTable<DC>,
+    // stages 1–2: the table blocks register their address, then their data
+    pub sin_cos: SinCos<8, 8, DC>,
+    pub cos_sign: CosSign<8, 8, DC>,
     // stage 1
-    s1_s: DFF<U8>,
-    s1_d: DFF<U8>,
     s1_k1: DFF<U8>,
     s1_k2: DFF<U8>,
     s1_k3: DFF<U8>,
-    // stage 2: table words (sin | cos << 8) and (|cos| | negative << 8)
-    s2_e: DFF<Bits<16>>,
-    s2_c: DFF<Bits<9>>,
+    // stage 2
     s2_k1: DFF<U8>,
     s2_k2: DFF<U8>,
     s2_k3: DFF<U8>,
@@ -72,8 +72,9 @@ pub struct PolarShade<const DC: bool> {
     // stage 10: the clamp
     s10_shade: DFF<U8>,
     s10_sum: DFF<S11>,
-    valid: Delay<Bit, LATENCY>,
+    valid: Delay<Bit, { LATENCY - crate::sincos::LATENCY }>, // the valid flag after the table blocks'
     w_d: Signal<Local, U8>,
+    w_s10: Signal<Local, Bits<10>>,
     w_a: [Signal<Local, Bits<16>>; 2],
     w_b: [Signal<Local, Bits<16>>; 2],
     w_p: [Signal<Local, Bits<32>>; 2],
@@ -87,8 +88,9 @@ pub struct PolarShade<const DC: bool> {
 impl<const DC: bool> Logic for PolarShade<DC> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_s, s1_d, s1_k1, s1_k2, s1_k3, s2_e, s2_c, s2_k1, s2_k2, s2_k3, s3_p12, s3_p14,
+        dff_setup!(self, clock, s1_k1, s1_k2, s1_k3, s2_k1, s2_k2, s2_k3, s3_p12, s3_p14,
             s3_k1, s3_cd, s3_neg, s6_p20, s6_a22, s6_neg, s9_sum, s10_shade, s10_sum);
+        clock!(self, clock, sin_cos, cos_sign);
         self.div12.clock.next = self.clock.val();
         self.div14.clock.next = self.clock.val();
         self.div20.clock.next = self.clock.val();
@@ -98,34 +100,35 @@ impl<const DC: bool> Logic for PolarShade<DC> {
         self.a22_dly.clock.next = self.clock.val();
         self.neg2_dly.clock.next = self.clock.val();
         self.valid.clock.next = self.clock.val();
-        self.valid.d.next = self.valid_in.val();
+        // the table blocks carry the valid flag through stages 1–2 (both the same flag), the chain the rest
+        self.valid.d.next = self.sin_cos.valid_out.val() & self.cos_sign.valid_out.val();
         // stage 1: the subtractor [16], modulo 256 (the 8-bit difference wraps in both simulators)
         self.w_d.next = self.r.val() - self.q.val();
-        self.s1_d.d.next = self.w_d.val();
-        self.s1_s.d.next = self.s.val();
+        self.cos_sign.valid_in.next = self.valid_in.val();
+        self.cos_sign.d.next = self.w_d.val();
+        // S (U8, 256 = 90°) as the sine/cosine block's 10-bit angle (1024 = 90°): S·4, whose top 8 bits are S
+        self.w_s10.next = bit_cast::<10, 8>(self.s.val());
+        self.sin_cos.valid_in.next = self.valid_in.val();
+        self.sin_cos.angle.next = self.w_s10.val() << 2;
         self.s1_k1.d.next = self.k1.val();
         self.s1_k2.d.next = self.k2.val();
         self.s1_k3.d.next = self.k3.val();
-        // stage 2: the sine/cosine unit [10] and the cosine unit with its sign [18]
-        self.sin_cos.address.next = self.s1_s.q.val();
-        self.cos_sign.address.next = self.s1_d.q.val();
-        self.s2_e.d.next = self.sin_cos.data.val();
-        self.s2_c.d.next = self.cos_sign.data.val();
+        // stage 2: the tables, inside their blocks
         self.s2_k1.d.next = self.s1_k1.q.val();
         self.s2_k2.d.next = self.s1_k2.q.val();
         self.s2_k3.d.next = self.s1_k3.q.val();
         // stage 3: multipliers [12] and [14], U8 × U8 → U16
         self.w_a[0].next = bit_cast::<16, 8>(self.s2_k2.q.val());
-        self.w_b[0].next = bit_cast::<16, 8>(self.s2_e.q.val().get_bits::<8>(0));
+        self.w_b[0].next = bit_cast::<16, 8>(self.sin_cos.sin.val());
         self.w_a[1].next = bit_cast::<16, 8>(self.s2_k3.q.val());
-        self.w_b[1].next = bit_cast::<16, 8>(self.s2_e.q.val().get_bits::<8>(8));
+        self.w_b[1].next = bit_cast::<16, 8>(self.sin_cos.cos.val());
         self.w_p[0].next = self.w_a[0].val() * self.w_b[0].val();
         self.w_p[1].next = self.w_a[1].val() * self.w_b[1].val();
         self.s3_p12.d.next = self.w_p[0].val().get_bits::<16>(0);
         self.s3_p14.d.next = self.w_p[1].val().get_bits::<16>(0);
         self.s3_k1.d.next = self.s2_k1.q.val();
-        self.s3_cd.d.next = self.s2_c.q.val().get_bits::<8>(0);
-        self.s3_neg.d.next = self.s2_c.q.val().get_bit(8);
+        self.s3_cd.d.next = self.cos_sign.mag.val();
+        self.s3_neg.d.next = self.cos_sign.neg.val().any(); // Bits<1> → Bit (a scalar in Verilog: no bit select)
         // stages 4–5: /255, rounded
         self.div12.num.next = self.s3_p12.q.val();
         self.div14.num.next = self.s3_p14.q.val();

@@ -1,32 +1,20 @@
 //! `sincos`: the sine/cosine unit [10] of seed 000's FIG. 3 on its own, with its table size and output width as
 //! parameters: a 10-bit elevation angle (1024 = 90°) → sin and cos as UNORM_W, from two 2^TB-entry tables (the
 //! ROM widget) addressed by the angle's top TB bits (truncation). Latency 2: the address; the tables.
-//! The unit `sincos` is `SinCos<8, 8>`, the size the polar shade unit uses; `bumprtl accuracy --lut-cost`
-//! synthesises the other sizes of the LUT-size table from this same block.
+//! The unit `sincos` is `SinCos<8, 8>`, the block the polar shade unit holds (there `SinCos<8, 8, DC>`, fed S·4,
+//! with the Dreamcast scale's contents when `DC`); `bumprtl accuracy --lut-cost` synthesises the other sizes of the
+//! LUT-size table from this same block. Contents: `crate::tables::elevation`.
 
 use crate::delay::Delay;
 use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
-use std::f64::consts::FRAC_PI_2;
 
 pub const LATENCY: usize = 2;
 pub const ANGLE_BITS: usize = 10;
 
-/// Entry i of the tables, seed scale: (sin, cos) of i·90°/2^TB, rounded to UNORM_W. `vectors::sincos` computes
-/// the same independently; a test compares them for every size of the LUT-size table.
-pub fn entries(tb: usize, w: usize) -> Vec<(u64, u64)> {
-    let full = ((1u64 << w) - 1) as f64;
-    (0..1u64 << tb)
-        .map(|i| {
-            let a = i as f64 * FRAC_PI_2 / (1u64 << tb) as f64;
-            ((a.sin() * full).round() as u64, (a.cos() * full).round() as u64)
-        })
-        .collect()
-}
-
 #[derive(LogicBlock)]
-pub struct SinCos<const TB: usize, const W: usize> {
+pub struct SinCos<const TB: usize, const W: usize, const DC: bool = false> {
     pub clock: Signal<In, Clock>,
     pub valid_in: Signal<In, Bit>,
     pub angle: Signal<In, Bits<ANGLE_BITS>>,
@@ -44,10 +32,10 @@ pub struct SinCos<const TB: usize, const W: usize> {
     w_top: Signal<Local, Bits<ANGLE_BITS>>,
 }
 
-impl<const TB: usize, const W: usize> Default for SinCos<TB, W> {
+impl<const TB: usize, const W: usize, const DC: bool> Default for SinCos<TB, W, DC> {
     fn default() -> Self {
         assert!(TB <= ANGLE_BITS && W <= 16, "SinCos<{TB}, {W}>: at most 2^10 entries of 16 bits");
-        let e = entries(TB, W);
+        let e = crate::tables::elevation(DC, TB, W);
         Self {
             clock: Default::default(),
             valid_in: Default::default(),
@@ -67,7 +55,7 @@ impl<const TB: usize, const W: usize> Default for SinCos<TB, W> {
     }
 }
 
-impl<const TB: usize, const W: usize> Logic for SinCos<TB, W> {
+impl<const TB: usize, const W: usize, const DC: bool> Logic for SinCos<TB, W, DC> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_addr, s2_sin, s2_cos);

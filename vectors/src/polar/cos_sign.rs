@@ -22,9 +22,7 @@ crate::ports! {
 
 /// The table entry for d with a 2^tb-entry table of w-bit magnitudes: (|cos|, negative).
 pub fn exact_with(tb: u32, w: u32, d: i64) -> (i64, bool) {
-    let i = d >> (8 - tb); // truncate to the table's resolution
-    let c = (i as f64 * TAU / (1i64 << tb) as f64).cos();
-    ((c.abs() * ((1i64 << w) - 1) as f64).round() as i64, c < 0.0)
+    crate::sincos::cos_sign_entry(crate::polar_encode::Scale::Seed, tb, w, d >> (8 - tb)) // truncate to the table's resolution
 }
 
 /// cos d ×255, signed.

@@ -34,24 +34,28 @@ pub fn entry_angle(sc: Scale, tb: u32, i: i64) -> f64 {
     i as f64 * FRAC_PI_2 / d
 }
 
+/// Entry i of a 2^tb-entry elevation table: (sin, cos) of its angle, UNORM_W, rounded to nearest. The one formula
+/// of the model's sine/cosine tables.
+pub fn elevation_entry(sc: Scale, tb: u32, w: u32, i: i64) -> (i64, i64) {
+    let a = entry_angle(sc, tb, i);
+    (unorm(a.sin(), w), unorm(a.cos(), w))
+}
+
 /// sin and cos tables over a quarter turn: (sin, cos) per entry, UNORM_W.
 pub fn elevation_table(sc: Scale, tb: u32, w: u32) -> Vec<(i64, i64)> {
-    (0..1i64 << tb)
-        .map(|i| {
-            let a = entry_angle(sc, tb, i);
-            (unorm(a.sin(), w), unorm(a.cos(), w))
-        })
-        .collect()
+    (0..1i64 << tb).map(|i| elevation_entry(sc, tb, w, i)).collect()
+}
+
+/// Entry i of a 2^tb-entry cosine-with-sign table over a full turn: (|cos| UNORM_W rounded to nearest, cos < 0) of
+/// the first rotation difference d = i·2^(8 − tb) it covers. The one formula of the model's cosine tables.
+pub fn cos_sign_entry(sc: Scale, tb: u32, w: u32, i: i64) -> (i64, bool) {
+    let c = sc.rotation(i << (8 - tb)).cos();
+    (unorm(c.abs(), w), c < 0.0)
 }
 
 /// The cosine-with-sign table over a full turn, 256 entries indexed by (R − Q) mod 256: (|cos| UNORM_W, negative).
 pub fn cos_sign_table(sc: Scale, w: u32) -> Vec<(i64, bool)> {
-    (0..256)
-        .map(|d| {
-            let c = sc.rotation(d).cos();
-            (unorm(c.abs(), w), c < 0.0)
-        })
-        .collect()
+    (0..256).map(|d| cos_sign_entry(sc, 8, w, d)).collect()
 }
 
 /// Pack an elevation entry for a ROM word: sin in the low W bits, cos above.
@@ -75,9 +79,7 @@ crate::ports! {
 
 /// The standalone unit: 10-bit angle → table entry at its top TB bits.
 pub fn exact_with(sc: Scale, tb: u32, w: u32, angle: i64) -> (i64, i64) {
-    let i = angle >> (ANGLE_BITS - tb); // truncate to the table's resolution
-    let a = entry_angle(sc, tb, i);
-    (unorm(a.sin(), w), unorm(a.cos(), w))
+    elevation_entry(sc, tb, w, angle >> (ANGLE_BITS - tb)) // truncate to the table's resolution
 }
 
 /// The angle a 10-bit input stands for (seed scale: 1024 = 90°; Dreamcast: 1023 = 90°).
