@@ -1,17 +1,18 @@
-//! `bumprtl demo`: the embedded default scene through both of seed 000's pipelines — Cartesian (second
-//! embodiment) and polar (first embodiment, FIG. 3) — each through four paths (f64 ideal, bit-exact model,
-//! rust-hdl, Verilator), with pictures, waveforms, the Verilog, the seed's polar shortcomings shown, and one table
-//! of speed, hardware cost and error.
+//! `bumprtl demo`: the embedded default scene through every pipeline of seed 000 — Cartesian (second embodiment,
+//! with the seed's texels and with hemi-octahedral ones) and polar (first embodiment, FIG. 3) — each through four
+//! paths (f64 ideal, bit-exact model, rust-hdl, Verilator), with pictures, waveforms, the Verilog, the seed's polar
+//! shortcomings shown, and one table of speed, hardware cost and error. The pipelines do the work
+//! (`sim::pipeline`); this file is the command's flow and its printing.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use rtl::StreamUnit;
+use sim::pipeline::{Cartesian, Pipeline, Polar, PolarSetup, Prepared};
 use sim::render::{self, Image};
+use sim::scene::Scene;
 use std::path::Path;
 use std::time::Instant;
+use vectors::cart_pipeline::Decode;
 use vectors::polar_encode::Scale;
-use vectors::scene::Scene;
 use vectors::stats::{angle_deg, ErrorStats};
-use vectors::UnitModel;
 
 /// The polar surface of the demo: h = 1 (a pure dot product, k1 = 0) and p = 4.
 pub const POLAR_H: f64 = 1.0;
@@ -24,21 +25,31 @@ fn bar(len: u64, what: &str) -> ProgressBar {
     b
 }
 
-/// One pipeline through the three bit-exact paths (rust-hdl's only when asked for, Verilator's only where it is
-/// installed).
-struct Paths {
+/// One pipeline on the scene: its set-up, the three bit-exact paths (rust-hdl's only when asked for, Verilator's
+/// only where it is installed) and its errors against the ideal.
+struct Run<'a> {
+    pipe: &'a dyn Pipeline,
+    prep: Prepared,
+    ideal_s: f64,
     model: Image,
     hdl: Option<Image>,
     vl: Option<render::VerilatorRun>,
     mism_hdl: usize,
     mism_vl: usize,
+    shade: ErrorStats,
+    colour: ErrorStats,
+    normal: Option<ErrorStats>,
 }
 
-fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], out: &Path, rust_hdl: bool, verilator: bool) -> Result<Paths, String> {
-    let model = render::model(m, size, inputs);
+fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl: bool, verilator: bool) -> Result<Run<'a>, String> {
+    let (m, rtl) = (pipe.model(), pipe.rtl());
+    let t = Instant::now();
+    let prep = pipe.prepare(scene);
+    let ideal_s = t.elapsed().as_secs_f64();
+    let model = render::model(m, prep.size, &prep.inputs);
     let hdl = rust_hdl.then(|| {
-        let b = bar(inputs.len() as u64, &format!("rust-hdl: {}", m.name));
-        let hdl = render::rust_hdl::<U>(m, size, inputs, &|k| b.set_position(k as u64));
+        let b = bar(prep.inputs.len() as u64, &format!("rust-hdl: {}", m.name));
+        let hdl = rtl.rust_hdl(m, prep.size, &prep.inputs, &|k| b.set_position(k as u64));
         b.finish_and_clear();
         hdl
     });
@@ -46,26 +57,103 @@ fn three_paths<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], o
         let b = ProgressBar::new_spinner();
         b.set_message(format!("Verilator: building and running {}", m.name));
         b.enable_steady_tick(std::time::Duration::from_millis(200));
-        let vl = render::verilator::<U>(m, size, inputs, &out.join("verilator").join(m.name), 2);
+        let vl = rtl.verilator(m, prep.size, &prep.inputs, &out.join("verilator").join(m.name), 2);
         b.finish_and_clear();
         Some(vl?)
     } else {
         None
     };
-    let mism = |a: &Image| (0..inputs.len()).filter(|&k| a.p[k] != model.p[k] || a.rgb[k] != model.rgb[k]).count();
     // both Verilator runs, the one-thread and the split one, against the model
-    let mism_vl = vl.as_ref().map(|r| mism(&r.image) + mism(&r.single)).unwrap_or(0);
-    let mism_hdl = hdl.as_ref().map(mism).unwrap_or(0);
-    Ok(Paths { model, hdl, vl, mism_hdl, mism_vl })
+    let mism_vl = vl.as_ref().map(|r| r.image.mismatches(&model) + r.single.mismatches(&model)).unwrap_or(0);
+    let mism_hdl = hdl.as_ref().map(|h| h.mismatches(&model)).unwrap_or(0);
+    let where_ = at(prep.size);
+    let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
+    let mut normal = pipe.normal(&prep.inputs[0]).map(|_| ErrorStats::default());
+    for (k, (o, ideal)) in model.outs.iter().zip(&prep.ideal).enumerate() {
+        shade.add((pipe.shade(o) - ideal.shade).abs(), || where_(k));
+        colour.add(colour_err(pipe.colour(o), ideal.rgb), || where_(k));
+        if let (Some(s), Some(n)) = (normal.as_mut(), pipe.normal(&prep.inputs[k])) {
+            s.add(angle_deg(n, ideal.normal), || where_(k));
+        }
+    }
+    Ok(Run { pipe, prep, ideal_s, model, hdl, vl, mism_hdl, mism_vl, shade, colour, normal })
 }
 
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
-fn colour_err(a: [i64; 3], ideal: [f64; 3]) -> f64 {
+fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] as f64 - ideal[c]).abs()).fold(0.0, f64::max)
 }
 
 fn at(size: usize) -> impl Fn(usize) -> String {
     move |k| format!("pixel ({}, {})", k % size, k / size)
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// The seed's polar shortcomings, measured: the polar path against an ideal lit by the surface's one light and
+/// against its own codes; the pixels filtered across R's wrap; a light below the horizon.
+struct Shortcomings {
+    surface: ErrorStats,
+    own: ErrorStats,
+    surface_ideal: Vec<f64>,
+    wrap: ErrorStats,
+    rest: ErrorStats,
+    wrap_cartesian: ErrorStats,
+    low_cartesian: ErrorStats,
+    low_polar: ErrorStats,
+    low_below_deg: f64,
+    low_moved: bool,
+    low_ideal: Vec<f64>,
+    low_cx: Vec<f64>,
+    low_px: Vec<f64>,
+}
+
+fn shortcomings(scene: &Scene, polar: &Polar, setup: &PolarSetup, pol: &Run, cart: &Run) -> Shortcomings {
+    let n = scene.size * scene.size;
+    let where_ = at(scene.size);
+    let pw_real = polar.pw as f64 / 4.0;
+    let ideal = &setup.prepared.ideal;
+    let surface_ideal: Vec<f64> = (0..n)
+        .map(|k| 255.0 * ((1.0 - polar.h) + polar.h * dot(ideal[k].normal, setup.surface_dir)).clamp(0.0, 1.0).powf(pw_real))
+        .collect();
+    let mut s = Shortcomings {
+        surface: ErrorStats::default(), own: ErrorStats::default(), surface_ideal, wrap: ErrorStats::default(),
+        rest: ErrorStats::default(), wrap_cartesian: ErrorStats::default(), low_cartesian: ErrorStats::default(),
+        low_polar: ErrorStats::default(), low_below_deg: 0.0, low_moved: false, low_ideal: vec![0.0; n],
+        low_cx: vec![0.0; n], low_px: vec![0.0; n],
+    };
+    for k in 0..n {
+        let a = pol.pipe.shade(&pol.model.outs[k]);
+        let e = (a - s.surface_ideal[k]).abs();
+        s.surface.add(e, || where_(k));
+        let v = &setup.prepared.inputs[k];
+        let own = vectors::polar_shade::ideal(polar.scale, v[0], v[1], v[2], v[3], v[4], v[5]).clamp(0.0, 255.0);
+        s.own.add((a - vectors::power::ideal_real(own, v[6])).abs(), || where_(k));
+        if setup.straddles[k] {
+            s.wrap.add(e, || where_(k));
+            s.wrap_cartesian.add((cart.pipe.shade(&cart.model.outs[k]) - cart.prep.ideal[k].shade).abs(), || where_(k));
+        } else {
+            s.rest.add(e, || where_(k));
+        }
+    }
+    // a light below the horizon. Both pipelines' N·L before their shading curves (Cartesian: dot3's X; polar: the
+    // clamped shade with h = 1), 8-bit, against 255·max(0, N·L) with the pixel's true light
+    let low = Scene { light_pos: [-0.6, -0.12, 0.5], ..scene.clone() };
+    let low_c = Cartesian { decode: Decode::Seed }.prepare(&low);
+    let low_p = Polar { h: 1.0, ..*polar }.set_up(&low);
+    s.low_below_deg = -low_p.prepared.ideal[n / 2].light[1].asin().to_degrees();
+    s.low_moved = low_p.light.moved;
+    for k in 0..n {
+        let p = &low_p.prepared.ideal[k];
+        s.low_ideal[k] = 255.0 * dot(p.normal, p.light).max(0.0);
+        s.low_cx[k] = vectors::cart_pipeline::exact_trace(&low_c.inputs[k]).x as f64 / 1023.0 * 255.0;
+        s.low_px[k] = vectors::polar_pipeline::exact_trace(polar.scale, &low_p.prepared.inputs[k]).shade as f64;
+        s.low_cartesian.add((s.low_cx[k] - s.low_ideal[k]).abs(), || where_(k));
+        s.low_polar.add((s.low_px[k] - s.low_ideal[k]).abs(), || where_(k));
+    }
+    s
 }
 
 pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), String> {
@@ -75,182 +163,98 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     std::fs::write(&probe, b"").map_err(|e| format!("cannot write into {}: {e}", out.display()))?;
     let _ = std::fs::remove_file(&probe);
     let scene = Scene { size, ..Scene::default() };
-    let n = size * size;
-    let where_ = at(size);
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
     let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };
     let no_ecp5 = synth::tools::nextpnr_ecp5().is_none().then(synth::tools::nextpnr_ecp5_missing);
     let synth = synth && no_pnr.is_empty();
 
-    // Cartesian
-    let t = Instant::now();
-    let prep = scene.prepare();
-    let cart_ideal_s = t.elapsed().as_secs_f64();
-    let cart = three_paths::<rtl::cart_pipeline::CartPipeline>(&vectors::cart_pipeline::MODEL, size, &prep.inputs, out, true, no_vl.is_empty())?;
-    // the same scene, its normals hemi-octahedrally encoded, through the pipeline built with that decode (rust-hdl
-    // is left to the tests here: the model and Verilator are the two fast paths)
-    let t = Instant::now();
-    let prep_h = Scene { encoder: vectors::cart_encode::Encoder::HemiOct, ..scene.clone() }.prepare();
-    let hemi_ideal_s = t.elapsed().as_secs_f64();
-    let hm = &vectors::cart_pipeline::MODEL_HEMI_OCT;
-    let hemi = three_paths::<rtl::cart_pipeline::CartPipelineHemiOct>(hm, size, &prep_h.inputs, out, false, no_vl.is_empty())?;
-    // polar
-    let t = Instant::now();
-    let pol = scene.prepare_polar(scale, POLAR_PW, POLAR_H);
-    let polar_ideal_s = t.elapsed().as_secs_f64();
-    let pm = vectors::polar_pipeline::MODEL_FOR[scale as usize];
-    let polar = match scale {
-        Scale::Seed => three_paths::<rtl::polar_pipeline::PolarPipelineSeed>(pm, size, &pol.inputs, out, true, no_vl.is_empty())?,
-        Scale::Dc255 => three_paths::<rtl::polar_pipeline::PolarPipelineDc>(pm, size, &pol.inputs, out, true, no_vl.is_empty())?,
-    };
+    // every pipeline, and whether rust-hdl renders it here (the hemi-oct variant's rust-hdl run is left to the
+    // tests: the model and Verilator are the two fast paths)
+    let polar = Polar { scale, pw: POLAR_PW, h: POLAR_H };
+    let (cart, hemi) = (Cartesian { decode: Decode::Seed }, Cartesian { decode: Decode::HemiOct });
+    let pipes: [(&dyn Pipeline, bool); 3] = [(&cart, true), (&hemi, false), (&polar, true)];
+    let runs = pipes
+        .iter()
+        .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
+        .collect::<Result<Vec<Run>, String>>()?;
+    let polar_setup = polar.set_up(&scene);
+    let sc = shortcomings(&scene, &polar, &polar_setup, &runs[2], &runs[0]);
 
-    // error of each model against the scene's ideal
-    let cart_errors = |paths: &Paths, prep: &vectors::scene::Prepared, decode: vectors::cart_pipeline::Decode| {
-        let (mut shade, mut colour, mut normal) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
-        for k in 0..n {
-            shade.add((paths.model.p[k] as f64 / 4.0 - prep.ideal_p[k] / 1023.0 * 255.0).abs(), || where_(k));
-            colour.add(colour_err(paths.model.rgb[k], prep.ideal_rgb[k]), || where_(k));
-            let tr = vectors::cart_pipeline::exact_trace_with(decode, &prep.inputs[k]);
-            normal.add(angle_deg(tr.normal.map(|c| c as f64), prep.ideal_normal[k]), || where_(k));
-        }
-        (shade, colour, normal)
-    };
-    let (c_shade, c_colour, c_normal) = cart_errors(&cart, &prep, vectors::cart_pipeline::Decode::Seed);
-    let (h_shade, h_colour, h_normal) = cart_errors(&hemi, &prep_h, vectors::cart_pipeline::Decode::HemiOct);
-    // the polar path against the scene's ideal; against an ideal lit by the surface's one light (what remains is
-    // the normal's encoding and filtering, and the arithmetic); against its own codes (the arithmetic alone)
-    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    let pw_real = POLAR_PW as f64 / 4.0;
-    let surface_ideal: Vec<f64> = (0..n)
-        .map(|k| 255.0 * ((1.0 - POLAR_H) + POLAR_H * dot(pol.normal[k], pol.surface_dir)).clamp(0.0, 1.0).powf(pw_real))
-        .collect();
-    let (mut p_shade, mut p_colour, mut p_surf, mut p_own) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
-    let (mut wrap_p, mut wrap_c, mut rest_p) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
-    for k in 0..n {
-        let a = polar.model.p[k] as f64;
-        p_shade.add((a - pol.ideal_alpha[k]).abs(), || where_(k));
-        p_colour.add(colour_err(polar.model.rgb[k], pol.ideal_rgb[k]), || where_(k));
-        let e = (a - surface_ideal[k]).abs();
-        p_surf.add(e, || where_(k));
-        let v = &pol.inputs[k];
-        let own = vectors::polar_shade::ideal(scale, v[0], v[1], v[2], v[3], v[4], v[5]).clamp(0.0, 255.0);
-        p_own.add((a - vectors::power::ideal_real(own, v[6])).abs(), || where_(k));
-        if pol.straddles[k] {
-            wrap_p.add(e, || where_(k));
-            wrap_c.add((cart.model.p[k] as f64 / 4.0 - prep.ideal_p[k] / 1023.0 * 255.0).abs(), || where_(k));
-        } else {
-            rest_p.add(e, || where_(k));
-        }
-    }
-
-    // shortcoming (a): a light below the horizon. Both pipelines' N·L before their shading curves (Cartesian: dot3's
-    // X; polar: the clamped shade with h = 1), 8-bit, against 255·max(0, N·L) with the pixel's true light
-    let low = Scene { light_pos: [-0.6, -0.12, 0.5], ..scene.clone() };
-    let low_c = low.prepare();
-    let low_p = low.prepare_polar(scale, POLAR_PW, POLAR_H);
-    let (mut low_ce, mut low_pe) = (ErrorStats::default(), ErrorStats::default());
-    let (mut low_cx, mut low_px, mut low_ideal) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-    for k in 0..n {
-        low_ideal[k] = 255.0 * dot(low_p.normal[k], low_p.light_dir[k]).max(0.0);
-        low_cx[k] = vectors::cart_pipeline::exact_trace(&low_c.inputs[k]).x as f64 / 1023.0 * 255.0;
-        low_px[k] = vectors::polar_pipeline::exact_trace(scale, &low_p.inputs[k]).shade as f64;
-        low_ce.add((low_cx[k] - low_ideal[k]).abs(), || where_(k));
-        low_pe.add((low_px[k] - low_ideal[k]).abs(), || where_(k));
-    }
-
-    // pictures
+    // pictures: per pipeline, then the shortcomings
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;
     let png = |name: &str, f: &dyn Fn(usize) -> [u8; 3]| render::write_png(&out.join(name), size, f);
-    png("ideal.png", &|k| prep.ideal_rgb[k].map(to8))?;
-    png("model.png", &|k| cart.model.rgb[k].map(|c| c as u8))?;
-    if let Some(hdl) = &cart.hdl {
-        png("rust_hdl.png", &|k| hdl.rgb[k].map(|c| c as u8))?;
+    let mut written = vec![];
+    for r in &runs {
+        let name = r.pipe.model().name;
+        let mut each = |what: &str, f: &dyn Fn(usize) -> [u8; 3]| -> Result<(), String> {
+            written.push(format!("{name}_{what}.png"));
+            png(&format!("{name}_{what}.png"), f)
+        };
+        each("ideal", &|k| r.prep.ideal[k].rgb.map(to8))?;
+        each("model", &|k| r.pipe.colour(&r.model.outs[k]))?;
+        if let Some(hdl) = &r.hdl {
+            each("rust_hdl", &|k| r.pipe.colour(&hdl.outs[k]))?;
+        }
+        if let Some(vl) = &r.vl {
+            each("verilator", &|k| r.pipe.colour(&vl.image.outs[k]))?;
+        }
+        each("shade", &|k| [to8(r.pipe.shade(&r.model.outs[k])); 3])?;
+        let hmax = r.colour.max.max(1.0);
+        each("error_heat", &|k| render::heat(colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb), hmax))?;
     }
-    if let Some(vl) = &cart.vl {
-        png("verilator.png", &|k| vl.image.rgb[k].map(|c| c as u8))?;
-    }
-    png("shade_model.png", &|k| [(cart.model.p[k] >> 2) as u8; 3])?;
-    let hmax = c_colour.max.max(1.0);
-    png("error_heat.png", &|k| render::heat(colour_err(cart.model.rgb[k], prep.ideal_rgb[k]), hmax))?;
-    png("polar_ideal.png", &|k| pol.ideal_rgb[k].map(to8))?;
-    png("polar_model.png", &|k| polar.model.rgb[k].map(|c| c as u8))?;
-    if let Some(hdl) = &polar.hdl {
-        png("polar_rust_hdl.png", &|k| hdl.rgb[k].map(|c| c as u8))?;
-    }
-    png("hemi_oct_model.png", &|k| hemi.model.rgb[k].map(|c| c as u8))?;
-    if let Some(vl) = &polar.vl {
-        png("polar_verilator.png", &|k| vl.image.rgb[k].map(|c| c as u8))?;
-    }
-    let pmax = p_shade.max.max(1.0);
-    png("polar_error_heat.png", &|k| render::heat((polar.model.p[k] as f64 - pol.ideal_alpha[k]).abs(), pmax))?;
-    let smax = p_surf.max.max(1.0);
-    png("polar_surface_light_error_heat.png", &|k| render::heat((polar.model.p[k] as f64 - surface_ideal[k]).abs(), smax))?;
-    // (b): where the four texels' R straddle the 255 → 0 wrap, over the polar shade error
-    png("polar_wrap_pixels.png", &|k| if pol.straddles[k] { [255, 64, 255] } else { [(polar.model.p[k] / 3) as u8; 3] })?;
+    let pol = &runs[2];
+    let smax = sc.surface.max.max(1.0);
+    png("polar_surface_light_error_heat.png", &|k| render::heat((pol.pipe.shade(&pol.model.outs[k]) - sc.surface_ideal[k]).abs(), smax))?;
+    // (b): where the four texels' R straddle the 255 → 0 wrap, over the polar shade
+    png("polar_wrap_pixels.png", &|k| if polar_setup.straddles[k] { [255, 64, 255] } else { [(pol.pipe.shade(&pol.model.outs[k]) / 3.0) as u8; 3] })?;
     // (a): shade of each pipeline and of each ideal with the light below the horizon
-    png("below_horizon_ideal.png", &|k| [to8(low_ideal[k]); 3])?;
-    png("below_horizon_cartesian.png", &|k| [to8(low_cx[k]); 3])?;
-    png("below_horizon_polar.png", &|k| [to8(low_px[k]); 3])?;
+    png("below_horizon_ideal.png", &|k| [to8(sc.low_ideal[k]); 3])?;
+    png("below_horizon_cartesian.png", &|k| [to8(sc.low_cx[k]); 3])?;
+    png("below_horizon_polar.png", &|k| [to8(sc.low_px[k]); 3])?;
 
     // waveforms of the first pixels, and the Verilog
-    let first = |v: &[Vec<i64>]| v.iter().take(64).cloned().collect::<Vec<_>>();
-    sim::wave::write_vcd::<rtl::cart_pipeline::CartPipeline>(&vectors::cart_pipeline::MODEL, &first(&prep.inputs), &out.join("cart_pipeline.vcd"))?;
-    match scale {
-        Scale::Seed => sim::wave::write_vcd::<rtl::polar_pipeline::PolarPipelineSeed>(pm, &first(&pol.inputs), &out.join("polar_pipeline.vcd"))?,
-        Scale::Dc255 => sim::wave::write_vcd::<rtl::polar_pipeline::PolarPipelineDc>(pm, &first(&pol.inputs), &out.join("polar_pipeline.vcd"))?,
-    };
     let vdir = out.join("verilog");
-    synth::export::<rtl::cart_pipeline::CartPipeline>().write(&vdir)?;
-    synth::export::<rtl::cart_pipeline::CartPipelineHemiOct>().write(&vdir)?;
-    match scale {
-        Scale::Seed => synth::export::<rtl::polar_pipeline::PolarPipelineSeed>().write(&vdir)?,
-        Scale::Dc255 => synth::export::<rtl::polar_pipeline::PolarPipelineDc>().write(&vdir)?,
-    };
+    for r in &runs {
+        let first: Vec<Vec<i64>> = r.prep.inputs.iter().take(64).cloned().collect();
+        r.pipe.rtl().write_vcd(r.pipe.model(), &first, &out.join(format!("{}.vcd", r.pipe.model().name)))?;
+        r.pipe.rtl().export(&vdir)?;
+    }
 
     // hardware cost, cached beside the output: each pipeline on the UP5K and the ECP5-45F, on two threads
     let hw = if synth {
         let hdir = out.join("synth");
         let parts: Vec<synth::fpga::Part> = crate::hardware::DEMO_PARTS.iter().copied().filter(|p| p.family == synth::fpga::Family::Ice40 || no_ecp5.is_none()).collect();
         let (hd, ps) = (&hdir, &parts);
-        let jobs: Vec<crate::hardware::Job> = vec![
-            Box::new(move |say| crate::hardware::measure::<rtl::cart_pipeline::CartPipeline>(hd, ps, say)),
-            Box::new(move |say| crate::hardware::measure::<rtl::cart_pipeline::CartPipelineHemiOct>(hd, ps, say)),
-            match scale {
-                Scale::Seed => Box::new(move |say| crate::hardware::measure::<rtl::polar_pipeline::PolarPipelineSeed>(hd, ps, say)),
-                Scale::Dc255 => Box::new(move |say| crate::hardware::measure::<rtl::polar_pipeline::PolarPipelineDc>(hd, ps, say)),
-            },
-        ];
+        let jobs: Vec<crate::hardware::Job> =
+            runs.iter().map(|r| -> crate::hardware::Job { let rtl = r.pipe.rtl(); Box::new(move |say| rtl.measure(hd, ps, say)) }).collect();
         Some(crate::hardware::run_jobs(jobs)?)
     } else {
         None
     };
 
-    println!("scene: {size}x{size} quad, 128x128 height map, 4 vertex lights towards a point light");
-    println!("  Cartesian: seed-encoded texels, bilinear, lights interpolated per pixel, gloss C = {}", scene.conc);
-    println!("  hemi-oct: the same, its normals hemi-octahedrally encoded, through cart_pipeline_hemi_oct");
-    println!(
-        "  polar ({}): S, R bilinear as numbers, one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
-        scale.name(), pol.light.t.to_degrees(), pol.light.q, pol.light.k1, pol.light.k2, pol.light.k3, POLAR_PW as f64 / 4.0
-    );
+    println!("scene: {size}x{size} quad, {t}x{t} height map, 4 vertex lights towards a point light", t = scene.tex);
+    for r in &runs {
+        println!("  {} ({}): {}", r.pipe.label(), r.pipe.model().name, r.pipe.describe(&scene));
+        println!("    units: {}", r.pipe.units().join(" → "));
+    }
     println!();
-    let cols = [&cart, &hemi, &polar];
-    let line = |label: &str, f: &dyn Fn(&Paths) -> String| {
-        let cells: String = cols.iter().map(|p| format!(" {:>14}", f(p))).collect();
+    let n = size * size;
+    let line = |label: &str, f: &dyn Fn(&Run) -> String| {
+        let cells: String = runs.iter().map(|r| format!(" {:>14}", f(r))).collect();
         println!("{label:<34}{cells}");
     };
-    println!("{:<34} {:>14} {:>14} {:>14}", "pixels/s (mismatches vs model)", "Cartesian", "hemi-oct", "polar");
+    line("pixels/s (mismatches vs model)", &|r| r.pipe.label().to_string());
     let pps = |i: &Image, m: usize| format!("{:.0} ({m})", i.pixels_per_second());
-    let ideal_s = [cart_ideal_s, hemi_ideal_s, polar_ideal_s];
-    println!("{:<34} {:>14.0} {:>14.0} {:>14.0}", "f64 ideal (scene set-up included)", n as f64 / ideal_s[0], n as f64 / ideal_s[1], n as f64 / ideal_s[2]);
-    line("bit-exact model", &|p| pps(&p.model, 0));
-    line("rust-hdl (loop-driven)", &|p| p.hdl.as_ref().map(|h| pps(h, p.mism_hdl)).unwrap_or("in the tests".into()));
-    if let Some(c) = &cart.vl {
-        line("Verilator, whole frame, 1 thread", &|p| p.vl.as_ref().map(|v| pps(&v.single, p.mism_vl)).unwrap_or_default());
-        line(&format!("Verilator, whole frame, {} threads", c.threads), &|p| p.vl.as_ref().map(|v| pps(&v.image, p.mism_vl)).unwrap_or_default());
-        line("Verilator bare loop (cycles/s)", &|p| p.vl.as_ref().map(|v| format!("{:.0}", v.bare_cycles_per_second)).unwrap_or_default());
-        line("  1 thread against the bare loop", &|p| {
-            p.vl.as_ref()
+    line("f64 ideal (scene set-up included)", &|r| format!("{:.0}", n as f64 / r.ideal_s));
+    line("bit-exact model", &|r| pps(&r.model, 0));
+    line("rust-hdl (loop-driven)", &|r| r.hdl.as_ref().map(|h| pps(h, r.mism_hdl)).unwrap_or("in the tests".into()));
+    if let Some(c) = &runs[0].vl {
+        line("Verilator, whole frame, 1 thread", &|r| r.vl.as_ref().map(|v| pps(&v.single, r.mism_vl)).unwrap_or_default());
+        line(&format!("Verilator, whole frame, {} threads", c.threads), &|r| r.vl.as_ref().map(|v| pps(&v.image, r.mism_vl)).unwrap_or_default());
+        line("Verilator bare loop (cycles/s)", &|r| r.vl.as_ref().map(|v| format!("{:.0}", v.bare_cycles_per_second)).unwrap_or_default());
+        line("  1 thread against the bare loop", &|r| {
+            r.vl.as_ref()
                 .map(|v| format!("{:.2}", (v.single.size * v.single.size) as f64 / v.single.seconds / v.bare_cycles_per_second))
                 .unwrap_or_default()
         });
@@ -264,45 +268,47 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         println!("ECP5 figures skipped: {e}\n");
     }
     if let Some(hw) = &hw {
-        hardware_table(&["Cartesian", "hemi-oct", "polar"], hw);
+        let names: Vec<&str> = runs.iter().map(|r| r.pipe.label()).collect();
+        hardware_table(&names, hw);
     }
     println!("{:<52} {:>9} {:>9}   {}", "error of the bit-exact models vs the scene's ideal", "mean", "max", "max at");
     let row = |name: &str, s: &ErrorStats| println!("{name:<52} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax);
-    row("Cartesian shade, 8-bit LSB (P/4)", &c_shade);
-    row("Cartesian blended colour, 8-bit LSB", &c_colour);
-    row("Cartesian normal angle, degrees", &c_normal);
-    row("hemi-oct texels: shade, 8-bit LSB (P/4)", &h_shade);
-    row("hemi-oct texels: blended colour, 8-bit LSB", &h_colour);
-    row("hemi-oct texels: normal angle, degrees", &h_normal);
-    row("polar shade, 8-bit LSB (α)", &p_shade);
-    row("polar blended colour, 8-bit LSB", &p_colour);
-    row("polar shade vs an ideal lit by the surface's light", &p_surf);
-    row("polar shade vs equation 3 + powf on its own codes", &p_own);
+    for r in &runs {
+        row(&format!("{} shade, 8-bit LSB ({})", r.pipe.label(), r.pipe.shade_name()), &r.shade);
+        row(&format!("{} blended colour, 8-bit LSB", r.pipe.label()), &r.colour);
+        if let Some(nrm) = &r.normal {
+            row(&format!("{} normal angle, degrees", r.pipe.label()), nrm);
+        }
+    }
+    row("polar shade vs an ideal lit by the surface's light", &sc.surface);
+    row("polar shade vs equation 3 + powf on its own codes", &sc.own);
     println!();
     println!("the seed's polar shortcomings");
-    row(&format!("(b) polar, {} px filtered across R's wrap", wrap_p.count), &wrap_p);
-    row("    the other pixels (both vs the surface light)", &rest_p);
-    row("    Cartesian shade on the wrap pixels", &wrap_c);
-    row(&format!("(a) light {:.1}° below the horizon: Cartesian N·L", -low_p.light_dir[n / 2][1].asin().to_degrees()), &low_ce);
-    row(&format!("    polar N·L, the light moved onto it: {}", low_p.light.moved), &low_pe);
+    row(&format!("(b) polar, {} px filtered across R's wrap", sc.wrap.count), &sc.wrap);
+    row("    the other pixels (both vs the surface light)", &sc.rest);
+    row("    Cartesian shade on the wrap pixels", &sc.wrap_cartesian);
+    row(&format!("(a) light {:.1}° below the horizon: Cartesian N·L", sc.low_below_deg), &sc.low_cartesian);
+    row(&format!("    polar N·L, the light moved onto it: {}", sc.low_moved), &sc.low_polar);
     println!();
-    let vl_png = if cart.vl.is_some() { " verilator," } else { "" };
-    println!("wrote {}: ideal, model, rust_hdl,{vl_png} shade_model, error_heat, hemi_oct_model, polar_*, below_horizon_* .png;", out.display());
-    println!("      cart_pipeline.vcd, polar_pipeline.vcd; verilog/{}", if synth { "; synth/" } else { "" });
+    println!("wrote {}: {};", out.display(), written.join(", "));
+    println!("      polar_surface_light_error_heat, polar_wrap_pixels, below_horizon_{{ideal,cartesian,polar}} .png;");
+    let vcds: Vec<String> = runs.iter().map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
+    println!("      {}; verilog/{}", vcds.join(", "), if synth { "; synth/" } else { "" });
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
-    let bad = cols.iter().map(|p| p.mism_hdl + p.mism_vl).sum::<usize>();
-    if bad != 0 {
-        return Err(format!(
-            "the bit-exact paths disagree: Cartesian rust-hdl {} / Verilator {}, hemi-oct Verilator {}, polar rust-hdl {} / Verilator {} pixels differ from the model",
-            cart.mism_hdl, cart.mism_vl, hemi.mism_vl, polar.mism_hdl, polar.mism_vl
-        ));
+    let bad: Vec<String> = runs
+        .iter()
+        .filter(|r| r.mism_hdl + r.mism_vl != 0)
+        .map(|r| format!("{} rust-hdl {} / Verilator {}", r.pipe.model().name, r.mism_hdl, r.mism_vl))
+        .collect();
+    if !bad.is_empty() {
+        return Err(format!("the bit-exact paths disagree with the model (pixels that differ): {}", bad.join("; ")));
     }
     Ok(())
 }
 
 /// Hardware cost, one column per pipeline, one block of rows per part.
-fn hardware_table(names: &[&str], hw: &[Vec<(synth::fpga::Part, crate::hardware::Fit)>]) {
-    use crate::hardware::Fit;
+fn hardware_table(names: &[&str], hw: &[Vec<(synth::fpga::Part, synth::fpga::Fit)>]) {
+    use synth::fpga::Fit;
     let Some(first) = hw.first() else { return };
     let row = |label: &str, f: &dyn Fn(&Fit, &synth::fpga::Part) -> String, k: usize| {
         let cells: String = hw.iter().map(|h| format!(" {:>22}", f(&h[k].1, &h[k].0))).collect();

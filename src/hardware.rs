@@ -2,38 +2,10 @@
 //! demo's output (the first run places every pipeline; later runs read the figures while the Verilog is unchanged).
 
 use indicatif::{MultiProgress, ProgressBar};
-use rtl::StreamUnit;
-use std::path::Path;
-use synth::fpga::{synth_and_place_cached, synth_unit, Part, SynthReport, ECP5_45F, UP5K};
-
-/// A pipeline on one part: placed, or the resource that keeps it off the part.
-#[derive(Clone, Debug)]
-pub enum Fit {
-    Placed(SynthReport),
-    DoesNotFit(String),
-}
+use synth::fpga::{Fit, Part, ECP5_45F, UP5K};
 
 /// The parts the demo reports, smallest first.
 pub const DEMO_PARTS: [Part; 2] = [UP5K, ECP5_45F];
-
-/// One pipeline's figures on `parts`; `say` tells the progress line what runs now.
-pub fn measure<U: StreamUnit>(dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
-    let mut v = Vec::new();
-    for p in parts {
-        let d = dir.join(U::NAME).join(p.name);
-        say(format!("{}: yosys for the {}", U::NAME, p.title));
-        let c = synth_unit::<U>(&d, p.family)?;
-        let fit = match p.overflow(&c) {
-            Some(o) => Fit::DoesNotFit(o),
-            None => {
-                say(format!("{}: nextpnr for the {} (cached after the first run)", U::NAME, p.title));
-                Fit::Placed(synth_and_place_cached::<U>(&d, *p, p.default_freq())?)
-            }
-        };
-        v.push((*p, fit));
-    }
-    Ok(v)
-}
 
 /// A job for one of the demo's synthesis threads.
 pub type Job<'a> = Box<dyn FnOnce(&dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> + Send + 'a>;

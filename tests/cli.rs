@@ -102,10 +102,13 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
     assert!(o.status.success(), "{out}\n{err}");
     assert!(out.contains("Verilator path skipped") && out.contains("UP5K and ECP5 figures skipped"), "{out}");
-    for f in ["model.png", "rust_hdl.png", "polar_model.png", "cart_pipeline.vcd", "polar_pipeline.vcd", "verilog/cart_pipeline.v"] {
+    for f in [
+        "cart_pipeline_model.png", "cart_pipeline_rust_hdl.png", "polar_pipeline_model.png", "cart_pipeline_hemi_oct_model.png",
+        "cart_pipeline.vcd", "polar_pipeline.vcd", "cart_pipeline_hemi_oct.vcd", "verilog/cart_pipeline.v",
+    ] {
         assert!(d.join(f).is_file(), "{f} missing");
     }
-    assert!(!d.join("verilator.png").exists());
+    assert!(!d.join("cart_pipeline_verilator.png").exists());
     let _ = std::fs::remove_dir_all(&d);
 }
 

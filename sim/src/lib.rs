@@ -2,5 +2,8 @@
 //! simulation of the rtl and the Verilator build of its exported Verilog; PNG images, error heat maps and VCDs.
 
 pub mod accuracy;
+pub mod pipeline;
+pub mod raster;
 pub mod render;
+pub mod scene;
 pub mod wave;

@@ -1,6 +1,5 @@
-//! A scene through the four paths. The ideal is the scene's; the model, the rust-hdl block and Verilator on the
-//! block's exported Verilog run a pipeline unit (`cart_pipeline` or `polar_pipeline`: a shade first, then the
-//! blended colour, as both name their outputs). The last three must agree bit for bit.
+//! A pipeline's per-pixel inputs through the three bit-exact paths: the model, the rust-hdl block and Verilator on
+//! the block's exported Verilog. They must agree bit for bit; the pipeline reads shade and colour off the outputs.
 
 use rtl::stream::Runner;
 use rtl::StreamUnit;
@@ -9,13 +8,12 @@ use std::time::Instant;
 use synth::cosim::{self, Simulator};
 use vectors::UnitModel;
 
-/// One path's image: per pixel the shade output (P, U10, for the Cartesian pipeline; α, U8, for the polar one)
-/// and the blended colour.
+/// One path's frame: per pixel the pipeline's output vector (values, signed where the port is), and the time the
+/// path took. A pipeline turns an output vector into a shade and a colour (`crate::pipeline::Pipeline`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Image {
     pub size: usize,
-    pub p: Vec<i64>,
-    pub rgb: Vec<[i64; 3]>,
+    pub outs: Vec<Vec<i64>>,
     pub seconds: f64,
 }
 
@@ -23,25 +21,25 @@ impl Image {
     pub fn pixels_per_second(&self) -> f64 {
         (self.size * self.size) as f64 / self.seconds.max(1e-9)
     }
+
+    /// Pixels whose output vector differs from `other`'s.
+    pub fn mismatches(&self, other: &Image) -> usize {
+        self.outs.iter().zip(&other.outs).filter(|(a, b)| a != b).count() + self.outs.len().abs_diff(other.outs.len())
+    }
 }
 
 fn patterns(m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Option<Vec<u64>>> {
     inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).collect()
 }
 
-fn from_outputs(size: usize, outs: &[Vec<u64>], seconds: f64) -> Image {
-    Image {
-        size,
-        p: outs.iter().map(|o| o[0] as i64).collect(),
-        rgb: outs.iter().map(|o| [o[1] as i64, o[2] as i64, o[3] as i64]).collect(),
-        seconds,
-    }
+fn from_outputs(m: &UnitModel, size: usize, outs: &[Vec<u64>], seconds: f64) -> Image {
+    Image { size, outs: outs.iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect(), seconds }
 }
 
 pub fn model(m: &UnitModel, size: usize, inputs: &[Vec<i64>]) -> Image {
     let t = Instant::now();
-    let outs: Vec<Vec<u64>> = inputs.iter().map(|v| (m.exact)(v).iter().map(|&x| x as u64).collect()).collect();
-    from_outputs(size, &outs, t.elapsed().as_secs_f64())
+    let outs: Vec<Vec<i64>> = inputs.iter().map(|v| (m.exact)(v)).collect();
+    Image { size, outs, seconds: t.elapsed().as_secs_f64() }
 }
 
 /// rust-hdl, loop-driven; `tick` is called every 1,024 pixels.
@@ -55,17 +53,12 @@ pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], 
         }
         s
     }));
-    from_outputs(size, &got.outputs, t.elapsed().as_secs_f64())
+    from_outputs(m, size, &got.outputs, t.elapsed().as_secs_f64())
 }
 
-fn from_frame(size: usize, f: &cosim::Frame, seconds: f64) -> Image {
-    let n = f.len();
-    Image {
-        size,
-        p: (0..n).map(|k| f.value(k, 0) as i64).collect(),
-        rgb: (0..n).map(|k| [f.value(k, 1) as i64, f.value(k, 2) as i64, f.value(k, 3) as i64]).collect(),
-        seconds,
-    }
+fn from_frame(m: &UnitModel, size: usize, f: &cosim::Frame) -> Image {
+    let outs: Vec<Vec<u64>> = (0..f.len()).map(|k| (0..m.outputs.len()).map(|j| f.value(k, j)).collect()).collect();
+    from_outputs(m, size, &outs, 0.0)
 }
 
 /// A frame through the exported Verilog under Verilator, twice, beside the simulator's own speed.
@@ -94,7 +87,7 @@ pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>],
         for _ in 0..RUNS {
             let t = Instant::now();
             let f = run()?;
-            let mut i = from_frame(size, &f, 0.0);
+            let mut i = from_frame(m, size, &f);
             i.seconds = t.elapsed().as_secs_f64();
             if best.as_ref().map_or(true, |b| i.seconds < b.seconds) {
                 best = Some(i);

@@ -430,3 +430,30 @@ mod tests {
         assert!(e.contains("up5k, ecp5-25f, ecp5-45f, ecp5-85f"), "{e}");
     }
 }
+
+/// A unit on one part: placed, or the resource that keeps it off the part.
+#[derive(Clone, Debug)]
+pub enum Fit {
+    Placed(SynthReport),
+    DoesNotFit(String),
+}
+
+/// A unit's figures on `parts` (synthesised for each; placed where it fits, the placement cached in `dir`); `say`
+/// tells a progress line what runs now.
+pub fn measure<U: StreamUnit>(dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
+    let mut v = Vec::new();
+    for p in parts {
+        let d = dir.join(U::NAME).join(p.name);
+        say(format!("{}: yosys for the {}", U::NAME, p.title));
+        let c = synth_unit::<U>(&d, p.family)?;
+        let fit = match p.overflow(&c) {
+            Some(o) => Fit::DoesNotFit(o),
+            None => {
+                say(format!("{}: nextpnr for the {} (cached after the first run)", U::NAME, p.title));
+                Fit::Placed(synth_and_place_cached::<U>(&d, *p, p.default_freq())?)
+            }
+        };
+        v.push((*p, fit));
+    }
+    Ok(v)
+}

@@ -33,7 +33,6 @@ pub mod polar {
 }
 
 pub mod csv;
-pub mod scene;
 pub mod stats;
 pub mod unit;
 

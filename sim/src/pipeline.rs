@@ -1,0 +1,325 @@
+//! A pipeline, as the demo and the renderers see it: the units it holds, its model and its rtl block, how it
+//! builds its per-pixel inputs from a scene (with the f64 ideal of every pixel beside them), and how it reads a
+//! shade and a colour off its outputs. Seed 000's Cartesian (both texel decodes) and polar pipelines implement it;
+//! the height-map and palette pipelines will be the next two.
+
+use crate::raster;
+use crate::render::{self, Image, VerilatorRun};
+use crate::scene::Scene;
+use rtl::StreamUnit;
+use std::marker::PhantomData;
+use std::path::Path;
+use synth::fpga::{Fit, Part};
+use vectors::cart_encode::{self, Encoder};
+use vectors::cart_pipeline::{self, Decode};
+use vectors::polar_encode::{self, Scale};
+use vectors::{bilinear, gloss, light_iter, polar_pipeline, UnitModel};
+
+/// The f64 ideal of one pixel.
+#[derive(Clone, Copy, Debug)]
+pub struct Ideal {
+    /// The shade in 8-bit units (0..255, real), on the same scale as `Pipeline::shade`.
+    pub shade: f64,
+    /// The blended colour, 8-bit units, real.
+    pub rgb: [f64; 3],
+    /// The filtered float normal and the pixel's own light direction.
+    pub normal: [f64; 3],
+    pub light: [f64; 3],
+}
+
+/// A scene set up for one pipeline: per pixel its input vector (in the model's port order) and its ideal.
+pub struct Prepared {
+    pub size: usize,
+    pub inputs: Vec<Vec<i64>>,
+    pub ideal: Vec<Ideal>,
+}
+
+pub trait Pipeline: Sync {
+    /// A short name for tables ("Cartesian").
+    fn label(&self) -> &'static str;
+    /// The bit-exact model of the whole pipeline; its name is the rtl block's.
+    fn model(&self) -> &'static UnitModel;
+    /// The rtl block, behind the paths that need its type.
+    fn rtl(&self) -> &'static dyn RtlPaths;
+    /// The units the pipeline holds, in dataflow order, by their names in the unit table.
+    fn units(&self) -> &'static [&'static str];
+    /// One line saying what the pipeline does with the scene.
+    fn describe(&self, scene: &Scene) -> String;
+    fn prepare(&self, scene: &Scene) -> Prepared;
+    /// The shade in 8-bit units, read off one output vector; `shade_name` says which output and how.
+    fn shade(&self, out: &[i64]) -> f64;
+    fn shade_name(&self) -> &'static str;
+    /// The blended colour, read off one output vector.
+    fn colour(&self, out: &[i64]) -> [u8; 3];
+    /// The unit normal the model computes for one input vector, where the pipeline has one.
+    fn normal(&self, _input: &[i64]) -> Option<[f64; 3]> {
+        None
+    }
+}
+
+/// What a pipeline's rtl block does in the paths that need its type; `Rtl::<U>::PATHS` is one.
+pub trait RtlPaths: Sync {
+    fn name(&self) -> &'static str;
+    fn latency(&self) -> usize;
+    fn rust_hdl(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> Image;
+    fn verilator(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
+    fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String>;
+    fn export(&self, dir: &Path) -> Result<(), String>;
+    fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String>;
+}
+
+/// The paths of the rtl block `U`.
+pub struct Rtl<U>(PhantomData<fn() -> U>);
+
+impl<U: StreamUnit + Send + 'static> Rtl<U> {
+    pub const PATHS: Rtl<U> = Rtl(PhantomData);
+}
+
+impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
+    fn name(&self) -> &'static str {
+        U::NAME
+    }
+    fn latency(&self) -> usize {
+        U::LATENCY
+    }
+    fn rust_hdl(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> Image {
+        render::rust_hdl::<U>(m, size, inputs, tick)
+    }
+    fn verilator(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
+        render::verilator::<U>(m, size, inputs, dir, threads)
+    }
+    fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String> {
+        crate::wave::write_vcd::<U>(m, inputs, path).map(|_| ())
+    }
+    fn export(&self, dir: &Path) -> Result<(), String> {
+        synth::export::<U>().write(dir).map(|_| ())
+    }
+    fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
+        synth::fpga::measure::<U>(dir, parts, say)
+    }
+}
+
+/// Seed 000's second embodiment: the height map's normals encoded as Cartesian texels (the seed's offset binary,
+/// or hemi-octahedral with the decode that reads it), bilinear, the vertex lights interpolated per pixel.
+pub struct Cartesian {
+    pub decode: Decode,
+}
+
+impl Pipeline for Cartesian {
+    fn label(&self) -> &'static str {
+        match self.decode {
+            Decode::Seed => "Cartesian",
+            Decode::HemiOct => "hemi-oct",
+        }
+    }
+    fn model(&self) -> &'static UnitModel {
+        match self.decode {
+            Decode::Seed => &cart_pipeline::MODEL,
+            Decode::HemiOct => &cart_pipeline::MODEL_HEMI_OCT,
+        }
+    }
+    fn rtl(&self) -> &'static dyn RtlPaths {
+        match self.decode {
+            Decode::Seed => &Rtl::<rtl::cart_pipeline::CartPipeline>::PATHS,
+            Decode::HemiOct => &Rtl::<rtl::cart_pipeline::CartPipelineHemiOct>::PATHS,
+        }
+    }
+    fn units(&self) -> &'static [&'static str] {
+        match self.decode {
+            Decode::Seed => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
+            Decode::HemiOct => &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"],
+        }
+    }
+    fn describe(&self, scene: &Scene) -> String {
+        let texels = match self.decode {
+            Decode::Seed => "seed-encoded texels",
+            Decode::HemiOct => "hemi-octahedral texels",
+        };
+        format!("{texels}, bilinear, lights interpolated per pixel, gloss C = {}", scene.conc)
+    }
+    fn prepare(&self, scene: &Scene) -> Prepared {
+        use cart_pipeline::input;
+        let encoder = match self.decode {
+            Decode::Seed => Encoder::Seed,
+            Decode::HemiOct => Encoder::HemiOct,
+        };
+        let t = scene.tex;
+        let normals = scene.normals();
+        let texels: Vec<(u8, u8)> = normals.iter().map(|&n| cart_encode::encode(encoder, n)).collect();
+        let q: Vec<[i64; 3]> = scene.vertex_lights().iter().map(|&d| light_iter::quantise_vertex(d)).collect();
+        let mut p = Prepared { size: scene.size, inputs: vec![], ideal: vec![] };
+        for px in raster::pixels(scene, &normals) {
+            let mut x = vec![0; cart_pipeline::INPUTS.len()];
+            for (slot, (i, j)) in cart_pipeline::TEXELS.iter().zip(px.corners) {
+                (x[slot[0]], x[slot[1]]) = (texels[j * t + i].0 as i64, texels[j * t + i].1 as i64);
+            }
+            (x[input::ublend], x[input::vblend]) = (px.ub, px.vb);
+            for (l, k) in cart_pipeline::LIGHTS.iter().zip(px.tri) {
+                for c in 0..3 {
+                    x[l[c]] = q[k][c];
+                }
+            }
+            // weights in 1/256, rounded
+            (x[input::w1], x[input::w2]) = ((px.w1 * 256.0).round() as i64, (px.w2 * 256.0).round() as i64);
+            (x[input::conc], x[input::mode]) = (scene.conc, 1);
+            for c in 0..3 {
+                (x[cart_pipeline::SRC[c]], x[cart_pipeline::DST[c]]) = (scene.src[c], scene.dst[c]);
+            }
+            p.inputs.push(x);
+            let (nrm, ld) = (px.normal, px.light);
+            let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
+            let pi = gloss::ideal_real(scene.conc, xd);
+            let shade = pi / 1023.0 * 255.0;
+            p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: ld });
+        }
+        p
+    }
+    fn shade(&self, out: &[i64]) -> f64 {
+        out[cart_pipeline::output::p] as f64 / 4.0
+    }
+    fn shade_name(&self) -> &'static str {
+        "P/4"
+    }
+    fn colour(&self, out: &[i64]) -> [u8; 3] {
+        use cart_pipeline::output;
+        [out[output::out_r], out[output::out_g], out[output::out_b]].map(|c| c as u8)
+    }
+    fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
+        Some(cart_pipeline::exact_trace_with(self.decode, input).normal.map(|c| c as f64))
+    }
+}
+
+/// Seed 000's first embodiment (FIG. 3): the same height map's normals polar-encoded (S, R) in `scale`; the texture
+/// filtered the way the colour filter would, S and R bilinearly blended as plain numbers (the seed's shortcoming 2:
+/// across R's 255 → 0 wrap this is wrong); one light per surface (shortcoming 1: the hardware cannot interpolate
+/// polar lights), the direction at the quad's centre, moved onto the horizon if below it (shortcoming 3), weight
+/// `h`; the shade raised to p = pw/4. The ideal is the Cartesian path's: the filtered float normal against the
+/// pixel's own light, max(0, (1 − h) + h·N·L)^p.
+#[derive(Clone, Copy, Debug)]
+pub struct Polar {
+    pub scale: Scale,
+    pub pw: i64,
+    pub h: f64,
+}
+
+/// The polar set-up's own findings beside the common ones: the surface's light and which pixels filter across R's
+/// wrap.
+pub struct PolarSetup {
+    pub prepared: Prepared,
+    /// the surface's one light, as encoded, and the direction it was encoded from (the quad centre's)
+    pub light: polar_encode::Light,
+    pub surface_dir: [f64; 3],
+    pub straddles: Vec<bool>,
+}
+
+impl Polar {
+    pub fn set_up(&self, scene: &Scene) -> PolarSetup {
+        use polar_pipeline::input;
+        let t = scene.tex;
+        let normals = scene.normals();
+        let codes: Vec<(i64, i64)> = normals.iter().map(|&n| polar_encode::encode_normal(self.scale, n)).collect();
+        let surface_dir = scene.light_dir(0.5, 0.5);
+        let light = polar_encode::encode_light(self.scale, surface_dir, self.h);
+        let mut p = Prepared { size: scene.size, inputs: vec![], ideal: vec![] };
+        let mut straddles = vec![];
+        for px in raster::pixels(scene, &normals) {
+            let c = px.corners.map(|(i, j)| codes[j * t + i]);
+            let s = bilinear::exact_channel(c[0].0, c[1].0, c[2].0, c[3].0, px.ub, px.vb, bilinear::F);
+            let r = bilinear::exact_channel(c[0].1, c[1].1, c[2].1, c[3].1, px.ub, px.vb, bilinear::F);
+            let (rmin, rmax) = c.iter().fold((255, 0), |(lo, hi), &(_, r)| (lo.min(r), hi.max(r)));
+            straddles.push(rmax - rmin > 128);
+            let mut x = vec![0; polar_pipeline::INPUTS.len()];
+            (x[input::s], x[input::r], x[input::q]) = (s, r, light.q);
+            (x[input::k1], x[input::k2], x[input::k3], x[input::pw], x[input::mode]) = (light.k1, light.k2, light.k3, self.pw, 1);
+            (x[input::src_r], x[input::src_g], x[input::src_b]) = (scene.src[0], scene.src[1], scene.src[2]);
+            (x[input::dst_r], x[input::dst_g], x[input::dst_b]) = (scene.dst[0], scene.dst[1], scene.dst[2]);
+            p.inputs.push(x);
+            let (nrm, ld) = (px.normal, px.light);
+            let d = (1.0 - self.h) + self.h * (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]);
+            let a = 255.0 * d.clamp(0.0, 1.0).powf(self.pw as f64 / 4.0);
+            p.ideal.push(Ideal { shade: a, rgb: scene.blend_ideal(a), normal: nrm, light: ld });
+        }
+        PolarSetup { prepared: p, light, surface_dir, straddles }
+    }
+}
+
+impl Pipeline for Polar {
+    fn label(&self) -> &'static str {
+        "polar"
+    }
+    fn model(&self) -> &'static UnitModel {
+        polar_pipeline::MODEL_FOR[self.scale as usize]
+    }
+    fn rtl(&self) -> &'static dyn RtlPaths {
+        match self.scale {
+            Scale::Seed => &Rtl::<rtl::polar_pipeline::PolarPipelineSeed>::PATHS,
+            Scale::Dc255 => &Rtl::<rtl::polar_pipeline::PolarPipelineDc>::PATHS,
+        }
+    }
+    fn units(&self) -> &'static [&'static str] {
+        match self.scale {
+            Scale::Seed => &["polar_shade", "power", "blend"],
+            Scale::Dc255 => &["polar_shade_dc", "power", "blend"],
+        }
+    }
+    fn describe(&self, scene: &Scene) -> String {
+        let l = polar_encode::encode_light(self.scale, scene.light_dir(0.5, 0.5), self.h);
+        format!(
+            "({}): S, R bilinear as numbers, one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
+            self.scale.name(), l.t.to_degrees(), l.q, l.k1, l.k2, l.k3, self.pw as f64 / 4.0
+        )
+    }
+    fn prepare(&self, scene: &Scene) -> Prepared {
+        self.set_up(scene).prepared
+    }
+    fn shade(&self, out: &[i64]) -> f64 {
+        out[polar_pipeline::output::alpha] as f64
+    }
+    fn shade_name(&self) -> &'static str {
+        "α"
+    }
+    fn colour(&self, out: &[i64]) -> [u8; 3] {
+        use polar_pipeline::output;
+        [out[output::out_r], out[output::out_g], out[output::out_b]].map(|c| c as u8)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn all() -> Vec<Box<dyn Pipeline>> {
+        vec![
+            Box::new(Cartesian { decode: Decode::Seed }),
+            Box::new(Cartesian { decode: Decode::HemiOct }),
+            Box::new(Polar { scale: Scale::Seed, pw: 16, h: 1.0 }),
+            Box::new(Polar { scale: Scale::Dc255, pw: 16, h: 1.0 }),
+        ]
+    }
+
+    #[test]
+    fn every_pipeline_names_units_of_the_table_and_its_rtl_is_its_model() {
+        for p in all() {
+            assert_eq!(p.rtl().name(), p.model().name);
+            assert!(vectors::unit::find(p.model().name).is_some(), "{} is in the unit table", p.model().name);
+            for u in p.units() {
+                assert!(vectors::unit::find(u).is_some(), "{}: unit {u} is not in the unit table", p.model().name);
+            }
+        }
+    }
+
+    #[test]
+    fn prepared_inputs_are_legal_for_the_model() {
+        let scene = Scene { size: 8, ..Scene::default() };
+        for p in all() {
+            let prep = p.prepare(&scene);
+            assert_eq!((prep.inputs.len(), prep.ideal.len()), (64, 64));
+            for x in &prep.inputs {
+                for (v, port) in x.iter().zip(p.model().inputs) {
+                    let (lo, hi) = port.range();
+                    assert!((lo..=hi).contains(v), "{}: {} = {v}", p.model().name, port.name);
+                }
+            }
+        }
+    }
+}
