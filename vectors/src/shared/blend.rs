@@ -5,6 +5,7 @@
 //! The division: `t = num + 128`, `out = (t + (t >> 8)) >> 8`, which equals round-half-up(num/255) for every
 //! num ≤ 255·255 (checked exhaustively below).
 
+use crate::fixed::truncate;
 use crate::unit::UnitModel;
 
 crate::ports! {
@@ -19,7 +20,7 @@ crate::ports! {
 /// num/255 rounded half up, by shifts and adds only (U16 in, U8 out).
 pub fn div255(num: i64) -> i64 {
     let t = num + 128; // U16
-    (t + (t >> 8)) >> 8 // U17 >> 8, truncating: U8
+    truncate(t + truncate(t, 8), 8) // U16 + U8 = U17 → U8 (floor)
 }
 
 pub fn exact_channel(alpha: i64, mode: i64, src: i64, dst: i64) -> i64 {

@@ -11,7 +11,7 @@
 //! A zero vector (s = 0: opposite vertex lights interpolated through their midpoint) gives (0, 0, 0), so that the
 //! dot product, and the shade, are 0: no light direction, no light. Defined and tested.
 
-use crate::fixed::round_half_away;
+use crate::fixed::{round_half_away, truncate};
 use crate::unit::UnitModel;
 
 pub const TABLE_BITS: u32 = 10;
@@ -57,11 +57,11 @@ pub fn exact_with(v: [i64; 3], t: u32, newton: u32) -> [i64; 3] {
     }
     let e = norm_shift(s);
     let sn = s << (2 * e); // U20, [2^18, 2^20)
-    let mut r = table_entry(sn >> (20 - t), t) as i64; // U13, Q1.12
+    let mut r = table_entry(truncate(sn as i64, 20 - t) as u64, t) as i64; // the top t bits of U20 (floor) index a U13, Q1.12
     for _ in 0..newton {
-        let m = (sn >> 8) as i64; // Q2.10, truncated
-        let t2 = (m * r * r) >> 10; // Q.24, truncated
-        r = (r * (3 * (1 << 24) - t2)) >> 25; // Q1.12, truncated
+        let m = truncate(sn as i64, 8); // U20 → Q2.10 (floor)
+        let t2 = truncate(m * r * r, 10); // Q2.10 × Q1.12² = Q.34 → Q.24 (floor)
+        r = truncate(r * (3 * (1 << 24) - t2), 25); // Q1.12 × Q.24 = Q.36 → Q1.12 (floor, the halving included)
     }
     v.map(|c| round_half_away((c << e) * r, 11)) // S11 × U13 → S24 → Sq1.10
 }

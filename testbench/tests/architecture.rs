@@ -1,0 +1,115 @@
+//! ARCHITECTURE.md's invariants that a test can check, one test each, read from the source tree itself. The ones
+//! the simulators check (bit-exactness, latency, Verilog keywords, one wrap per signal) are in every unit's tests.
+use std::path::{Path, PathBuf};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// The `[dependencies]` table of a crate's manifest, as the crate names it lists.
+fn dependencies(krate: &str) -> Vec<String> {
+    let text = std::fs::read_to_string(root().join(krate).join("Cargo.toml")).unwrap();
+    let mut in_deps = false;
+    let mut deps = vec![];
+    for line in text.lines() {
+        let l = line.trim();
+        if l.starts_with('[') {
+            in_deps = l == "[dependencies]";
+        } else if in_deps && !l.is_empty() && !l.starts_with('#') {
+            deps.push(l.split(['=', '.', ' ']).next().unwrap().to_string());
+        }
+    }
+    deps
+}
+
+#[test]
+fn the_model_and_the_rtl_do_not_depend_on_each_other() {
+    let (v, r) = (dependencies("vectors"), dependencies("rtl"));
+    assert!(!v.is_empty() && !r.is_empty(), "both manifests read");
+    assert!(!v.contains(&"rtl".to_string()), "vectors depends on rtl: {v:?}");
+    assert!(!r.contains(&"vectors".to_string()), "rtl depends on vectors: {r:?}");
+}
+
+/// Every file under `dir`, skipping build output (`target/`, and `out/`, the commands' default output folder, both
+/// ignored by git) and version control.
+fn files(dir: &Path, out: &mut Vec<PathBuf>) {
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        let name = p.file_name().unwrap().to_string_lossy().to_string();
+        if p.is_dir() {
+            if name != "target" && name != "out" && !name.starts_with('.') {
+                files(&p, out);
+            }
+        } else {
+            out.push(p);
+        }
+    }
+}
+
+#[test]
+fn no_generated_file_lives_in_the_source_tree() {
+    let mut all = vec![];
+    files(&root(), &mut all);
+    assert!(all.iter().any(|p| p.ends_with("vectors/data/gloss.csv")), "the walk sees the golden files");
+    let generated: Vec<&PathBuf> = all
+        .iter()
+        .filter(|p| matches!(p.extension().and_then(|e| e.to_str()), Some("v" | "sv" | "vcd" | "png" | "hex" | "json" | "asc" | "bin")))
+        .collect();
+    assert!(generated.is_empty(), "generated files outside target/: {generated:?}");
+}
+
+fn rust_sources(dir: &str) -> Vec<(PathBuf, String)> {
+    let mut all = vec![];
+    files(&root().join(dir), &mut all);
+    all.into_iter().filter(|p| p.extension().is_some_and(|e| e == "rs")).map(|p| (p.clone(), std::fs::read_to_string(&p).unwrap())).collect()
+}
+
+#[test]
+fn fixed_point_types_are_declared_once_in_q_rs() {
+    let src = rust_sources("rtl/src");
+    assert!(src.len() > 10);
+    for (path, text) in &src {
+        if path.ends_with("q.rs") {
+            continue;
+        }
+        for (n, line) in text.lines().enumerate() {
+            let l = line.trim_start();
+            assert!(
+                !(l.starts_with("type ") || l.starts_with("pub type ")) || !l.contains("= Bits<"),
+                "{}:{}: a fixed-point type outside q.rs: {l}",
+                path.display(),
+                n + 1
+            );
+        }
+    }
+}
+
+#[test]
+fn no_block_uses_rust_hdl_signed() {
+    for (path, text) in rust_sources("rtl/src") {
+        for (n, line) in text.lines().enumerate() {
+            let code = line.split("//").next().unwrap();
+            assert!(!code.contains("Signed<") && !code.contains("signed_bit_cast"), "{}:{}: {line}", path.display(), n + 1);
+        }
+    }
+}
+
+#[test]
+fn signed_products_go_through_the_one_sign_magnitude_multiplier_in_the_bilinear_unit() {
+    // the bilinear unit, the first block rewritten on `SmMul`, writes no sign-magnitude idiom of its own
+    let text = std::fs::read_to_string(root().join("rtl/src/shared/bilinear.rs")).unwrap();
+    assert!(text.contains("SmMul<16>") && text.contains("SmMul<32>"));
+    assert!(!text.contains("+ 1;"), "bilinear.rs negates by hand again");
+}
+
+#[test]
+fn nothing_writes_into_the_system_temp_folder() {
+    for dir in ["src", "sim", "synth", "testbench", "rtl/src", "vectors/src", "tests"] {
+        for (path, text) in rust_sources(dir) {
+            if path.ends_with("architecture.rs") {
+                continue;
+            }
+            assert!(!text.contains("temp_dir()") && !text.contains("\"/tmp"), "{} writes into the system temp folder", path.display());
+        }
+    }
+}
