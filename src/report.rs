@@ -22,54 +22,45 @@ pub fn accuracy(directions: usize, samples: usize) {
     }
 }
 
+type SynthFn = fn(&std::path::Path, synth::fpga::Family) -> Result<synth::fpga::Cells, String>;
+
+macro_rules! sincos_blocks {
+    ($(($tb:literal, $w:literal)),* $(,)?) => {
+        &[$(($tb, $w, synth::fpga::synth_unit::<rtl::sincos::SinCos<$tb, $w>> as SynthFn)),*]
+    };
+}
+
+macro_rules! cos_sign_blocks {
+    ($(($tb:literal, $w:literal)),* $(,)?) => {
+        &[$(($tb, $w, synth::fpga::synth_unit::<rtl::cos_sign::CosSign<$tb, $w>> as SynthFn)),*]
+    };
+}
+
+/// The rtl block of every size of each LUT-size table, from the same list as the model's `LUT_SIZES`.
+const SINCOS_BLOCKS: &[(u32, u32, SynthFn)] = vectors::sincos_lut_sizes!(sincos_blocks);
+const COS_SIGN_BLOCKS: &[(u32, u32, SynthFn)] = vectors::cos_sign_lut_sizes!(cos_sign_blocks);
+
 /// The LUT-size tables of the sine/cosine unit [10] and the cosine unit with sign [18]: entries and width against
 /// error (every input) and, when `cost` is on, against what yosys makes of the rtl block of that size for iCE40.
 pub fn lut_sizes(cost: bool, dir: &std::path::Path) -> Result<(), String> {
-    use rtl::cos_sign::CosSign;
-    use rtl::sincos::SinCos;
-    use synth::fpga::{synth_unit, Family};
+    let table = |name: &str, rows: Vec<vectors::sincos::SizeRow>, blocks: &[(u32, u32, SynthFn)]| -> Result<(), String> {
+        lut_header();
+        for r in rows {
+            let tb = r.entries.trailing_zeros();
+            let c = if !cost {
+                None
+            } else {
+                let (.., f) = blocks.iter().find(|b| (b.0, b.1) == (tb, r.width)).ok_or(format!("no rtl {name} of {} x {}", r.entries, r.width))?;
+                Some(f(&dir.join(format!("{name}_t{}w{}", r.entries, r.width)), synth::fpga::Family::Ice40)?)
+            };
+            lut_row(&r, c.as_ref());
+        }
+        Ok(())
+    };
     println!("\nsin/cos unit [10]: table size and width (10-bit elevation in; error in 8-bit LSB; the rtl has 256 × 8):");
-    lut_header();
-    for r in sim::accuracy::sincos_sizes() {
-        let (tb, d) = (r.entries.trailing_zeros(), dir.join(format!("sincos_t{}w{}", r.entries, r.width)));
-        let c = if !cost {
-            None
-        } else {
-            Some(match (tb, r.width) {
-                (6, 8) => synth_unit::<SinCos<6, 8>>(&d, Family::Ice40),
-                (8, 8) => synth_unit::<SinCos<8, 8>>(&d, Family::Ice40),
-                (10, 8) => synth_unit::<SinCos<10, 8>>(&d, Family::Ice40),
-                (6, 10) => synth_unit::<SinCos<6, 10>>(&d, Family::Ice40),
-                (8, 10) => synth_unit::<SinCos<8, 10>>(&d, Family::Ice40),
-                (10, 10) => synth_unit::<SinCos<10, 10>>(&d, Family::Ice40),
-                (6, 12) => synth_unit::<SinCos<6, 12>>(&d, Family::Ice40),
-                (8, 12) => synth_unit::<SinCos<8, 12>>(&d, Family::Ice40),
-                (10, 12) => synth_unit::<SinCos<10, 12>>(&d, Family::Ice40),
-                other => return Err(format!("no rtl sincos of size {other:?}")),
-            }?)
-        };
-        lut_row(&r, c.as_ref());
-    }
+    table("sincos", sim::accuracy::sincos_sizes(), SINCOS_BLOCKS)?;
     println!("\ncosine unit with sign [18]: table size and width (d = R − Q in; error of the signed cosine, 8-bit LSB):");
-    lut_header();
-    for r in sim::accuracy::cos_sign_sizes() {
-        let (tb, d) = (r.entries.trailing_zeros(), dir.join(format!("cos_sign_t{}w{}", r.entries, r.width)));
-        let c = if !cost {
-            None
-        } else {
-            Some(match (tb, r.width) {
-                (4, 8) => synth_unit::<CosSign<4, 8>>(&d, Family::Ice40),
-                (6, 8) => synth_unit::<CosSign<6, 8>>(&d, Family::Ice40),
-                (8, 8) => synth_unit::<CosSign<8, 8>>(&d, Family::Ice40),
-                (4, 12) => synth_unit::<CosSign<4, 12>>(&d, Family::Ice40),
-                (6, 12) => synth_unit::<CosSign<6, 12>>(&d, Family::Ice40),
-                (8, 12) => synth_unit::<CosSign<8, 12>>(&d, Family::Ice40),
-                other => return Err(format!("no rtl cos_sign of size {other:?}")),
-            }?)
-        };
-        lut_row(&r, c.as_ref());
-    }
-    Ok(())
+    table("cos_sign", sim::accuracy::cos_sign_sizes(), COS_SIGN_BLOCKS)
 }
 
 fn lut_header() {

@@ -70,6 +70,21 @@ pub struct UnitModel {
     pub exhaustive: Option<fn() -> Vec<Vec<i64>>>,
     /// Inputs the seeds warn about or that sit at the edge of a range; always in the golden file.
     pub hard_cases: fn() -> Vec<Vec<i64>>,
+    /// The unit's error against its ideal, measured: (samples where it draws at random, seed) → one row per metric.
+    /// `bumprtl accuracy` prints every unit's, in the table's order.
+    pub accuracy: Option<fn(usize, u64) -> Vec<Accuracy>>,
+}
+
+/// One measured error of a unit against its ideal: what is measured, over which inputs, and the statistics.
+pub struct Accuracy {
+    pub metric: String,
+    pub stats: crate::stats::ErrorStats,
+}
+
+impl Accuracy {
+    pub fn new(metric: &str, stats: crate::stats::ErrorStats) -> Accuracy {
+        Accuracy { metric: metric.to_string(), stats }
+    }
 }
 
 impl UnitModel {
@@ -81,11 +96,15 @@ impl UnitModel {
         random: fn(&mut dyn rand::RngCore) -> Vec<i64>,
         hard_cases: fn() -> Vec<Vec<i64>>,
     ) -> UnitModel {
-        UnitModel { name, inputs: ports.0, outputs: ports.1, exact, random, exhaustive: None, hard_cases }
+        UnitModel { name, inputs: ports.0, outputs: ports.1, exact, random, exhaustive: None, hard_cases, accuracy: None }
     }
 
     pub const fn with_exhaustive(self, all: fn() -> Vec<Vec<i64>>) -> UnitModel {
         UnitModel { exhaustive: Some(all), ..self }
+    }
+
+    pub const fn with_accuracy(self, f: fn(usize, u64) -> Vec<Accuracy>) -> UnitModel {
+        UnitModel { accuracy: Some(f), ..self }
     }
 
     pub fn header(&self) -> Vec<&'static str> {

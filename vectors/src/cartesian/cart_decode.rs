@@ -95,7 +95,27 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("cart_decode", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL: UnitModel = UnitModel::new("cart_decode", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+
+/// Every texel, the angle of the decoded bump against the direction it stands for: the seed's decode and the
+/// consistent one (L1 = 254).
+fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
+    use crate::stats::{angle_deg, ErrorStats};
+    let (mut s, mut c) = (ErrorStats::default(), ErrorStats::default());
+    for tx in 0..=255u8 {
+        for tz in 0..=255u8 {
+            let i = ideal(tx, tz);
+            let b = exact(tx, tz);
+            s.add(angle_deg([b.x as f64, b.y as f64, b.z as f64], i), || format!("texel ({tx}, {tz})"));
+            let b = exact_with_l1(tx, tz, 254);
+            c.add(angle_deg([b.x as f64, b.y as f64, b.z as f64], i), || format!("texel ({tx}, {tz})"));
+        }
+    }
+    vec![
+        crate::unit::Accuracy::new("degrees, seed decode (L1 = 255), all texels", s),
+        crate::unit::Accuracy::new("degrees, consistent decode (L1 = 254)", c),
+    ]
+}
 
 #[cfg(test)]
 mod tests {

@@ -57,7 +57,19 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     .collect()
 }
 
-pub static MODEL: UnitModel = UnitModel::new("cart_decode_hemi_oct", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL: UnitModel = UnitModel::new("cart_decode_hemi_oct", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+
+/// Every texel, the angle of the decoded vector against what it means (the decode is exact: this is a check).
+fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
+    let mut h = crate::stats::ErrorStats::default();
+    for u in 0..=255u8 {
+        for v in 0..=255u8 {
+            let b = exact(u, v).map(|c| c as f64);
+            h.add(crate::stats::angle_deg(b, ideal(u, v)), || format!("texel ({u}, {v})"));
+        }
+    }
+    vec![crate::unit::Accuracy::new("degrees, all texels", h)]
+}
 
 #[cfg(test)]
 mod tests {

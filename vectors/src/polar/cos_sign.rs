@@ -8,8 +8,17 @@ use std::f64::consts::TAU;
 
 pub const TABLE_BITS: u32 = 8;
 pub const WIDTH: u32 = 8;
-/// The (table bits, width) pairs of the LUT-size table: 16, 64 and 256 entries of 8 and 12 bits.
-pub const LUT_SIZES: &[(u32, u32)] = &[(4, 8), (6, 8), (8, 8), (4, 12), (6, 12), (8, 12)];
+/// The (table bits, width) pairs of the LUT-size table, 16, 64 and 256 entries of 8 and 12 bits, written once (as
+/// `sincos_lut_sizes!`).
+#[macro_export]
+macro_rules! cos_sign_lut_sizes {
+    ($then:ident) => {
+        $then! { (4, 8), (6, 8), (8, 8), (4, 12), (6, 12), (8, 12) }
+    };
+}
+
+use crate::lut_size_slice;
+pub const LUT_SIZES: &[(u32, u32)] = crate::cos_sign_lut_sizes!(lut_size_slice);
 
 crate::ports! {
     inputs: [
@@ -44,7 +53,7 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     [0, 63, 64, 65, 128, 191, 192, 193, 255].iter().map(|&d| vec![d]).collect()
 }
 
-pub static MODEL: UnitModel = UnitModel::new("cos_sign", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL: UnitModel = UnitModel::new("cos_sign", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
 
 /// Mean and max |error| of the signed cosine over every d, in LSBs of an 8-bit output, and where the max is.
 pub fn size_error(tb: u32, w: u32) -> crate::sincos::SizeRow {
@@ -61,6 +70,17 @@ pub fn size_error(tb: u32, w: u32) -> crate::sincos::SizeRow {
         }
     }
     crate::sincos::SizeRow { entries: 1 << tb, width: w, mean_lsb8: sum / 256.0, max_lsb8: max, max_at: at }
+}
+
+/// Every d, the signed cosine.
+fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
+    let mut cs = crate::stats::ErrorStats::default();
+    for d in 0..256 {
+        let (m, neg) = exact_with(TABLE_BITS, WIDTH, d);
+        let v = if neg { -m } else { m } as f64;
+        cs.add((v - ideal(d)).abs(), || format!("d {d}"));
+    }
+    vec![crate::unit::Accuracy::new("8-bit LSB, signed cosine, every d, 256 entries", cs)]
 }
 
 #[cfg(test)]

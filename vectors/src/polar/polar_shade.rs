@@ -137,11 +137,37 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("polar_shade", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL: UnitModel = UnitModel::new("polar_shade", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
 
 /// The same unit with the Dreamcast toolchains' angle scale in its tables (the block `PolarShade<true>`, inside
 /// `polar_pipeline_dc`).
-pub static MODEL_DC: UnitModel = UnitModel::new("polar_shade_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL_DC: UnitModel = UnitModel::new("polar_shade_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy_dc);
+
+/// Random vectors against equation 3 on the angles the codes stand for: the S11 before the clamp and the shade.
+fn accuracy_in(scale: Scale, samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let (mut pre, mut clamped) = (crate::stats::ErrorStats::default(), crate::stats::ErrorStats::default());
+    for _ in 0..samples {
+        let v = random_inputs(&mut rng);
+        let (sum, shade) = exact(scale, v[0], v[1], v[2], v[3], v[4], v[5]);
+        let i = ideal(scale, v[0], v[1], v[2], v[3], v[4], v[5]);
+        pre.add((sum as f64 - i).abs(), || format!("{v:?}"));
+        clamped.add((shade as f64 - i.clamp(0.0, 255.0)).abs(), || format!("{v:?}"));
+    }
+    vec![
+        crate::unit::Accuracy::new("8-bit LSB, S11 before the clamp", pre),
+        crate::unit::Accuracy::new("8-bit LSB, clamped shade", clamped),
+    ]
+}
+
+fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
+    accuracy_in(Scale::Seed, samples, seed)
+}
+
+fn accuracy_dc(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
+    accuracy_in(Scale::Dc255, samples, seed)
+}
 
 #[cfg(test)]
 mod tests {

@@ -77,7 +77,18 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("power", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL: UnitModel = UnitModel::new("power", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+
+/// Every (x, p) against `powf`.
+fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
+    let mut pw = crate::stats::ErrorStats::default();
+    for x in 0..256 {
+        for p in 0..256 {
+            pw.add((exact(x, p) as f64 - ideal(x, p)).abs(), || format!("x={x} p={}", p as f64 / 4.0));
+        }
+    }
+    vec![crate::unit::Accuracy::new("8-bit LSB against powf, all 2^16 (x, p)", pw)]
+}
 
 #[cfg(test)]
 mod tests {

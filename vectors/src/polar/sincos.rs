@@ -110,10 +110,27 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     [0, 1, 3, 4, 341, 512, 1020, 1022, 1023].iter().map(|&a| vec![a]).collect()
 }
 
-pub static MODEL: UnitModel = UnitModel::new("sincos", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL: UnitModel = UnitModel::new("sincos", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
 
-/// The (table bits, width) pairs of the LUT-size table: 64, 256 and 1,024 entries of 8, 10 and 12 bits.
-pub const LUT_SIZES: &[(u32, u32)] = &[(6, 8), (8, 8), (10, 8), (6, 10), (8, 10), (10, 10), (6, 12), (8, 12), (10, 12)];
+/// The (table bits, width) pairs of the LUT-size table, 64, 256 and 1,024 entries of 8, 10 and 12 bits, written once:
+/// `sincos_lut_sizes!(callback)` expands to `callback! { (6, 8), (8, 8), ... }`, so that the rtl blocks of each
+/// size (`bumprtl accuracy --lut-cost`) come from the same list as `LUT_SIZES`.
+#[macro_export]
+macro_rules! sincos_lut_sizes {
+    ($then:ident) => {
+        $then! { (6, 8), (8, 8), (10, 8), (6, 10), (8, 10), (10, 10), (6, 12), (8, 12), (10, 12) }
+    };
+}
+
+/// A list of (table bits, width) pairs as a slice.
+#[macro_export]
+macro_rules! lut_size_slice {
+    ($(($tb:literal, $w:literal)),* $(,)?) => {
+        &[$(($tb, $w)),*]
+    };
+}
+
+pub const LUT_SIZES: &[(u32, u32)] = crate::sincos_lut_sizes!(lut_size_slice);
 
 /// One row of the LUT-size table: max and mean |error| of sin and cos over every 10-bit angle, in LSBs of an
 /// 8-bit output (so widths compare), for a table of 2^tb entries of w bits.
@@ -142,6 +159,17 @@ pub fn size_error(tb: u32, w: u32) -> SizeRow {
         }
     }
     SizeRow { entries: 1 << tb, width: w, mean_lsb8: sum / (2 << ANGLE_BITS) as f64, max_lsb8: max, max_at: at }
+}
+
+/// Every 10-bit angle, the worse of sin and cos.
+fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
+    let mut sc = crate::stats::ErrorStats::default();
+    for a in 0..1i64 << ANGLE_BITS {
+        let (s, c) = exact_with(Scale::Seed, TABLE_BITS, WIDTH, a);
+        let (is, ic) = ideal(a);
+        sc.add((s as f64 - is).abs().max((c as f64 - ic).abs()), || format!("angle {a}"));
+    }
+    vec![crate::unit::Accuracy::new("8-bit LSB, every 10-bit angle, 256 entries", sc)]
 }
 
 #[cfg(test)]

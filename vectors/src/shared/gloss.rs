@@ -53,7 +53,18 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("gloss", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive);
+pub static MODEL: UnitModel = UnitModel::new("gloss", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+
+/// Every (C, X) against the recipe in reals.
+fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
+    let mut s = crate::stats::ErrorStats::default();
+    for cc in 0..256 {
+        for x in 0..1024 {
+            s.add((exact(cc, x) as f64 - ideal(cc, x)).abs(), || format!("C={cc} X={x}"));
+        }
+    }
+    vec![crate::unit::Accuracy::new("10-bit LSB vs the recipe in reals, all 2^18", s)]
+}
 
 #[cfg(test)]
 mod tests {

@@ -98,7 +98,33 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     ]
 }
 
-pub static MODEL: UnitModel = UnitModel::new("normalise", (INPUTS, OUTPUTS), exact_ports, random, hard_cases);
+pub static MODEL: UnitModel = UnitModel::new("normalise", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
+
+/// The normaliser with a `t`-bit seed table and `newton` steps against the ideal, over `samples` random vectors
+/// of every scale (the zero vector skipped): the worst component error per vector (Sq1.10 LSB) and the angle.
+pub fn error(t: u32, newton: u32, samples: usize, seed: u64) -> (crate::stats::ErrorStats, crate::stats::ErrorStats) {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let (mut comp, mut angle) = (crate::stats::ErrorStats::default(), crate::stats::ErrorStats::default());
+    for _ in 0..samples {
+        let v = random(&mut rng);
+        let v = [v[0], v[1], v[2]];
+        if v == [0, 0, 0] {
+            continue;
+        }
+        let e = exact_with(v, t, newton).map(|c| c as f64);
+        let i = ideal(v);
+        comp.add((0..3).map(|k| (e[k] - i[k]).abs()).fold(0.0, f64::max), || format!("{v:?}"));
+        angle.add(crate::stats::angle_deg(e, i), || format!("{v:?}"));
+    }
+    (comp, angle)
+}
+
+/// The rtl's table and Newton steps, random vectors of every scale.
+fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
+    let (l, a) = error(TABLE_BITS, NEWTON, samples, seed);
+    vec![crate::unit::Accuracy::new("component error, Sq1.10 LSB (1/1024)", l), crate::unit::Accuracy::new("degrees", a)]
+}
 
 #[cfg(test)]
 mod tests {
