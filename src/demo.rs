@@ -5,7 +5,8 @@
 //! (`sim::pipeline`); this file is the command's flow and its printing.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use sim::pipeline::{Cartesian, Pipeline, Polar, PolarSetup, Prepared};
+use sim::pipeline::{Cartesian, Pipeline, Polar, Prepared};
+use sim::shortcomings::Shortcomings;
 use sim::render::{self, Image};
 use sim::scene::Scene;
 use std::path::Path;
@@ -66,7 +67,7 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
     // both Verilator runs, the one-thread and the split one, against the model
     let mism_vl = vl.as_ref().map(|r| r.image.mismatches(&model) + r.single.mismatches(&model)).unwrap_or(0);
     let mism_hdl = hdl.as_ref().map(|h| h.mismatches(&model)).unwrap_or(0);
-    let where_ = at(prep.size);
+    let where_ = render::pixel_at(prep.size);
     let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
     let mut normal = pipe.normal(&prep.inputs[0]).map(|_| ErrorStats::default());
     for (k, (o, ideal)) in model.outs.iter().zip(&prep.ideal).enumerate() {
@@ -82,78 +83,6 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
 fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] as f64 - ideal[c]).abs()).fold(0.0, f64::max)
-}
-
-fn at(size: usize) -> impl Fn(usize) -> String {
-    move |k| format!("pixel ({}, {})", k % size, k / size)
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-/// The seed's polar shortcomings, measured: the polar path against an ideal lit by the surface's one light and
-/// against its own codes; the pixels filtered across R's wrap; a light below the horizon.
-struct Shortcomings {
-    surface: ErrorStats,
-    own: ErrorStats,
-    surface_ideal: Vec<f64>,
-    wrap: ErrorStats,
-    rest: ErrorStats,
-    wrap_cartesian: ErrorStats,
-    low_cartesian: ErrorStats,
-    low_polar: ErrorStats,
-    low_below_deg: f64,
-    low_moved: bool,
-    low_ideal: Vec<f64>,
-    low_cx: Vec<f64>,
-    low_px: Vec<f64>,
-}
-
-fn shortcomings(scene: &Scene, polar: &Polar, setup: &PolarSetup, pol: &Run, cart: &Run) -> Shortcomings {
-    let n = scene.size * scene.size;
-    let where_ = at(scene.size);
-    let pw_real = polar.pw as f64 / 4.0;
-    let ideal = &setup.prepared.ideal;
-    let surface_ideal: Vec<f64> = (0..n)
-        .map(|k| 255.0 * ((1.0 - polar.h) + polar.h * dot(ideal[k].normal, setup.surface_dir)).clamp(0.0, 1.0).powf(pw_real))
-        .collect();
-    let mut s = Shortcomings {
-        surface: ErrorStats::default(), own: ErrorStats::default(), surface_ideal, wrap: ErrorStats::default(),
-        rest: ErrorStats::default(), wrap_cartesian: ErrorStats::default(), low_cartesian: ErrorStats::default(),
-        low_polar: ErrorStats::default(), low_below_deg: 0.0, low_moved: false, low_ideal: vec![0.0; n],
-        low_cx: vec![0.0; n], low_px: vec![0.0; n],
-    };
-    for k in 0..n {
-        let a = pol.pipe.shade(&pol.model.outs[k]);
-        let e = (a - s.surface_ideal[k]).abs();
-        s.surface.add(e, || where_(k));
-        let v = &setup.prepared.inputs[k];
-        let own = vectors::polar_shade::ideal(polar.scale, v[0], v[1], v[2], v[3], v[4], v[5]).clamp(0.0, 255.0);
-        s.own.add((a - vectors::power::ideal_real(own, v[6])).abs(), || where_(k));
-        if setup.straddles[k] {
-            s.wrap.add(e, || where_(k));
-            s.wrap_cartesian.add((cart.pipe.shade(&cart.model.outs[k]) - cart.prep.ideal[k].shade).abs(), || where_(k));
-        } else {
-            s.rest.add(e, || where_(k));
-        }
-    }
-    // a light below the horizon. Both pipelines' N·L before their shading curves (Cartesian: dot3's X; polar: the
-    // clamped shade with h = 1), 8-bit, against 255·max(0, N·L) with the pixel's true light
-    let low = Scene { light_pos: [-0.6, -0.12, 0.5], ..scene.clone() };
-    let low_c = Cartesian { decode: Decode::Seed }.prepare(&low);
-    let low_p = Polar { h: 1.0, ..*polar }.set_up(&low);
-    s.low_below_deg = -low_p.prepared.ideal[n / 2].light[1].asin().to_degrees();
-    s.low_moved = low_p.light.moved;
-    for k in 0..n {
-        let p = &low_p.prepared.ideal[k];
-        s.low_ideal[k] = 255.0 * dot(p.normal, p.light).max(0.0);
-        s.low_cx[k] = vectors::cart_pipeline::exact_trace(&low_c.inputs[k]).x as f64 / 1023.0 * 255.0;
-        s.low_px[k] = vectors::polar_pipeline::exact_trace(polar.scale, &low_p.prepared.inputs[k]).shade as f64;
-        s.low_cartesian.add((s.low_cx[k] - s.low_ideal[k]).abs(), || where_(k));
-        s.low_polar.add((s.low_px[k] - s.low_ideal[k]).abs(), || where_(k));
-    }
-    s
 }
 
 pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), String> {
@@ -179,7 +108,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
         .collect::<Result<Vec<Run>, String>>()?;
     let polar_setup = polar.set_up(&scene);
-    let sc = shortcomings(&scene, &polar, &polar_setup, &runs[2], &runs[0]);
+    let sc = Shortcomings::measure(&scene, &polar, &polar_setup, &runs[2].model, (&cart, &runs[0].prep, &runs[0].model));
 
     // pictures: per pipeline, then the shortcomings
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;

@@ -6,4 +6,5 @@ pub mod pipeline;
 pub mod raster;
 pub mod render;
 pub mod scene;
+pub mod shortcomings;
 pub mod wave;

@@ -104,6 +104,11 @@ pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>],
     Ok(VerilatorRun { image, single, threads, bare_cycles_per_second })
 }
 
+/// Names pixel k of a `size`-wide frame, for error reports: "pixel (x, y)".
+pub fn pixel_at(size: usize) -> impl Fn(usize) -> String {
+    move |k| format!("pixel ({}, {})", k % size, k / size)
+}
+
 /// Write an RGB image as PNG, whole or not at all.
 pub fn write_png(path: &Path, size: usize, rgb: impl Fn(usize) -> [u8; 3]) -> Result<(), String> {
     let mut img = image::RgbImage::new(size as u32, size as u32);

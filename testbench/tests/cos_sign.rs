@@ -20,6 +20,7 @@ static M16X12: UnitModel = UnitModel {
     random: MODEL.random,
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
+    accuracy: None,
 };
 
 #[test]

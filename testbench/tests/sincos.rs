@@ -55,6 +55,7 @@ static M64X8: UnitModel = UnitModel {
     random: MODEL.random,
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
+    accuracy: None,
 };
 
 static M1024X12: UnitModel = UnitModel {
@@ -65,6 +66,7 @@ static M1024X12: UnitModel = UnitModel {
     random: MODEL.random,
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
+    accuracy: None,
 };
 
 #[test]

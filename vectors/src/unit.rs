@@ -85,6 +85,27 @@ impl Accuracy {
     pub fn new(metric: &str, stats: crate::stats::ErrorStats) -> Accuracy {
         Accuracy { metric: metric.to_string(), stats }
     }
+
+    /// One metric over `samples` inputs drawn by `random` from a stream seeded with `seed`; `errors` gives each
+    /// input's errors (one, or one per channel), all counted, the worst reported with its input.
+    pub fn over_random(
+        metric: &str,
+        samples: usize,
+        seed: u64,
+        random: fn(&mut dyn rand::RngCore) -> Vec<i64>,
+        errors: impl Fn(&[i64]) -> Vec<f64>,
+    ) -> Accuracy {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        let mut s = crate::stats::ErrorStats::default();
+        for _ in 0..samples {
+            let v = random(&mut rng);
+            for e in errors(&v) {
+                s.add(e, || format!("{v:?}"));
+            }
+        }
+        Accuracy::new(metric, s)
+    }
 }
 
 impl UnitModel {

@@ -62,7 +62,7 @@ impl Logic for CartDecode {
     fn update(&mut self) {
         dff_setup!(self, clock, s1_ax, s1_az, s1_sx, s1_sz, s2_sum, s2_dxz, s2_ax, s2_az, s2_sx, s2_sz, s3_mx, s3_mz,
             s3_by, s3_sx, s3_sz, s4_bx, s4_by, s4_bz);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1: the distance from 127 of T saturated to 254, and its side, with one 7-bit incrementer:
         // T < 128: 127 − T = !T[6:0] (texel 127 gives 0, and then the sign does not matter);

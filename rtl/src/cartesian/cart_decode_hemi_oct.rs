@@ -44,7 +44,7 @@ impl Logic for CartDecodeHemiOct {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_x, s1_z, s2_ax, s2_az, s2_x, s2_z, s3_y, s3_x, s3_z);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1: U8 widened to 9 bits, added and subtracted with a 9-bit wrap (the true values fit INT9)
         self.w_u.next = bit_cast::<9, 8>(self.texel_u.val());

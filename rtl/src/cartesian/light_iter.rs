@@ -88,7 +88,7 @@ impl Logic for LightIter {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_w1, s1_w2, s2_w1, s2_w2);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         self.s1_w1.d.next = bit_cast::<16, 9>(self.w1.val());
         self.s1_w2.d.next = bit_cast::<16, 9>(self.w2.val());

@@ -57,7 +57,7 @@ impl<const TB: usize, const W: usize, const DC: bool> Logic for CosSign<TB, W, D
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_addr, s2_mag, s2_neg);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1: the top TB bits of d (truncate)
         self.w_top.next = self.d.val() >> self.low_bits.val();

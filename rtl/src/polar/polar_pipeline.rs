@@ -50,11 +50,7 @@ pub struct PolarPipeline<const DC: bool> {
 impl<const DC: bool> Logic for PolarPipeline<DC> {
     #[hdl_gen]
     fn update(&mut self) {
-        self.shader.clock.next = self.clock.val();
-        self.power.clock.next = self.clock.val();
-        self.blend.clock.next = self.clock.val();
-        self.pw_dly.clock.next = self.clock.val();
-        self.alpha_dly.clock.next = self.clock.val();
+        clock!(self, clock, shader, power, blend, pw_dly, alpha_dly);
         // the shade
         self.shader.valid_in.next = self.valid_in.val();
         self.shader.s.next = self.s.val();

@@ -91,15 +91,7 @@ impl<const DC: bool> Logic for PolarShade<DC> {
         dff_setup!(self, clock, s1_k1, s1_k2, s1_k3, s2_k1, s2_k2, s2_k3, s3_p12, s3_p14,
             s3_k1, s3_cd, s3_neg, s6_p20, s6_a22, s6_neg, s9_sum, s10_shade, s10_sum);
         clock!(self, clock, sin_cos, cos_sign);
-        self.div12.clock.next = self.clock.val();
-        self.div14.clock.next = self.clock.val();
-        self.div20.clock.next = self.clock.val();
-        self.k1_dly.clock.next = self.clock.val();
-        self.cd_dly.clock.next = self.clock.val();
-        self.neg_dly.clock.next = self.clock.val();
-        self.a22_dly.clock.next = self.clock.val();
-        self.neg2_dly.clock.next = self.clock.val();
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, div12, div14, div20, k1_dly, cd_dly, neg_dly, a22_dly, neg2_dly, valid);
         // the table blocks carry the valid flag through stages 1–2 (both the same flag), the chain the rest
         self.valid.d.next = self.sin_cos.valid_out.val() & self.cos_sign.valid_out.val();
         // stage 1: the subtractor [16], modulo 256 (the 8-bit difference wraps in both simulators)

@@ -58,9 +58,7 @@ impl Logic for Power {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_x, s1_pw, s2_l, s2_pw, s3_e, s4_n, s4_f, s5_e, s5_sh, s6_w, s7_y);
-        self.zero_dly.clock.next = self.clock.val();
-        self.pw0_dly.clock.next = self.clock.val();
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, zero_dly, pw0_dly, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1 (x = 0 and pw = 0 are flagged from the registered inputs, so their delay lines are 5 long)
         self.s1_x.d.next = self.x.val();

@@ -59,7 +59,7 @@ impl<const TB: usize, const W: usize, const DC: bool> Logic for SinCos<TB, W, DC
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_addr, s2_sin, s2_cos);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1: the top TB bits (truncate)
         self.w_top.next = self.angle.val() >> self.low_bits.val();

@@ -58,7 +58,7 @@ impl Logic for Blend {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_wa, s1_wd);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1
         self.inv_alpha.next = 255 - self.alpha.val();

@@ -49,7 +49,7 @@ impl Logic for Dot3 {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s4_sum, s5_x);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         self.n_in[0].next = self.n_x.val();
         self.n_in[1].next = self.n_y.val();

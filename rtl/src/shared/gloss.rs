@@ -129,7 +129,7 @@ impl Logic for Gloss {
     fn update(&mut self) {
         dff_setup!(self, clock, s1_k, s1_t, s1_c, s1b_k, s1b_t, s1b_c, s2_m, s2_c, s3_l, s3_c, s3b_l, s3b_c, s4_ll,
             s4_l, s4_c, s5_d, s5_l, s5_c, s5b_d, s5b_l, s5b_c, s6_prod, s6_l, s7_q, s7_l, s8_p);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1
         self.s1_k.d.next = bit_cast::<9, 8>(self.conc.val()) + 8; // U9, no overflow (≤ 263)

@@ -156,7 +156,7 @@ impl Logic for Normalise {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r);
-        self.valid.clock.next = self.clock.val();
+        clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         for i in 0..3 {
             self.s1_m[i].clock.next = self.clock.val();

@@ -39,7 +39,7 @@ impl<const W: usize, const A: usize, const N: usize> Default for RamDelay<W, A, 
 impl<const W: usize, const A: usize, const N: usize> Logic for RamDelay<W, A, N> {
     #[hdl_gen]
     fn update(&mut self) {
-        self.wp.clock.next = self.clock.val();
+        clock!(self, clock, wp);
         self.ram.read_clock.next = self.clock.val();
         self.ram.write_clock.next = self.clock.val();
         self.wp.d.next = self.wp.q.val() + 1; // wraps modulo 2^A: the assignment truncates in both simulators
@@ -81,9 +81,7 @@ pub struct DelayedBlend<const A: usize, const N: usize> {
 impl<const A: usize, const N: usize> Logic for DelayedBlend<A, N> {
     #[hdl_gen]
     fn update(&mut self) {
-        self.colours.clock.next = self.clock.val();
-        self.mode_dly.clock.next = self.clock.val();
-        self.blend.clock.next = self.clock.val();
+        clock!(self, clock, colours, mode_dly, blend);
         // packed low to high: src r, g, b, dst r, g, b
         self.word.next = bit_cast::<48, 8>(self.src_r.val());
         self.word.next = self.word.val() | (bit_cast::<48, 8>(self.src_g.val()) << 8);

@@ -77,18 +77,15 @@ pub static MODEL: UnitModel = UnitModel::new("light_iter", (INPUTS, OUTPUTS), ex
 
 /// Random vectors against the reals, every component (the ideal clamped to the output's range).
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
-    use rand::SeedableRng;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut li = crate::stats::ErrorStats::default();
-    for _ in 0..samples {
-        let v = random(&mut rng);
-        for k in 0..3 {
-            let e = exact_component(v[k], v[3 + k], v[6 + k], v[9], v[10]) as f64;
-            let i = ideal_component(v[k] as f64, v[3 + k] as f64, v[6 + k] as f64, v[9] as f64, v[10] as f64);
-            li.add((e - i.clamp(-512.0, 511.0)).abs(), || format!("{v:?}"));
-        }
-    }
-    vec![crate::unit::Accuracy::new("Sq7.2 LSB", li)]
+    vec![crate::unit::Accuracy::over_random("Sq7.2 LSB", samples, seed, random, |v| {
+        (0..3)
+            .map(|k| {
+                let e = exact_component(v[k], v[3 + k], v[6 + k], v[9], v[10]) as f64;
+                let i = ideal_component(v[k] as f64, v[3 + k] as f64, v[6 + k] as f64, v[9] as f64, v[10] as f64);
+                (e - i.clamp(-512.0, 511.0)).abs()
+            })
+            .collect()
+    })]
 }
 
 #[cfg(test)]

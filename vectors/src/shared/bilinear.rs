@@ -62,18 +62,13 @@ pub static MODEL: UnitModel = UnitModel::new("bilinear", (INPUTS, OUTPUTS), exac
 
 /// Random vectors against the reals, the red channel.
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
-    use rand::SeedableRng;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut bi = crate::stats::ErrorStats::default();
     let one = (1i64 << F) as f64;
-    for _ in 0..samples {
-        let v = random_inputs(&mut rng);
-        let (t00, t10, t01, t11, u, w) = (v[input::t00_r], v[input::t10_r], v[input::t01_r], v[input::t11_r], v[input::ublend], v[input::vblend]);
+    vec![crate::unit::Accuracy::over_random("8-bit LSB", samples, seed, random_inputs, |v| {
+        let (t00, t10, t01, t11) = (v[input::t00_r], v[input::t10_r], v[input::t01_r], v[input::t11_r]);
+        let (u, w) = (v[input::ublend], v[input::vblend]);
         let e = exact_channel(t00, t10, t01, t11, u, w, F) as f64;
-        let i = ideal_channel(t00 as f64, t10 as f64, t01 as f64, t11 as f64, u as f64 / one, w as f64 / one);
-        bi.add((e - i).abs(), || format!("{v:?}"));
-    }
-    vec![crate::unit::Accuracy::new("8-bit LSB", bi)]
+        vec![(e - ideal_channel(t00 as f64, t10 as f64, t01 as f64, t11 as f64, u as f64 / one, w as f64 / one)).abs()]
+    })]
 }
 
 #[cfg(test)]

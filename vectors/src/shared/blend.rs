@@ -58,15 +58,10 @@ pub static MODEL: UnitModel = UnitModel::new("blend", (INPUTS, OUTPUTS), exact_p
 
 /// Random vectors against the reals, the red channel.
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
-    use rand::SeedableRng;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut bl = crate::stats::ErrorStats::default();
-    for _ in 0..samples {
-        let v = random_inputs(&mut rng);
+    vec![crate::unit::Accuracy::over_random("8-bit LSB", samples, seed, random_inputs, |v| {
         let (a, m, s, d) = (v[input::alpha], v[input::mode], v[input::src_r], v[input::dst_r]);
-        bl.add((exact_channel(a, m, s, d) as f64 - ideal_channel(a, m, s, d)).abs(), || format!("{v:?}"));
-    }
-    vec![crate::unit::Accuracy::new("8-bit LSB", bl)]
+        vec![(exact_channel(a, m, s, d) as f64 - ideal_channel(a, m, s, d)).abs()]
+    })]
 }
 
 #[cfg(test)]

@@ -60,13 +60,8 @@ pub static MODEL: UnitModel = UnitModel::new("dot3", (INPUTS, OUTPUTS), exact_po
 
 /// Random vectors against the reals (the ideal clamped to the output's 1023).
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
-    use rand::SeedableRng;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut d = crate::stats::ErrorStats::default();
-    for _ in 0..samples {
-        let v = random(&mut rng);
+    vec![crate::unit::Accuracy::over_random("10-bit LSB", samples, seed, random, |v| {
         let (n, l) = ([v[0], v[1], v[2]], [v[3], v[4], v[5]]);
-        d.add((exact(n, l) as f64 - ideal(n, l).min(1023.0)).abs(), || format!("{v:?}"));
-    }
-    vec![crate::unit::Accuracy::new("10-bit LSB", d)]
+        vec![(exact(n, l) as f64 - ideal(n, l).min(1023.0)).abs()]
+    })]
 }
