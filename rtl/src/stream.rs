@@ -20,21 +20,53 @@ pub trait StreamUnit: Block + Sized {
     fn outputs(&self) -> Vec<u64>;
 }
 
-/// Implements `StreamUnit` from the block's port fields, so that the lists cannot drift from the struct. A block
-/// with const generics names them first: `stream_unit!(impl [const W: usize] Foo<W>, "foo", 2, inputs: [a: W], ...)`.
+/// Declares a unit's block once: its data ports, in the model's order (`in { name: Type, ... }`, then `out { ... }`),
+/// then its inner fields; writes the struct with its clock and valid ports and `#[derive(LogicBlock)]`, and
+/// implements `StreamUnit` from the same list, so the harnesses' port lists and widths cannot drift from the
+/// block. The unit's name is an expression (a const-generic block can name each instance: `if DC { "a_dc" } else { "a" }`).
+/// ```ignore
+/// stream_block! {
+///     #[derive(Default)]
+///     pub struct Gloss: unit("gloss", LATENCY) {
+///         in {
+///             conc: U8,
+///             x: Uq0_10,
+///         }
+///         out {
+///             p: Uq0_10,
+///         }
+///         s1_k: DFF<Uq6_3>, // inner fields as in any block
+///     }
+/// }
+/// ```
 #[macro_export]
-macro_rules! stream_unit {
-    ($t:ty, $name:literal, $latency:expr, inputs: [$($i:ident : $iw:expr),* $(,)?], outputs: [$($o:ident : $ow:expr),* $(,)?]) => {
-        $crate::stream_unit!(impl [] $t, $name, $latency, inputs: [$($i: $iw),*], outputs: [$($o: $ow),*]);
-    };
-    (impl [$($g:tt)*] $t:ty, $name:literal, $latency:expr, inputs: [$($i:ident : $iw:expr),* $(,)?], outputs: [$($o:ident : $ow:expr),* $(,)?]) => {
-        impl<$($g)*> $crate::stream::StreamUnit for $t {
+macro_rules! stream_block {
+    (
+        $(#[$attr:meta])*
+        pub struct $t:ident $(< $(const $g:ident : $gt:ty $(= $gd:literal)?),* >)? : unit($name:expr, $latency:expr) {
+            in { $($i:ident : $it:ty),* $(,)? }
+            out { $($o:ident : $ot:ty),* $(,)? }
+            $($(#[$fa:meta])* $fv:vis $f:ident : $ft:ty),* $(,)?
+        }
+    ) => {
+        #[derive(LogicBlock)]
+        $(#[$attr])*
+        pub struct $t $(< $(const $g: $gt $(= $gd)?),* >)? {
+            pub clock: Signal<In, Clock>,
+            pub valid_in: Signal<In, Bit>,
+            $(pub $i: Signal<In, $it>,)*
+            pub valid_out: Signal<Out, Bit>,
+            $(pub $o: Signal<Out, $ot>,)*
+            $($(#[$fa])* $fv $f: $ft,)*
+        }
+
+        impl $(< $(const $g: $gt),* >)? $crate::stream::StreamUnit for $t $(< $($g),* >)? {
             const NAME: &'static str = $name;
             const LATENCY: usize = $latency;
-            const INPUTS: &'static [(&'static str, usize)] = &[$((stringify!($i), $iw)),*];
-            const OUTPUTS: &'static [(&'static str, usize)] = &[$((stringify!($o), $ow)),*];
+            const INPUTS: &'static [(&'static str, usize)] = &[$((stringify!($i), <$it as Synth>::BITS)),*];
+            const OUTPUTS: &'static [(&'static str, usize)] = &[$((stringify!($o), <$ot as Synth>::BITS)),*];
             fn build() -> Self {
-                <$t>::default()
+                Self::default()
             }
             fn set_clock(&mut self, level: bool) {
                 self.clock.next = Clock { clk: level };
@@ -46,7 +78,7 @@ macro_rules! stream_unit {
             fn set_inputs(&mut self, valid: bool, values: &[u64]) {
                 self.valid_in.next = valid;
                 let mut k = 0;
-                $( self.$i.next = Bits::<{ $iw }>::from(values[k]); k += 1; )*
+                $( self.$i.next = <$it>::from(values[k]); k += 1; )*
                 debug_assert_eq!(k, values.len());
             }
             fn valid_out(&self) -> bool {

@@ -3,7 +3,6 @@
 //! `|BumpZ| = 127 + az − ax`, `BumpY = 1`. Latency 4: |T − 127|; ax + az and ax − az; the guard mux; the signs.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use crate::q::{Sq8_0, U8};
 
@@ -11,50 +10,53 @@ use crate::q::{Sq8_0, U8};
 pub const LATENCY: usize = 4;
 
 
-#[derive(LogicBlock, Default)]
-pub struct CartDecode {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub texel_x: Signal<In, U8>,
-    pub texel_z: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub bump_x: Signal<Out, Sq8_0>,
-    pub bump_y: Signal<Out, U8>,
-    pub bump_z: Signal<Out, Sq8_0>,
-    // stage 1: ax = |sat(T) − 127| (U7 in U8), sx = sat(T) < 127
-    s1_ax: DFF<U8>,
-    s1_az: DFF<U8>,
-    s1_sx: DFF<Bit>,
-    s1_sz: DFF<Bit>,
-    // stage 2: ax + az (U8), ax − az (S9)
-    s2_sum: DFF<U8>,
-    s2_dxz: DFF<Sq8_0>,
-    s2_ax: DFF<U8>,
-    s2_az: DFF<U8>,
-    s2_sx: DFF<Bit>,
-    s2_sz: DFF<Bit>,
-    // stage 3: magnitudes and BumpY, guarded or not
-    s3_mx: DFF<U8>,
-    s3_mz: DFF<U8>,
-    s3_by: DFF<U8>,
-    s3_sx: DFF<Bit>,
-    s3_sz: DFF<Bit>,
-    // stage 4: signs applied
-    s4_bx: DFF<Sq8_0>,
-    s4_by: DFF<U8>,
-    s4_bz: DFF<Sq8_0>,
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    lo_x: Signal<Local, Bits<7>>,
-    lo_z: Signal<Local, Bits<7>>,
-    inv_x: Signal<Local, Bits<7>>,
-    inv_z: Signal<Local, Bits<7>>,
-    w_ax: Signal<Local, Sq8_0>,
-    w_az: Signal<Local, Sq8_0>,
-    twice_sum: Signal<Local, U8>,
-    g_mx: Signal<Local, Sq8_0>,
-    g_mz: Signal<Local, Sq8_0>,
-    w_mx: Signal<Local, Sq8_0>,
-    w_mz: Signal<Local, Sq8_0>,
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct CartDecode: unit("cart_decode", LATENCY) {
+        in {
+            texel_x: U8,
+            texel_z: U8,
+        }
+        out {
+            bump_x: Sq8_0,
+            bump_y: U8,
+            bump_z: Sq8_0,
+        }
+        // stage 1: ax = |sat(T) − 127| (U7 in U8), sx = sat(T) < 127
+        s1_ax: DFF<U8>,
+        s1_az: DFF<U8>,
+        s1_sx: DFF<Bit>,
+        s1_sz: DFF<Bit>,
+        // stage 2: ax + az (U8), ax − az (S9)
+        s2_sum: DFF<U8>,
+        s2_dxz: DFF<Sq8_0>,
+        s2_ax: DFF<U8>,
+        s2_az: DFF<U8>,
+        s2_sx: DFF<Bit>,
+        s2_sz: DFF<Bit>,
+        // stage 3: magnitudes and BumpY, guarded or not
+        s3_mx: DFF<U8>,
+        s3_mz: DFF<U8>,
+        s3_by: DFF<U8>,
+        s3_sx: DFF<Bit>,
+        s3_sz: DFF<Bit>,
+        // stage 4: signs applied
+        s4_bx: DFF<Sq8_0>,
+        s4_by: DFF<U8>,
+        s4_bz: DFF<Sq8_0>,
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        lo_x: Signal<Local, Bits<7>>,
+        lo_z: Signal<Local, Bits<7>>,
+        inv_x: Signal<Local, Bits<7>>,
+        inv_z: Signal<Local, Bits<7>>,
+        w_ax: Signal<Local, Sq8_0>,
+        w_az: Signal<Local, Sq8_0>,
+        twice_sum: Signal<Local, U8>,
+        g_mx: Signal<Local, Sq8_0>,
+        g_mz: Signal<Local, Sq8_0>,
+        w_mx: Signal<Local, Sq8_0>,
+        w_mz: Signal<Local, Sq8_0>,
+    }
 }
 
 impl Logic for CartDecode {
@@ -132,4 +134,3 @@ impl Logic for CartDecode {
     }
 }
 
-stream_unit!(CartDecode, "cart_decode", LATENCY, inputs: [texel_x: 8, texel_z: 8], outputs: [bump_x: 9, bump_y: 8, bump_z: 9]);

@@ -3,7 +3,6 @@
 //! texel is legal. Latency 3: the two sums; their magnitudes; BumpY.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use crate::q::{Sq8_0, U8};
 
@@ -11,33 +10,36 @@ use crate::q::{Sq8_0, U8};
 pub const LATENCY: usize = 3;
 
 
-#[derive(LogicBlock, Default)]
-pub struct CartDecodeHemiOct {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub texel_u: Signal<In, U8>,
-    pub texel_v: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub bump_x: Signal<Out, Sq8_0>,
-    pub bump_y: Signal<Out, U8>,
-    pub bump_z: Signal<Out, Sq8_0>,
-    // stage 1: x = U + V − 255, z = U − V (INT9: both within ±255, so the 9-bit wrap is exact)
-    s1_x: DFF<Sq8_0>,
-    s1_z: DFF<Sq8_0>,
-    // stage 2: |x|, |z| (U8, ≤ 255)
-    s2_ax: DFF<U8>,
-    s2_az: DFF<U8>,
-    s2_x: DFF<Sq8_0>,
-    s2_z: DFF<Sq8_0>,
-    // stage 3: y = 255 − |x| − |z| (U8, 0..255 since |x| + |z| ≤ 255)
-    s3_y: DFF<U8>,
-    s3_x: DFF<Sq8_0>,
-    s3_z: DFF<Sq8_0>,
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    w_u: Signal<Local, Sq8_0>,
-    w_v: Signal<Local, Sq8_0>,
-    w_mx: Signal<Local, Sq8_0>,
-    w_mz: Signal<Local, Sq8_0>,
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct CartDecodeHemiOct: unit("cart_decode_hemi_oct", LATENCY) {
+        in {
+            texel_u: U8,
+            texel_v: U8,
+        }
+        out {
+            bump_x: Sq8_0,
+            bump_y: U8,
+            bump_z: Sq8_0,
+        }
+        // stage 1: x = U + V − 255, z = U − V (INT9: both within ±255, so the 9-bit wrap is exact)
+        s1_x: DFF<Sq8_0>,
+        s1_z: DFF<Sq8_0>,
+        // stage 2: |x|, |z| (U8, ≤ 255)
+        s2_ax: DFF<U8>,
+        s2_az: DFF<U8>,
+        s2_x: DFF<Sq8_0>,
+        s2_z: DFF<Sq8_0>,
+        // stage 3: y = 255 − |x| − |z| (U8, 0..255 since |x| + |z| ≤ 255)
+        s3_y: DFF<U8>,
+        s3_x: DFF<Sq8_0>,
+        s3_z: DFF<Sq8_0>,
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        w_u: Signal<Local, Sq8_0>,
+        w_v: Signal<Local, Sq8_0>,
+        w_mx: Signal<Local, Sq8_0>,
+        w_mz: Signal<Local, Sq8_0>,
+    }
 }
 
 impl Logic for CartDecodeHemiOct {
@@ -75,5 +77,3 @@ impl Logic for CartDecodeHemiOct {
     }
 }
 
-stream_unit!(CartDecodeHemiOct, "cart_decode_hemi_oct", LATENCY,
-    inputs: [texel_u: 8, texel_v: 8], outputs: [bump_x: 9, bump_y: 8, bump_z: 9]);

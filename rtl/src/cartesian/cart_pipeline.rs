@@ -21,7 +21,6 @@ use crate::gloss::Gloss;
 use crate::light_iter::LightIter;
 use crate::normalise::Normalise;
 use crate::ram_delay::{DelayedBlend, RamDelay};
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 
 
@@ -38,58 +37,61 @@ pub const AT_GLOSS: usize = AT_NORMALISE + crate::normalise::LATENCY + crate::do
 pub const AT_BLEND: usize = AT_GLOSS + crate::gloss::LATENCY;
 pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY;
 
-#[derive(LogicBlock, Default)]
-pub struct $t {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub t00_x: Signal<In, U8>,
-    pub t00_z: Signal<In, U8>,
-    pub t10_x: Signal<In, U8>,
-    pub t10_z: Signal<In, U8>,
-    pub t01_x: Signal<In, U8>,
-    pub t01_z: Signal<In, U8>,
-    pub t11_x: Signal<In, U8>,
-    pub t11_z: Signal<In, U8>,
-    pub ublend: Signal<In, U8>,
-    pub vblend: Signal<In, U8>,
-    pub l0_x: Signal<In, S8>,
-    pub l0_y: Signal<In, S8>,
-    pub l0_z: Signal<In, S8>,
-    pub l1_x: Signal<In, S8>,
-    pub l1_y: Signal<In, S8>,
-    pub l1_z: Signal<In, S8>,
-    pub l2_x: Signal<In, S8>,
-    pub l2_y: Signal<In, S8>,
-    pub l2_z: Signal<In, S8>,
-    pub w1: Signal<In, Bits<9>>,
-    pub w2: Signal<In, Bits<9>>,
-    pub conc: Signal<In, U8>,
-    pub mode: Signal<In, Bits<1>>,
-    pub src_r: Signal<In, U8>,
-    pub src_g: Signal<In, U8>,
-    pub src_b: Signal<In, U8>,
-    pub dst_r: Signal<In, U8>,
-    pub dst_g: Signal<In, U8>,
-    pub dst_b: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub p: Signal<Out, Bits<10>>,
-    pub out_r: Signal<Out, U8>,
-    pub out_g: Signal<Out, U8>,
-    pub out_b: Signal<Out, U8>,
-    pub filter: [BilinearUnit<8, 8>; 2], // TexelX (or U), TexelZ (or V)
-    filter_valid: Delay<Bit, { crate::bilinear::LATENCY }>,
-    pub decode: $dec,
-    pub bump_norm: Normalise,
-    pub light: LightIter,
-    pub light_norm: Normalise,
-    pub dot: Dot3,
-    pub gloss: Gloss,
-    light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
-    conc_dly: RamDelay<8, 6, AT_GLOSS>,
-    pub blend: DelayedBlend<6, AT_BLEND>,
-    p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
-    bump_x10: Signal<Local, Bits<10>>,
-    bump_z10: Signal<Local, Bits<10>>,
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct $t: unit($name, LATENCY) {
+        in {
+            t00_x: U8,
+            t00_z: U8,
+            t10_x: U8,
+            t10_z: U8,
+            t01_x: U8,
+            t01_z: U8,
+            t11_x: U8,
+            t11_z: U8,
+            ublend: U8,
+            vblend: U8,
+            l0_x: S8,
+            l0_y: S8,
+            l0_z: S8,
+            l1_x: S8,
+            l1_y: S8,
+            l1_z: S8,
+            l2_x: S8,
+            l2_y: S8,
+            l2_z: S8,
+            w1: Bits<9>,
+            w2: Bits<9>,
+            conc: U8,
+            mode: Bits<1>,
+            src_r: U8,
+            src_g: U8,
+            src_b: U8,
+            dst_r: U8,
+            dst_g: U8,
+            dst_b: U8,
+        }
+        out {
+            p: Bits<10>,
+            out_r: U8,
+            out_g: U8,
+            out_b: U8,
+        }
+        pub filter: [BilinearUnit<8, 8>; 2], // TexelX (or U), TexelZ (or V)
+        filter_valid: Delay<Bit, { crate::bilinear::LATENCY }>,
+        pub decode: $dec,
+        pub bump_norm: Normalise,
+        pub light: LightIter,
+        pub light_norm: Normalise,
+        pub dot: Dot3,
+        pub gloss: Gloss,
+        light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
+        conc_dly: RamDelay<8, 6, AT_GLOSS>,
+        pub blend: DelayedBlend<6, AT_BLEND>,
+        p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
+        bump_x10: Signal<Local, Bits<10>>,
+        bump_z10: Signal<Local, Bits<10>>,
+    }
 }
 
 impl Logic for $t {
@@ -183,11 +185,6 @@ impl Logic for $t {
     }
 }
 
-stream_unit!($t, $name, LATENCY,
-    inputs: [t00_x: 8, t00_z: 8, t10_x: 8, t10_z: 8, t01_x: 8, t01_z: 8, t11_x: 8, t11_z: 8, ublend: 8, vblend: 8,
-             l0_x: 8, l0_y: 8, l0_z: 8, l1_x: 8, l1_y: 8, l1_z: 8, l2_x: 8, l2_y: 8, l2_z: 8, w1: 9, w2: 9,
-             conc: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
-    outputs: [p: 10, out_r: 8, out_g: 8, out_b: 8]);
 }
 pub use $m::$t;
     };

@@ -5,7 +5,6 @@
 //! long route lands on a register-to-register path instead of in front of the multiplier's 3.9 ns.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use crate::q::{S8, Sq11_8, Sq7_2};
 
@@ -13,75 +12,78 @@ use crate::q::{S8, Sq11_8, Sq7_2};
 pub const LATENCY: usize = 7;
 
 
-#[derive(LogicBlock, Default)]
-pub struct LightIter {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub l0_x: Signal<In, S8>,
-    pub l0_y: Signal<In, S8>,
-    pub l0_z: Signal<In, S8>,
-    pub l1_x: Signal<In, S8>,
-    pub l1_y: Signal<In, S8>,
-    pub l1_z: Signal<In, S8>,
-    pub l2_x: Signal<In, S8>,
-    pub l2_y: Signal<In, S8>,
-    pub l2_z: Signal<In, S8>,
-    pub w1: Signal<In, Bits<9>>,
-    pub w2: Signal<In, Bits<9>>,
-    pub valid_out: Signal<Out, Bit>,
-    pub light_x: Signal<Out, Sq7_2>,
-    pub light_y: Signal<Out, Sq7_2>,
-    pub light_z: Signal<Out, Sq7_2>,
-    // stage 1: differences (S9), l0·256 (S20), weights widened
-    s1_d1: [DFF<Bits<9>>; 3],
-    s1_d2: [DFF<Bits<9>>; 3],
-    s1_base: [DFF<Sq11_8>; 3],
-    s1_w1: DFF<Bits<16>>,
-    s1_w2: DFF<Bits<16>>,
-    // stage 2: magnitudes ≤ 255 (in the multiplier's 16 bits), signs
-    s2_m1: [DFF<Bits<16>>; 3],
-    s2_m2: [DFF<Bits<16>>; 3],
-    s2_n1: [DFF<Bit>; 3],
-    s2_n2: [DFF<Bit>; 3],
-    s2_base: [DFF<Sq11_8>; 3],
-    s2_w1: DFF<Bits<16>>,
-    s2_w2: DFF<Bits<16>>,
-    // stage 2b: the multiplier's operands again, and what travels beside them
-    s2b_m1: [DFF<Bits<16>>; 3],
-    s2b_m2: [DFF<Bits<16>>; 3],
-    s2b_n1: [DFF<Bit>; 3],
-    s2b_n2: [DFF<Bit>; 3],
-    s2b_base: [DFF<Sq11_8>; 3],
-    mop_w1: [DFF<Bits<16>>; 3],
-    mop_w2: [DFF<Bits<16>>; 3],
-    // stage 3: |d|·w ≤ 255·511 (U17)
-    s3_p1: [DFF<Bits<17>>; 3],
-    s3_p2: [DFF<Bits<17>>; 3],
-    s3_n1: [DFF<Bit>; 3],
-    s3_n2: [DFF<Bit>; 3],
-    s3_base: [DFF<Sq11_8>; 3],
-    // stage 4: signed terms (S20)
-    s4_t1: [DFF<Sq11_8>; 3],
-    s4_t2: [DFF<Sq11_8>; 3],
-    s4_base: [DFF<Sq11_8>; 3],
-    // stage 5: the sum (S20; |L| ≤ 293,378 < 2^19)
-    s5_acc: [DFF<Sq11_8>; 3],
-    // stage 6: floor to Sq7.2 and saturate to S10
-    s6_out: [DFF<Sq7_2>; 3],
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    e9_0: [Signal<Local, Bits<9>>; 3],
-    e9_1: [Signal<Local, Bits<9>>; 3],
-    e9_2: [Signal<Local, Bits<9>>; 3],
-    e20: [Signal<Local, Sq11_8>; 3],
-    m9_1: [Signal<Local, Bits<9>>; 3],
-    m9_2: [Signal<Local, Bits<9>>; 3],
-    w_p1: [Signal<Local, Bits<32>>; 3],
-    w_p2: [Signal<Local, Bits<32>>; 3],
-    p20_1: [Signal<Local, Sq11_8>; 3],
-    p20_2: [Signal<Local, Sq11_8>; 3],
-    w_part: [Signal<Local, Sq11_8>; 3],
-    w_q: [Signal<Local, Bits<14>>; 3],
-    w_hi: [Signal<Local, Bits<5>>; 3],
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct LightIter: unit("light_iter", LATENCY) {
+        in {
+            l0_x: S8,
+            l0_y: S8,
+            l0_z: S8,
+            l1_x: S8,
+            l1_y: S8,
+            l1_z: S8,
+            l2_x: S8,
+            l2_y: S8,
+            l2_z: S8,
+            w1: Bits<9>,
+            w2: Bits<9>,
+        }
+        out {
+            light_x: Sq7_2,
+            light_y: Sq7_2,
+            light_z: Sq7_2,
+        }
+        // stage 1: differences (S9), l0·256 (S20), weights widened
+        s1_d1: [DFF<Bits<9>>; 3],
+        s1_d2: [DFF<Bits<9>>; 3],
+        s1_base: [DFF<Sq11_8>; 3],
+        s1_w1: DFF<Bits<16>>,
+        s1_w2: DFF<Bits<16>>,
+        // stage 2: magnitudes ≤ 255 (in the multiplier's 16 bits), signs
+        s2_m1: [DFF<Bits<16>>; 3],
+        s2_m2: [DFF<Bits<16>>; 3],
+        s2_n1: [DFF<Bit>; 3],
+        s2_n2: [DFF<Bit>; 3],
+        s2_base: [DFF<Sq11_8>; 3],
+        s2_w1: DFF<Bits<16>>,
+        s2_w2: DFF<Bits<16>>,
+        // stage 2b: the multiplier's operands again, and what travels beside them
+        s2b_m1: [DFF<Bits<16>>; 3],
+        s2b_m2: [DFF<Bits<16>>; 3],
+        s2b_n1: [DFF<Bit>; 3],
+        s2b_n2: [DFF<Bit>; 3],
+        s2b_base: [DFF<Sq11_8>; 3],
+        mop_w1: [DFF<Bits<16>>; 3],
+        mop_w2: [DFF<Bits<16>>; 3],
+        // stage 3: |d|·w ≤ 255·511 (U17)
+        s3_p1: [DFF<Bits<17>>; 3],
+        s3_p2: [DFF<Bits<17>>; 3],
+        s3_n1: [DFF<Bit>; 3],
+        s3_n2: [DFF<Bit>; 3],
+        s3_base: [DFF<Sq11_8>; 3],
+        // stage 4: signed terms (S20)
+        s4_t1: [DFF<Sq11_8>; 3],
+        s4_t2: [DFF<Sq11_8>; 3],
+        s4_base: [DFF<Sq11_8>; 3],
+        // stage 5: the sum (S20; |L| ≤ 293,378 < 2^19)
+        s5_acc: [DFF<Sq11_8>; 3],
+        // stage 6: floor to Sq7.2 and saturate to S10
+        s6_out: [DFF<Sq7_2>; 3],
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        e9_0: [Signal<Local, Bits<9>>; 3],
+        e9_1: [Signal<Local, Bits<9>>; 3],
+        e9_2: [Signal<Local, Bits<9>>; 3],
+        e20: [Signal<Local, Sq11_8>; 3],
+        m9_1: [Signal<Local, Bits<9>>; 3],
+        m9_2: [Signal<Local, Bits<9>>; 3],
+        w_p1: [Signal<Local, Bits<32>>; 3],
+        w_p2: [Signal<Local, Bits<32>>; 3],
+        p20_1: [Signal<Local, Sq11_8>; 3],
+        p20_2: [Signal<Local, Sq11_8>; 3],
+        w_part: [Signal<Local, Sq11_8>; 3],
+        w_q: [Signal<Local, Bits<14>>; 3],
+        w_hi: [Signal<Local, Bits<5>>; 3],
+    }
 }
 
 impl Logic for LightIter {
@@ -284,6 +286,3 @@ impl Logic for LightIter {
     }
 }
 
-stream_unit!(LightIter, "light_iter", LATENCY,
-    inputs: [l0_x: 8, l0_y: 8, l0_z: 8, l1_x: 8, l1_y: 8, l1_z: 8, l2_x: 8, l2_y: 8, l2_z: 8, w1: 9, w2: 9],
-    outputs: [light_x: 10, light_y: 10, light_z: 10]);

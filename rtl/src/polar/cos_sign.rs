@@ -5,29 +5,30 @@
 //! contents when `DC`). Contents: `crate::tables::cos_sign`.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 pub const LATENCY: usize = 2;
 
-#[derive(LogicBlock)]
-pub struct CosSign<const TB: usize, const W: usize, const DC: bool = false> {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub d: Signal<In, Bits<8>>,
-    pub valid_out: Signal<Out, Bit>,
-    pub mag: Signal<Out, Bits<W>>,
-    pub neg: Signal<Out, Bits<1>>,
-    mag_rom: ROM<Bits<W>, TB>,
-    neg_rom: ROM<Bits<1>, TB>,
-    /// 8 − TB: the bits of d below the table's resolution
-    low_bits: Constant<Bits<4>>,
-    s1_addr: DFF<Bits<TB>>,
-    s2_mag: DFF<Bits<W>>,
-    s2_neg: DFF<Bits<1>>,
-    valid: Delay<Bit, LATENCY>,
-    w_top: Signal<Local, Bits<8>>,
+crate::stream_block! {
+    pub struct CosSign<const TB: usize, const W: usize, const DC: bool = false>: unit("cos_sign", LATENCY) {
+        in {
+            d: Bits<8>,
+        }
+        out {
+            mag: Bits<W>,
+            neg: Bits<1>,
+        }
+        mag_rom: ROM<Bits<W>, TB>,
+        neg_rom: ROM<Bits<1>, TB>,
+        /// 8 − TB: the bits of d below the table's resolution
+        low_bits: Constant<Bits<4>>,
+        s1_addr: DFF<Bits<TB>>,
+        s2_mag: DFF<Bits<W>>,
+        s2_neg: DFF<Bits<1>>,
+        valid: Delay<Bit, LATENCY>,
+        w_top: Signal<Local, Bits<8>>,
+    }
 }
 
 impl<const TB: usize, const W: usize, const DC: bool> Default for CosSign<TB, W, DC> {
@@ -73,8 +74,6 @@ impl<const TB: usize, const W: usize, const DC: bool> Logic for CosSign<TB, W, D
     }
 }
 
-stream_unit!(impl [const TB: usize, const W: usize] CosSign<TB, W>, "cos_sign", LATENCY,
-    inputs: [d: 8], outputs: [mag: W, neg: 1]);
 
 /// The unit `cos_sign`: the size the polar shade unit uses.
 pub type CosSignUnit = CosSign<8, 8>;

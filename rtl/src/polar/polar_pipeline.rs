@@ -7,7 +7,6 @@ use crate::delay::Delay;
 use crate::polar_shade::PolarShade;
 use crate::power::Power;
 use crate::ram_delay::DelayedBlend;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use crate::q::U8;
 
@@ -16,35 +15,38 @@ pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
 pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 17
 pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 22
 
-/// `DC`: the Dreamcast toolchains' angle scale in the shade unit's tables (unit `polar_pipeline_dc`).
-#[derive(LogicBlock, Default)]
-pub struct PolarPipeline<const DC: bool> {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub s: Signal<In, U8>,
-    pub r: Signal<In, U8>,
-    pub q: Signal<In, U8>,
-    pub k1: Signal<In, U8>,
-    pub k2: Signal<In, U8>,
-    pub k3: Signal<In, U8>,
-    pub pw: Signal<In, U8>,
-    pub mode: Signal<In, Bits<1>>,
-    pub src_r: Signal<In, U8>,
-    pub src_g: Signal<In, U8>,
-    pub src_b: Signal<In, U8>,
-    pub dst_r: Signal<In, U8>,
-    pub dst_g: Signal<In, U8>,
-    pub dst_b: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub alpha: Signal<Out, U8>,
-    pub out_r: Signal<Out, U8>,
-    pub out_g: Signal<Out, U8>,
-    pub out_b: Signal<Out, U8>,
-    pub shader: PolarShade<DC>,
-    pub power: Power,
-    pw_dly: Delay<U8, AT_POWER>,
-    pub blend: DelayedBlend<5, AT_BLEND>,
-    alpha_dly: Delay<U8, { crate::blend::LATENCY }>,
+crate::stream_block! {
+    /// `DC`: the Dreamcast toolchains' angle scale in the shade unit's tables (unit `polar_pipeline_dc`).
+    #[derive(Default)]
+    pub struct PolarPipeline<const DC: bool>: unit(if DC { "polar_pipeline_dc" } else { "polar_pipeline" }, LATENCY) {
+        in {
+            s: U8,
+            r: U8,
+            q: U8,
+            k1: U8,
+            k2: U8,
+            k3: U8,
+            pw: U8,
+            mode: Bits<1>,
+            src_r: U8,
+            src_g: U8,
+            src_b: U8,
+            dst_r: U8,
+            dst_g: U8,
+            dst_b: U8,
+        }
+        out {
+            alpha: U8,
+            out_r: U8,
+            out_g: U8,
+            out_b: U8,
+        }
+        pub shader: PolarShade<DC>,
+        pub power: Power,
+        pw_dly: Delay<U8, AT_POWER>,
+        pub blend: DelayedBlend<5, AT_BLEND>,
+        alpha_dly: Delay<U8, { crate::blend::LATENCY }>,
+    }
 }
 
 impl<const DC: bool> Logic for PolarPipeline<DC> {
@@ -83,12 +85,6 @@ impl<const DC: bool> Logic for PolarPipeline<DC> {
     }
 }
 
-stream_unit!(PolarPipeline<false>, "polar_pipeline", LATENCY,
-    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8, pw: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
-    outputs: [alpha: 8, out_r: 8, out_g: 8, out_b: 8]);
-stream_unit!(PolarPipeline<true>, "polar_pipeline_dc", LATENCY,
-    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8, pw: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
-    outputs: [alpha: 8, out_r: 8, out_g: 8, out_b: 8]);
 
 /// The polar pipeline in the seed's angle scale (the default) and in the Dreamcast toolchains'.
 pub type PolarPipelineSeed = PolarPipeline<false>;

@@ -11,7 +11,6 @@
 
 use crate::delay::Delay;
 use crate::div255::Div255;
-use crate::stream_unit;
 use crate::cos_sign::CosSign;
 use crate::sincos::SinCos;
 use rust_hdl::prelude::*;
@@ -22,67 +21,70 @@ pub const LATENCY: usize = 10;
 const _: () = assert!(crate::sincos::LATENCY == crate::cos_sign::LATENCY);
 
 
-/// `DC`: the Dreamcast toolchains' angle scale (255 steps) in both tables; the seed's (256) when false.
-#[derive(LogicBlock, Default)]
-pub struct PolarShade<const DC: bool> {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub s: Signal<In, U8>,
-    pub r: Signal<In, U8>,
-    pub q: Signal<In, U8>,
-    pub k1: Signal<In, U8>,
-    pub k2: Signal<In, U8>,
-    pub k3: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub sum: Signal<Out, S11>,
-    pub shade: Signal<Out, U8>,
-    // stages 1–2: the table blocks register their address, then their data
-    pub sin_cos: SinCos<8, 8, DC>,
-    pub cos_sign: CosSign<8, 8, DC>,
-    // stage 1
-    s1_k1: DFF<U8>,
-    s1_k2: DFF<U8>,
-    s1_k3: DFF<U8>,
-    // stage 2
-    s2_k1: DFF<U8>,
-    s2_k2: DFF<U8>,
-    s2_k3: DFF<U8>,
-    // stage 3: k2·sin S, k3·cos S (U16)
-    s3_p12: DFF<Bits<16>>,
-    s3_p14: DFF<Bits<16>>,
-    s3_k1: DFF<U8>,
-    s3_cd: DFF<U8>,
-    s3_neg: DFF<Bit>,
-    // stages 4–5
-    div12: Div255,
-    div14: Div255,
-    k1_dly: Delay<U8, 2>,
-    cd_dly: Delay<U8, 2>,
-    neg_dly: Delay<Bit, 2>,
-    // stage 6: t14·|cos| (U16), a22 = k1 + t12 (U9)
-    s6_p20: DFF<Bits<16>>,
-    s6_a22: DFF<Bits<9>>,
-    s6_neg: DFF<Bit>,
-    // stages 7–8
-    div20: Div255,
-    a22_dly: Delay<Bits<9>, 2>,
-    neg2_dly: Delay<Bit, 2>,
-    // stage 9: S11
-    s9_sum: DFF<S11>,
-    // stage 10: the clamp
-    s10_shade: DFF<U8>,
-    s10_sum: DFF<S11>,
-    valid: Delay<Bit, { LATENCY - crate::sincos::LATENCY }>, // the valid flag after the table blocks'
-    w_d: Signal<Local, U8>,
-    w_s10: Signal<Local, Bits<10>>,
-    w_a: [Signal<Local, Bits<16>>; 2],
-    w_b: [Signal<Local, Bits<16>>; 2],
-    w_p: [Signal<Local, Bits<32>>; 2],
-    w_c: Signal<Local, Bits<16>>,
-    w_cd: Signal<Local, Bits<16>>,
-    w_p20: Signal<Local, Bits<32>>,
-    w_a22: Signal<Local, S11>,
-    w_t20: Signal<Local, S11>,
+crate::stream_block! {
+    /// `DC`: the Dreamcast toolchains' angle scale (255 steps) in both tables; the seed's (256) when false.
+    #[derive(Default)]
+    pub struct PolarShade<const DC: bool>: unit(if DC { "polar_shade_dc" } else { "polar_shade" }, LATENCY) {
+        in {
+            s: U8,
+            r: U8,
+            q: U8,
+            k1: U8,
+            k2: U8,
+            k3: U8,
+        }
+        out {
+            sum: S11,
+            shade: U8,
+        }
+        // stages 1–2: the table blocks register their address, then their data
+        pub sin_cos: SinCos<8, 8, DC>,
+        pub cos_sign: CosSign<8, 8, DC>,
+        // stage 1
+        s1_k1: DFF<U8>,
+        s1_k2: DFF<U8>,
+        s1_k3: DFF<U8>,
+        // stage 2
+        s2_k1: DFF<U8>,
+        s2_k2: DFF<U8>,
+        s2_k3: DFF<U8>,
+        // stage 3: k2·sin S, k3·cos S (U16)
+        s3_p12: DFF<Bits<16>>,
+        s3_p14: DFF<Bits<16>>,
+        s3_k1: DFF<U8>,
+        s3_cd: DFF<U8>,
+        s3_neg: DFF<Bit>,
+        // stages 4–5
+        div12: Div255,
+        div14: Div255,
+        k1_dly: Delay<U8, 2>,
+        cd_dly: Delay<U8, 2>,
+        neg_dly: Delay<Bit, 2>,
+        // stage 6: t14·|cos| (U16), a22 = k1 + t12 (U9)
+        s6_p20: DFF<Bits<16>>,
+        s6_a22: DFF<Bits<9>>,
+        s6_neg: DFF<Bit>,
+        // stages 7–8
+        div20: Div255,
+        a22_dly: Delay<Bits<9>, 2>,
+        neg2_dly: Delay<Bit, 2>,
+        // stage 9: S11
+        s9_sum: DFF<S11>,
+        // stage 10: the clamp
+        s10_shade: DFF<U8>,
+        s10_sum: DFF<S11>,
+        valid: Delay<Bit, { LATENCY - crate::sincos::LATENCY }>, // the valid flag after the table blocks'
+        w_d: Signal<Local, U8>,
+        w_s10: Signal<Local, Bits<10>>,
+        w_a: [Signal<Local, Bits<16>>; 2],
+        w_b: [Signal<Local, Bits<16>>; 2],
+        w_p: [Signal<Local, Bits<32>>; 2],
+        w_c: Signal<Local, Bits<16>>,
+        w_cd: Signal<Local, Bits<16>>,
+        w_p20: Signal<Local, Bits<32>>,
+        w_a22: Signal<Local, S11>,
+        w_t20: Signal<Local, S11>,
+    }
 }
 
 impl<const DC: bool> Logic for PolarShade<DC> {
@@ -161,9 +163,3 @@ impl<const DC: bool> Logic for PolarShade<DC> {
     }
 }
 
-stream_unit!(PolarShade<false>, "polar_shade", LATENCY,
-    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8],
-    outputs: [sum: 11, shade: 8]);
-stream_unit!(PolarShade<true>, "polar_shade_dc", LATENCY,
-    inputs: [s: 8, r: 8, q: 8, k1: 8, k2: 8, k3: 8],
-    outputs: [sum: 11, shade: 8]);

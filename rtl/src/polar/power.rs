@@ -5,7 +5,6 @@
 //! and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K placed the unit at 43.7 MHz.)
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use crate::tables::{ExpTable, LogTable};
 use rust_hdl::prelude::*;
 use crate::q::U8;
@@ -13,45 +12,48 @@ use crate::q::U8;
 pub const LATENCY: usize = 7;
 
 
-#[derive(LogicBlock, Default)]
-pub struct Power {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub x: Signal<In, U8>,
-    pub pw: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub y: Signal<Out, U8>,
-    log: LogTable,
-    exp: ExpTable,
-    s1_x: DFF<U8>,
-    s1_pw: DFF<U8>,
-    // stage 2: L(x), Uq3.12
-    s2_l: DFF<Bits<15>>,
-    s2_pw: DFF<U8>,
-    // stage 3: e = pw·L, Uq9.14 (U23)
-    s3_e: DFF<Bits<23>>,
-    // stage 4: n (0..9) and f
-    s4_n: DFF<Bits<4>>,
-    s4_f: DFF<U8>,
-    // stage 5: E(f) (U15) and the shift n + 6
-    s5_e: DFF<Bits<15>>,
-    s5_sh: DFF<Bits<4>>,
-    // stage 6: E >> (n + 6) ≤ 510 (U9)
-    s6_w: DFF<Bits<9>>,
-    // stage 7
-    s7_y: DFF<U8>,
-    // x = 0 and pw = 0, beside the stages
-    zero_dly: Delay<Bit, 5>,
-    pw0_dly: Delay<Bit, 5>,
-    valid: Delay<Bit, LATENCY>,
-    w_l: Signal<Local, Bits<16>>,
-    w_p: Signal<Local, Bits<16>>,
-    w_e: Signal<Local, Bits<32>>,
-    w_g: Signal<Local, Bits<23>>,
-    w_n: Signal<Local, Bits<9>>,
-    w_w: Signal<Local, Bits<15>>,
-    w_w1: Signal<Local, Bits<9>>,
-    w_y: Signal<Local, Bits<9>>,
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct Power: unit("power", LATENCY) {
+        in {
+            x: U8,
+            pw: U8,
+        }
+        out {
+            y: U8,
+        }
+        log: LogTable,
+        exp: ExpTable,
+        s1_x: DFF<U8>,
+        s1_pw: DFF<U8>,
+        // stage 2: L(x), Uq3.12
+        s2_l: DFF<Bits<15>>,
+        s2_pw: DFF<U8>,
+        // stage 3: e = pw·L, Uq9.14 (U23)
+        s3_e: DFF<Bits<23>>,
+        // stage 4: n (0..9) and f
+        s4_n: DFF<Bits<4>>,
+        s4_f: DFF<U8>,
+        // stage 5: E(f) (U15) and the shift n + 6
+        s5_e: DFF<Bits<15>>,
+        s5_sh: DFF<Bits<4>>,
+        // stage 6: E >> (n + 6) ≤ 510 (U9)
+        s6_w: DFF<Bits<9>>,
+        // stage 7
+        s7_y: DFF<U8>,
+        // x = 0 and pw = 0, beside the stages
+        zero_dly: Delay<Bit, 5>,
+        pw0_dly: Delay<Bit, 5>,
+        valid: Delay<Bit, LATENCY>,
+        w_l: Signal<Local, Bits<16>>,
+        w_p: Signal<Local, Bits<16>>,
+        w_e: Signal<Local, Bits<32>>,
+        w_g: Signal<Local, Bits<23>>,
+        w_n: Signal<Local, Bits<9>>,
+        w_w: Signal<Local, Bits<15>>,
+        w_w1: Signal<Local, Bits<9>>,
+        w_y: Signal<Local, Bits<9>>,
+    }
 }
 
 impl Logic for Power {
@@ -107,4 +109,3 @@ impl Logic for Power {
     }
 }
 
-stream_unit!(Power, "power", LATENCY, inputs: [x: 8, pw: 8], outputs: [y: 8]);

@@ -6,30 +6,31 @@
 //! LUT-size table from this same block. Contents: `crate::tables::elevation`.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 pub const LATENCY: usize = 2;
 pub const ANGLE_BITS: usize = 10;
 
-#[derive(LogicBlock)]
-pub struct SinCos<const TB: usize, const W: usize, const DC: bool = false> {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub angle: Signal<In, Bits<ANGLE_BITS>>,
-    pub valid_out: Signal<Out, Bit>,
-    pub sin: Signal<Out, Bits<W>>,
-    pub cos: Signal<Out, Bits<W>>,
-    sin_rom: ROM<Bits<W>, TB>,
-    cos_rom: ROM<Bits<W>, TB>,
-    /// 10 − TB: the angle bits below the table's resolution
-    low_bits: Constant<Bits<4>>,
-    s1_addr: DFF<Bits<TB>>,
-    s2_sin: DFF<Bits<W>>,
-    s2_cos: DFF<Bits<W>>,
-    valid: Delay<Bit, LATENCY>,
-    w_top: Signal<Local, Bits<ANGLE_BITS>>,
+crate::stream_block! {
+    pub struct SinCos<const TB: usize, const W: usize, const DC: bool = false>: unit("sincos", LATENCY) {
+        in {
+            angle: Bits<ANGLE_BITS>,
+        }
+        out {
+            sin: Bits<W>,
+            cos: Bits<W>,
+        }
+        sin_rom: ROM<Bits<W>, TB>,
+        cos_rom: ROM<Bits<W>, TB>,
+        /// 10 − TB: the angle bits below the table's resolution
+        low_bits: Constant<Bits<4>>,
+        s1_addr: DFF<Bits<TB>>,
+        s2_sin: DFF<Bits<W>>,
+        s2_cos: DFF<Bits<W>>,
+        valid: Delay<Bit, LATENCY>,
+        w_top: Signal<Local, Bits<ANGLE_BITS>>,
+    }
 }
 
 impl<const TB: usize, const W: usize, const DC: bool> Default for SinCos<TB, W, DC> {
@@ -75,8 +76,6 @@ impl<const TB: usize, const W: usize, const DC: bool> Logic for SinCos<TB, W, DC
     }
 }
 
-stream_unit!(impl [const TB: usize, const W: usize] SinCos<TB, W>, "sincos", LATENCY,
-    inputs: [angle: ANGLE_BITS], outputs: [sin: W, cos: W]);
 
 /// The unit `sincos`: the size the polar shade unit uses.
 pub type SinCosUnit = SinCos<8, 8>;

@@ -16,7 +16,6 @@
 use crate::delay::Delay;
 use crate::q::U8;
 use crate::sm_mul::{self, SmMul};
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
@@ -177,36 +176,39 @@ impl<const W: usize, const F: usize> Logic for BilinearUnit<W, F> {
     }
 }
 
-/// The unit `bilinear`: the colour filter's four bilinear units on R, G, B and A, 8-bit texels, 8 blend bits.
-#[derive(LogicBlock, Default)]
-pub struct Bilinear {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub t00_r: Signal<In, U8>,
-    pub t00_g: Signal<In, U8>,
-    pub t00_b: Signal<In, U8>,
-    pub t00_a: Signal<In, U8>,
-    pub t10_r: Signal<In, U8>,
-    pub t10_g: Signal<In, U8>,
-    pub t10_b: Signal<In, U8>,
-    pub t10_a: Signal<In, U8>,
-    pub t01_r: Signal<In, U8>,
-    pub t01_g: Signal<In, U8>,
-    pub t01_b: Signal<In, U8>,
-    pub t01_a: Signal<In, U8>,
-    pub t11_r: Signal<In, U8>,
-    pub t11_g: Signal<In, U8>,
-    pub t11_b: Signal<In, U8>,
-    pub t11_a: Signal<In, U8>,
-    pub ublend: Signal<In, U8>,
-    pub vblend: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub out_r: Signal<Out, U8>,
-    pub out_g: Signal<Out, U8>,
-    pub out_b: Signal<Out, U8>,
-    pub out_a: Signal<Out, U8>,
-    pub unit: [BilinearUnit<8, 8>; 4], // R, G, B, A
-    valid: Delay<Bit, LATENCY>,        // the valid flag, beside the units
+crate::stream_block! {
+    /// The unit `bilinear`: the colour filter's four bilinear units on R, G, B and A, 8-bit texels, 8 blend bits.
+    #[derive(Default)]
+    pub struct Bilinear: unit("bilinear", LATENCY) {
+        in {
+            t00_r: U8,
+            t00_g: U8,
+            t00_b: U8,
+            t00_a: U8,
+            t10_r: U8,
+            t10_g: U8,
+            t10_b: U8,
+            t10_a: U8,
+            t01_r: U8,
+            t01_g: U8,
+            t01_b: U8,
+            t01_a: U8,
+            t11_r: U8,
+            t11_g: U8,
+            t11_b: U8,
+            t11_a: U8,
+            ublend: U8,
+            vblend: U8,
+        }
+        out {
+            out_r: U8,
+            out_g: U8,
+            out_b: U8,
+            out_a: U8,
+        }
+        pub unit: [BilinearUnit<8, 8>; 4], // R, G, B, A
+        valid: Delay<Bit, LATENCY>,        // the valid flag, beside the units
+    }
 }
 
 impl Logic for Bilinear {
@@ -243,7 +245,3 @@ impl Logic for Bilinear {
     }
 }
 
-stream_unit!(Bilinear, "bilinear", LATENCY,
-    inputs: [t00_r: 8, t00_g: 8, t00_b: 8, t00_a: 8, t10_r: 8, t10_g: 8, t10_b: 8, t10_a: 8,
-             t01_r: 8, t01_g: 8, t01_b: 8, t01_a: 8, t11_r: 8, t11_g: 8, t11_b: 8, t11_a: 8, ublend: 8, vblend: 8],
-    outputs: [out_r: 8, out_g: 8, out_b: 8, out_a: 8]);

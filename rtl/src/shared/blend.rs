@@ -4,7 +4,6 @@
 //! products; the sum + 128; the /255.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use crate::q::{U16, U8};
 
@@ -12,46 +11,49 @@ use crate::q::{U16, U8};
 pub const LATENCY: usize = 5;
 
 
-#[derive(LogicBlock, Default)]
-pub struct Blend {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub alpha: Signal<In, U8>,
-    pub mode: Signal<In, Bits<1>>,
-    pub src_r: Signal<In, U8>,
-    pub src_g: Signal<In, U8>,
-    pub src_b: Signal<In, U8>,
-    pub dst_r: Signal<In, U8>,
-    pub dst_g: Signal<In, U8>,
-    pub dst_b: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub out_r: Signal<Out, U8>,
-    pub out_g: Signal<Out, U8>,
-    pub out_b: Signal<Out, U8>,
-    // stage 1: the two weights, α and (mode ? 255 − α : 0), and the colours, widened to the multiplier's 16 bits
-    s1_wa: DFF<U16>,
-    s1_wd: DFF<U16>,
-    s1_src: [DFF<U16>; 3],
-    s1_dst: [DFF<U16>; 3],
-    // stage 1b: the operands again, the weights once per multiplier (`mop_`: see `rtl/README.md`)
-    mop_wa: [DFF<U16>; 3],
-    mop_wd: [DFF<U16>; 3],
-    s1b_src: [DFF<U16>; 3],
-    s1b_dst: [DFF<U16>; 3],
-    // stage 2: src·α, dst·(255 − α), each ≤ 255·255 (U16)
-    s2_ps: [DFF<U16>; 3],
-    s2_pd: [DFF<U16>; 3],
-    // stage 3: t = src·α + dst·(255 − α) + 128 ≤ 65,153 (U16)
-    s3_t: [DFF<U16>; 3],
-    // stage 4: (t + (t >> 8)) >> 8, truncating: U8
-    s4_out: [DFF<U8>; 3],
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    inv_alpha: Signal<Local, U8>,
-    w_ps: [Signal<Local, Bits<32>>; 3],
-    w_pd: [Signal<Local, Bits<32>>; 3],
-    w_sum: [Signal<Local, U16>; 3],
-    w_th: [Signal<Local, U16>; 3],
-    w_u: [Signal<Local, U16>; 3],
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct Blend: unit("blend", LATENCY) {
+        in {
+            alpha: U8,
+            mode: Bits<1>,
+            src_r: U8,
+            src_g: U8,
+            src_b: U8,
+            dst_r: U8,
+            dst_g: U8,
+            dst_b: U8,
+        }
+        out {
+            out_r: U8,
+            out_g: U8,
+            out_b: U8,
+        }
+        // stage 1: the two weights, α and (mode ? 255 − α : 0), and the colours, widened to the multiplier's 16 bits
+        s1_wa: DFF<U16>,
+        s1_wd: DFF<U16>,
+        s1_src: [DFF<U16>; 3],
+        s1_dst: [DFF<U16>; 3],
+        // stage 1b: the operands again, the weights once per multiplier (`mop_`: see `rtl/README.md`)
+        mop_wa: [DFF<U16>; 3],
+        mop_wd: [DFF<U16>; 3],
+        s1b_src: [DFF<U16>; 3],
+        s1b_dst: [DFF<U16>; 3],
+        // stage 2: src·α, dst·(255 − α), each ≤ 255·255 (U16)
+        s2_ps: [DFF<U16>; 3],
+        s2_pd: [DFF<U16>; 3],
+        // stage 3: t = src·α + dst·(255 − α) + 128 ≤ 65,153 (U16)
+        s3_t: [DFF<U16>; 3],
+        // stage 4: (t + (t >> 8)) >> 8, truncating: U8
+        s4_out: [DFF<U8>; 3],
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        inv_alpha: Signal<Local, U8>,
+        w_ps: [Signal<Local, Bits<32>>; 3],
+        w_pd: [Signal<Local, Bits<32>>; 3],
+        w_sum: [Signal<Local, U16>; 3],
+        w_th: [Signal<Local, U16>; 3],
+        w_u: [Signal<Local, U16>; 3],
+    }
 }
 
 impl Logic for Blend {
@@ -110,6 +112,3 @@ impl Logic for Blend {
     }
 }
 
-stream_unit!(Blend, "blend", LATENCY,
-    inputs: [alpha: 8, mode: 1, src_r: 8, src_g: 8, src_b: 8, dst_r: 8, dst_g: 8, dst_b: 8],
-    outputs: [out_r: 8, out_g: 8, out_b: 8]);

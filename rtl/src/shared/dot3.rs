@@ -3,7 +3,6 @@
 //! products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use crate::q::{Sq1_10, Sq4_20};
 
@@ -11,38 +10,41 @@ use crate::q::{Sq1_10, Sq4_20};
 pub const LATENCY: usize = 6;
 
 
-#[derive(LogicBlock, Default)]
-pub struct Dot3 {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub n_x: Signal<In, Sq1_10>,
-    pub n_y: Signal<In, Sq1_10>,
-    pub n_z: Signal<In, Sq1_10>,
-    pub l_x: Signal<In, Sq1_10>,
-    pub l_y: Signal<In, Sq1_10>,
-    pub l_z: Signal<In, Sq1_10>,
-    pub valid_out: Signal<Out, Bit>,
-    pub x: Signal<Out, Bits<10>>,
-    s1_nm: [DFF<Bits<12>>; 3], // |n| ≤ 2048 (U12)
-    s1_lm: [DFF<Bits<12>>; 3],
-    s1_neg: [DFF<Bit>; 3],
-    s1b_nm: [DFF<Bits<12>>; 3], // the operands again
-    s1b_lm: [DFF<Bits<12>>; 3],
-    s1b_neg: [DFF<Bit>; 3],
-    s2_p: [DFF<Bits<23>>; 3], // |n|·|l| ≤ 2^22 (U23)
-    s2_neg: [DFF<Bit>; 3],
-    s3_t: [DFF<Sq4_20>; 3],
-    s4_sum: DFF<Sq4_20>,
-    s5_x: DFF<Bits<10>>,
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    n_in: [Signal<Local, Sq1_10>; 3],
-    l_in: [Signal<Local, Sq1_10>; 3],
-    w_n: [Signal<Local, Bits<16>>; 3],
-    w_l: [Signal<Local, Bits<16>>; 3],
-    w_p: [Signal<Local, Bits<32>>; 3],
-    w_t: [Signal<Local, Sq4_20>; 3],
-    w_partial: Signal<Local, Sq4_20>,
-    w_q: Signal<Local, Bits<15>>,
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct Dot3: unit("dot3", LATENCY) {
+        in {
+            n_x: Sq1_10,
+            n_y: Sq1_10,
+            n_z: Sq1_10,
+            l_x: Sq1_10,
+            l_y: Sq1_10,
+            l_z: Sq1_10,
+        }
+        out {
+            x: Bits<10>,
+        }
+        s1_nm: [DFF<Bits<12>>; 3], // |n| ≤ 2048 (U12)
+        s1_lm: [DFF<Bits<12>>; 3],
+        s1_neg: [DFF<Bit>; 3],
+        s1b_nm: [DFF<Bits<12>>; 3], // the operands again
+        s1b_lm: [DFF<Bits<12>>; 3],
+        s1b_neg: [DFF<Bit>; 3],
+        s2_p: [DFF<Bits<23>>; 3], // |n|·|l| ≤ 2^22 (U23)
+        s2_neg: [DFF<Bit>; 3],
+        s3_t: [DFF<Sq4_20>; 3],
+        s4_sum: DFF<Sq4_20>,
+        s5_x: DFF<Bits<10>>,
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        n_in: [Signal<Local, Sq1_10>; 3],
+        l_in: [Signal<Local, Sq1_10>; 3],
+        w_n: [Signal<Local, Bits<16>>; 3],
+        w_l: [Signal<Local, Bits<16>>; 3],
+        w_p: [Signal<Local, Bits<32>>; 3],
+        w_t: [Signal<Local, Sq4_20>; 3],
+        w_partial: Signal<Local, Sq4_20>,
+        w_q: Signal<Local, Bits<15>>,
+    }
 }
 
 impl Logic for Dot3 {
@@ -121,4 +123,3 @@ impl Logic for Dot3 {
     }
 }
 
-stream_unit!(Dot3, "dot3", LATENCY, inputs: [n_x: 12, n_y: 12, n_z: 12, l_x: 12, l_y: 12, l_z: 12], outputs: [x: 10]);

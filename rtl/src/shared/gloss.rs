@@ -6,7 +6,6 @@
 //! placer can put it beside the DSP and the long route lands on a register-to-register path.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use crate::q::{U8, Uq0_10, Uq6_3};
 
@@ -14,63 +13,65 @@ use crate::q::{U8, Uq0_10, Uq6_3};
 pub const LATENCY: usize = 11;
 
 
-#[derive(LogicBlock)]
-pub struct Gloss {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub conc: Signal<In, U8>,
-    pub x: Signal<In, Uq0_10>,
-    pub valid_out: Signal<Out, Bit>,
-    pub p: Signal<Out, Uq0_10>,
-    // stage 1: k = C + 8, t = 1023 − X
-    s1_k: DFF<Uq6_3>,
-    s1_t: DFF<Uq0_10>,
-    s1_c: DFF<U8>,
-    // stage 1b: the operands again
-    s1b_k: DFF<Uq6_3>,
-    s1b_t: DFF<Uq0_10>,
-    s1b_c: DFF<U8>,
-    // stage 2: m = k·t (U19)
-    s2_m: DFF<Bits<19>>,
-    s2_c: DFF<U8>,
-    // stage 3: L = max(0, 1023 − (m >> 3))
-    s3_l: DFF<Uq0_10>,
-    s3_c: DFF<U8>,
-    // stage 3b: the operand again
-    s3b_l: DFF<Uq0_10>,
-    s3b_c: DFF<U8>,
-    // stage 4: L·L (U20)
-    s4_ll: DFF<Bits<20>>,
-    s4_l: DFF<Uq0_10>,
-    s4_c: DFF<U8>,
-    // stage 5: L − Q, Q = (L·L) >> 10
-    s5_d: DFF<Uq0_10>,
-    s5_l: DFF<Uq0_10>,
-    s5_c: DFF<U8>,
-    // stage 5b: the operands again
-    s5b_d: DFF<Uq0_10>,
-    s5b_l: DFF<Uq0_10>,
-    s5b_c: DFF<U8>,
-    // stage 6: C·(L − Q) (U18)
-    s6_prod: DFF<Bits<18>>,
-    s6_l: DFF<Uq0_10>,
-    // stage 7: ceil((C·(L − Q)) / 256)
-    s7_q: DFF<Uq0_10>,
-    s7_l: DFF<Uq0_10>,
-    // stage 8: P = L − that
-    s8_p: DFF<Uq0_10>,
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    w_k: Signal<Local, Bits<16>>,
-    w_t: Signal<Local, Bits<16>>,
-    w_m: Signal<Local, Bits<32>>,
-    m3: Signal<Local, Bits<16>>,
-    m3_lo: Signal<Local, Uq0_10>,
-    w_l: Signal<Local, Bits<16>>,
-    w_ll: Signal<Local, Bits<32>>,
-    w_c: Signal<Local, Bits<16>>,
-    w_d: Signal<Local, Bits<16>>,
-    w_prod: Signal<Local, Bits<32>>,
-    ceil_sum: Signal<Local, Bits<18>>,
+crate::stream_block! {
+    pub struct Gloss: unit("gloss", LATENCY) {
+        in {
+            conc: U8,
+            x: Uq0_10,
+        }
+        out {
+            p: Uq0_10,
+        }
+        // stage 1: k = C + 8, t = 1023 − X
+        s1_k: DFF<Uq6_3>,
+        s1_t: DFF<Uq0_10>,
+        s1_c: DFF<U8>,
+        // stage 1b: the operands again
+        s1b_k: DFF<Uq6_3>,
+        s1b_t: DFF<Uq0_10>,
+        s1b_c: DFF<U8>,
+        // stage 2: m = k·t (U19)
+        s2_m: DFF<Bits<19>>,
+        s2_c: DFF<U8>,
+        // stage 3: L = max(0, 1023 − (m >> 3))
+        s3_l: DFF<Uq0_10>,
+        s3_c: DFF<U8>,
+        // stage 3b: the operand again
+        s3b_l: DFF<Uq0_10>,
+        s3b_c: DFF<U8>,
+        // stage 4: L·L (U20)
+        s4_ll: DFF<Bits<20>>,
+        s4_l: DFF<Uq0_10>,
+        s4_c: DFF<U8>,
+        // stage 5: L − Q, Q = (L·L) >> 10
+        s5_d: DFF<Uq0_10>,
+        s5_l: DFF<Uq0_10>,
+        s5_c: DFF<U8>,
+        // stage 5b: the operands again
+        s5b_d: DFF<Uq0_10>,
+        s5b_l: DFF<Uq0_10>,
+        s5b_c: DFF<U8>,
+        // stage 6: C·(L − Q) (U18)
+        s6_prod: DFF<Bits<18>>,
+        s6_l: DFF<Uq0_10>,
+        // stage 7: ceil((C·(L − Q)) / 256)
+        s7_q: DFF<Uq0_10>,
+        s7_l: DFF<Uq0_10>,
+        // stage 8: P = L − that
+        s8_p: DFF<Uq0_10>,
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        w_k: Signal<Local, Bits<16>>,
+        w_t: Signal<Local, Bits<16>>,
+        w_m: Signal<Local, Bits<32>>,
+        m3: Signal<Local, Bits<16>>,
+        m3_lo: Signal<Local, Uq0_10>,
+        w_l: Signal<Local, Bits<16>>,
+        w_ll: Signal<Local, Bits<32>>,
+        w_c: Signal<Local, Bits<16>>,
+        w_d: Signal<Local, Bits<16>>,
+        w_prod: Signal<Local, Bits<32>>,
+        ceil_sum: Signal<Local, Bits<18>>,
+    }
 }
 
 impl Default for Gloss {
@@ -188,4 +189,3 @@ impl Logic for Gloss {
     }
 }
 
-stream_unit!(Gloss, "gloss", LATENCY, inputs: [conc: 8, x: 10], outputs: [p: 10]);

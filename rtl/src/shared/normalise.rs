@@ -7,7 +7,6 @@
 //! the signs.
 
 use crate::delay::Delay;
-use crate::stream_unit;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 use crate::q::{Sq1_10, Sq9_0, Uq1_12};
@@ -33,66 +32,68 @@ pub fn table() -> Vec<u64> {
         .collect()
 }
 
-#[derive(LogicBlock)]
-pub struct Normalise {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    pub vec_x: Signal<In, Sq9_0>,
-    pub vec_y: Signal<In, Sq9_0>,
-    pub vec_z: Signal<In, Sq9_0>,
-    pub valid_out: Signal<Out, Bit>,
-    pub norm_x: Signal<Out, Sq1_10>,
-    pub norm_y: Signal<Out, Sq1_10>,
-    pub norm_z: Signal<Out, Sq1_10>,
-    rsqrt: ROM<Uq1_12, 10>,
-    // stage 1: magnitudes ≤ 512 (U10) and signs
-    s1_m: [DFF<Bits<10>>; 3],
-    s1_neg: [DFF<Bit>; 3],
-    s1b_m: [DFF<Bits<10>>; 3], // the squarers' operands again
-    s1b_neg: [DFF<Bit>; 3],
-    // stage 2: squares ≤ 2^18 (U19)
-    s2_sq: [DFF<Bits<19>>; 3],
-    s2_m: [DFF<Bits<10>>; 3],
-    s2_neg: [DFF<Bit>; 3],
-    // stage 3: s = x² + y² + z² < 2^20
-    s3_s: DFF<Bits<20>>,
-    s3_m: [DFF<Bits<10>>; 3],
-    s3_neg: [DFF<Bit>; 3],
-    // stage 4: e, the leading zero pairs of s (0..9)
-    s4_e: DFF<Bits<4>>,
-    s4_s: DFF<Bits<20>>,
-    s4_m: [DFF<Bits<10>>; 3],
-    s4_neg: [DFF<Bit>; 3],
-    // stage 5: table address = top bits of s·4^e; |c|·2^e ≤ √(s·4^e) < 1024 (U10)
-    s5_addr: DFF<Bits<10>>,
-    s5_c: [DFF<Bits<10>>; 3],
-    s5_neg: [DFF<Bit>; 3],
-    // stage 6: the table entry
-    s6_r: DFF<Uq1_12>,
-    s6_c: [DFF<Bits<10>>; 3],
-    s6_neg: [DFF<Bit>; 3],
-    // stage 6b: the table entry and the shifted components, registered again after the block RAM
-    mop_r: [DFF<Uq1_12>; 3], // the table value once per multiplier (`mop_`: see `rtl/README.md`)
-    s6b_c: [DFF<Bits<10>>; 3],
-    s6b_neg: [DFF<Bit>; 3],
-    // stage 7: |c|·2^e·r ≤ 1023·4096 (U23)
-    s7_p: [DFF<Bits<23>>; 3],
-    s7_neg: [DFF<Bit>; 3],
-    // stage 8: round half up on the magnitude, 11 bits dropped (so half away from zero on the value)
-    s8_n: [DFF<Bits<12>>; 3],
-    s8_neg: [DFF<Bit>; 3],
-    // stage 9: the signs back
-    s9_out: [DFF<Sq1_10>; 3],
-    valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
-    w_m: [Signal<Local, Bits<16>>; 3],
-    w_sq: [Signal<Local, Bits<32>>; 3],
-    w_part: Signal<Local, Bits<20>>,
-    w_e2: Signal<Local, Bits<5>>,
-    w_sn: Signal<Local, Bits<20>>,
-    w_c: [Signal<Local, Bits<16>>; 3],
-    w_r: [Signal<Local, Bits<16>>; 3],
-    w_p: [Signal<Local, Bits<32>>; 3],
-    w_u: [Signal<Local, Bits<23>>; 3],
+crate::stream_block! {
+    pub struct Normalise: unit("normalise", LATENCY) {
+        in {
+            vec_x: Sq9_0,
+            vec_y: Sq9_0,
+            vec_z: Sq9_0,
+        }
+        out {
+            norm_x: Sq1_10,
+            norm_y: Sq1_10,
+            norm_z: Sq1_10,
+        }
+        rsqrt: ROM<Uq1_12, 10>,
+        // stage 1: magnitudes ≤ 512 (U10) and signs
+        s1_m: [DFF<Bits<10>>; 3],
+        s1_neg: [DFF<Bit>; 3],
+        s1b_m: [DFF<Bits<10>>; 3], // the squarers' operands again
+        s1b_neg: [DFF<Bit>; 3],
+        // stage 2: squares ≤ 2^18 (U19)
+        s2_sq: [DFF<Bits<19>>; 3],
+        s2_m: [DFF<Bits<10>>; 3],
+        s2_neg: [DFF<Bit>; 3],
+        // stage 3: s = x² + y² + z² < 2^20
+        s3_s: DFF<Bits<20>>,
+        s3_m: [DFF<Bits<10>>; 3],
+        s3_neg: [DFF<Bit>; 3],
+        // stage 4: e, the leading zero pairs of s (0..9)
+        s4_e: DFF<Bits<4>>,
+        s4_s: DFF<Bits<20>>,
+        s4_m: [DFF<Bits<10>>; 3],
+        s4_neg: [DFF<Bit>; 3],
+        // stage 5: table address = top bits of s·4^e; |c|·2^e ≤ √(s·4^e) < 1024 (U10)
+        s5_addr: DFF<Bits<10>>,
+        s5_c: [DFF<Bits<10>>; 3],
+        s5_neg: [DFF<Bit>; 3],
+        // stage 6: the table entry
+        s6_r: DFF<Uq1_12>,
+        s6_c: [DFF<Bits<10>>; 3],
+        s6_neg: [DFF<Bit>; 3],
+        // stage 6b: the table entry and the shifted components, registered again after the block RAM
+        mop_r: [DFF<Uq1_12>; 3], // the table value once per multiplier (`mop_`: see `rtl/README.md`)
+        s6b_c: [DFF<Bits<10>>; 3],
+        s6b_neg: [DFF<Bit>; 3],
+        // stage 7: |c|·2^e·r ≤ 1023·4096 (U23)
+        s7_p: [DFF<Bits<23>>; 3],
+        s7_neg: [DFF<Bit>; 3],
+        // stage 8: round half up on the magnitude, 11 bits dropped (so half away from zero on the value)
+        s8_n: [DFF<Bits<12>>; 3],
+        s8_neg: [DFF<Bit>; 3],
+        // stage 9: the signs back
+        s9_out: [DFF<Sq1_10>; 3],
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        w_m: [Signal<Local, Bits<16>>; 3],
+        w_sq: [Signal<Local, Bits<32>>; 3],
+        w_part: Signal<Local, Bits<20>>,
+        w_e2: Signal<Local, Bits<5>>,
+        w_sn: Signal<Local, Bits<20>>,
+        w_c: [Signal<Local, Bits<16>>; 3],
+        w_r: [Signal<Local, Bits<16>>; 3],
+        w_p: [Signal<Local, Bits<32>>; 3],
+        w_u: [Signal<Local, Bits<23>>; 3],
+    }
 }
 
 impl Default for Normalise {
@@ -292,5 +293,3 @@ impl Logic for Normalise {
     }
 }
 
-stream_unit!(Normalise, "normalise", LATENCY,
-    inputs: [vec_x: 10, vec_y: 10, vec_z: 10], outputs: [norm_x: 12, norm_y: 12, norm_z: 12]);
