@@ -95,11 +95,13 @@ fn no_block_uses_rust_hdl_signed() {
 }
 
 #[test]
-fn signed_products_go_through_the_one_sign_magnitude_multiplier_in_the_bilinear_unit() {
-    // the bilinear unit, the first block rewritten on `SmMul`, writes no sign-magnitude idiom of its own
-    let text = std::fs::read_to_string(root().join("rtl/src/shared/bilinear.rs")).unwrap();
-    assert!(text.contains("SmMul<16>") && text.contains("SmMul<32>"));
-    assert!(!text.contains("+ 1;"), "bilinear.rs negates by hand again");
+fn signed_products_go_through_the_one_sign_magnitude_multiplier() {
+    // the blocks built on `SmMul` write no sign-magnitude idiom of their own
+    for file in ["rtl/src/shared/bilinear.rs", "rtl/src/cartesian/light_iter.rs"] {
+        let text = std::fs::read_to_string(root().join(file)).unwrap();
+        assert!(text.contains("SmMul<"), "{file} uses SmMul");
+        assert!(!text.contains("!self."), "{file} negates by hand again");
+    }
 }
 
 #[test]
@@ -112,4 +114,59 @@ fn nothing_writes_into_the_system_temp_folder() {
             assert!(!text.contains("temp_dir()") && !text.contains("\"/tmp"), "{} writes into the system temp folder", path.display());
         }
     }
+}
+
+/// Whether an rtl line computes a value: an assignment whose right side does arithmetic, shifts, slices or casts
+/// (index arithmetic such as `[i - 1]` does not count).
+fn computes(line: &str) -> bool {
+    let code = line.split("//").next().unwrap();
+    let Some((_, rhs)) = code.split_once(".next =") else { return false };
+    let mut depth = 0;
+    let rhs: String = rhs
+        .chars()
+        .filter(|&c| {
+            match c {
+                '[' => depth += 1,
+                ']' => depth -= 1,
+                _ => {}
+            }
+            depth == 0 && c != ']'
+        })
+        .collect();
+    ["+", "-", "*", ">>", "<<", "get_bits", "bit_cast"].iter().any(|op| rhs.contains(op))
+}
+
+#[test]
+fn every_rtl_datapath_line_says_its_width() {
+    // a line that computes carries a comment, or sits in a run of assignments (and their if/else) under one
+    let mut bare = vec![];
+    for (path, text) in rust_sources("rtl/src") {
+        if path.ends_with("stream.rs") {
+            continue; // the harness, not a datapath
+        }
+        let lines: Vec<&str> = text.lines().take_while(|l| !l.starts_with("#[cfg(test)]")).collect();
+        for (i, line) in lines.iter().enumerate() {
+            if !computes(line) || line.contains("//") {
+                continue;
+            }
+            let covered = lines[..i]
+                .iter()
+                .rev()
+                .map(|l| l.trim())
+                .find(|t| !(t.starts_with("if ") || t.starts_with("} else") || *t == "}" || (t.contains(".next =") && !t.contains("//"))))
+                .is_some_and(|t| t.starts_with("//"));
+            if !covered {
+                bare.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));
+            }
+        }
+    }
+    assert!(bare.is_empty(), "datapath lines without a width comment:\n{}", bare.join("\n"));
+}
+
+#[test]
+fn the_width_rule_sees_a_bare_line() {
+    assert!(computes("        self.s1_d.d.next = self.a.val() - self.b.val();"));
+    assert!(computes("        self.s2_q.d.next = self.w_u.val().get_bits::<8>(8);"));
+    assert!(!computes("        self.line[i].d.next = self.line[i - 1].q.val();"));
+    assert!(!computes("        self.valid.d.next = self.valid_in.val();"));
 }

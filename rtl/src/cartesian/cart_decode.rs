@@ -74,19 +74,19 @@ impl Logic for CartDecode {
         self.inv_x.next = !self.lo_x.val(); // inverted at 7 bits: Verilog would widen first, then invert
         self.inv_z.next = !self.lo_z.val();
         if !self.texel_x.val().get_bit(7) {
-            self.s1_ax.d.next = bit_cast::<8, 7>(self.inv_x.val());
+            self.s1_ax.d.next = bit_cast::<8, 7>(self.inv_x.val()); // 127 − T ∈ 0..127 (U7 in U8), exact
         } else if self.texel_x.val().all() {
             self.s1_ax.d.next = 127.into();
         } else {
-            self.s1_ax.d.next = bit_cast::<8, 7>(self.lo_x.val()) + 1;
+            self.s1_ax.d.next = bit_cast::<8, 7>(self.lo_x.val()) + 1; // T − 127 ∈ 1..127 (U8), exact
         }
         self.s1_sx.d.next = !self.texel_x.val().get_bit(7);
         if !self.texel_z.val().get_bit(7) {
-            self.s1_az.d.next = bit_cast::<8, 7>(self.inv_z.val());
+            self.s1_az.d.next = bit_cast::<8, 7>(self.inv_z.val()); // 127 − T (U8), exact
         } else if self.texel_z.val().all() {
             self.s1_az.d.next = 127.into();
         } else {
-            self.s1_az.d.next = bit_cast::<8, 7>(self.lo_z.val()) + 1;
+            self.s1_az.d.next = bit_cast::<8, 7>(self.lo_z.val()) + 1; // T − 127 (U8), exact
         }
         self.s1_sz.d.next = !self.texel_z.val().get_bit(7);
         // stage 2: ax + az ≤ 254 (U8); ax − az ∈ −127..127 (S9)
@@ -103,13 +103,13 @@ impl Logic for CartDecode {
         self.g_mz.next = 127 - self.s2_dxz.q.val(); // 0..254
         self.twice_sum.next = self.s2_sum.q.val() << 1; // unguarded: sum ≤ 127, so ≤ 254
         if self.s2_sum.q.val().get_bit(7) {
-            self.s3_mx.d.next = self.g_mx.val().get_bits::<8>(0);
-            self.s3_mz.d.next = self.g_mz.val().get_bits::<8>(0);
+            self.s3_mx.d.next = self.g_mx.val().get_bits::<8>(0); // 0..254 fits U8: exact
+            self.s3_mz.d.next = self.g_mz.val().get_bits::<8>(0); // 0..254 fits U8: exact
             self.s3_by.d.next = 1.into();
         } else {
-            self.s3_mx.d.next = self.s2_ax.q.val() << 1;
-            self.s3_mz.d.next = self.s2_az.q.val() << 1;
-            self.s3_by.d.next = 255 - self.twice_sum.val();
+            self.s3_mx.d.next = self.s2_ax.q.val() << 1; // 2·ax ≤ 254 (sum < 128): U8, exact
+            self.s3_mz.d.next = self.s2_az.q.val() << 1; // 2·az ≤ 254: U8, exact
+            self.s3_by.d.next = 255 - self.twice_sum.val(); // 255 − 2·sum ∈ 1..255: U8, exact
         }
         self.s3_sx.d.next = self.s2_sx.q.val();
         self.s3_sz.d.next = self.s2_sz.q.val();

@@ -94,7 +94,7 @@ impl Logic for Power {
         self.s6_w.d.next = self.w_w.val().get_bits::<9>(0);
         // stage 7: ((E >> (n + 6)) + 1) >> 1, the last bit rounded half up
         self.w_w1.next = self.s6_w.q.val() + 1; // ≤ 511: no wrap
-        self.w_y.next = self.w_w1.val() >> 1;
+        self.w_y.next = self.w_w1.val() >> 1; // ≤ 255 (U8 in 9), floor: with the + 1, round half up
         if self.zero_dly.q.val() {
             if self.pw0_dly.q.val() {
                 self.s7_y.d.next = 255.into(); // 0^0 = 1
@@ -102,7 +102,7 @@ impl Logic for Power {
                 self.s7_y.d.next = 0.into();
             }
         } else {
-            self.s7_y.d.next = self.w_y.val().get_bits::<8>(0);
+            self.s7_y.d.next = self.w_y.val().get_bits::<8>(0); // ≤ 255: U8, exact
         }
         self.y.next = self.s7_y.q.val();
         self.valid_out.next = self.valid.q.val();

@@ -103,7 +103,7 @@ impl Logic for Blend {
             // stage 4
             self.w_th[i].next = self.s3_t[i].q.val() >> 8;
             self.w_u[i].next = self.s3_t[i].q.val() + self.w_th[i].val(); // ≤ 65,407: no wrap
-            self.s4_out[i].d.next = self.w_u[i].val().get_bits::<8>(8);
+            self.s4_out[i].d.next = self.w_u[i].val().get_bits::<8>(8); // U16 >> 8 (floor): U8, the /255 rounded
         }
         self.out_r.next = self.s4_out[0].q.val();
         self.out_g.next = self.s4_out[1].q.val();

@@ -22,9 +22,9 @@ impl Logic for Div255 {
     fn update(&mut self) {
         dff_setup!(self, clock, s1_t, s2_q);
         self.s1_t.d.next = self.num.val() + 128; // ≤ 65,280: no wrap
-        self.w_th.next = self.s1_t.q.val() >> 8;
+        self.w_th.next = self.s1_t.q.val() >> 8; // t >> 8 ≤ 255 (U8 in 16), floor
         self.w_u.next = self.s1_t.q.val() + self.w_th.val(); // ≤ 65,534: no wrap
-        self.s2_q.d.next = self.w_u.val().get_bits::<8>(8);
+        self.s2_q.d.next = self.w_u.val().get_bits::<8>(8); // U16 >> 8 (floor): U8, num/255 rounded half up
         self.quot.next = self.s2_q.q.val();
     }
 }

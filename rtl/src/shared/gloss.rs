@@ -180,7 +180,7 @@ impl Logic for Gloss {
         self.s6_l.d.next = self.s5b_l.q.val();
         // stage 7: ceil(C·d / 256) = (C·d + 255) >> 8, which is −((C·(Q − L)) >> 8)
         self.ceil_sum.next = self.s6_prod.q.val() + 255; // ≤ 255·1023 + 255 < 2^18
-        self.s7_q.d.next = self.ceil_sum.val().get_bits::<10>(8);
+        self.s7_q.d.next = self.ceil_sum.val().get_bits::<10>(8); // U18 >> 8 (floor of the + 255: a ceiling): U10
         self.s7_l.d.next = self.s6_l.q.val();
         // stage 8: P = L − ceil(...)
         self.s8_p.d.next = self.s7_l.q.val() - self.s7_q.q.val();

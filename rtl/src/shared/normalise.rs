@@ -243,7 +243,7 @@ impl Logic for Normalise {
             self.s7_neg[i].d.next = self.s6b_neg[i].q.val();
             // stage 8: (p + 2^10) >> 11
             self.w_u[i].next = self.s7_p[i].q.val() + 1024; // < 2^23
-            self.s8_n[i].d.next = self.w_u[i].val().get_bits::<12>(11);
+            self.s8_n[i].d.next = self.w_u[i].val().get_bits::<12>(11); // U23 >> 11 (floor of the + 2^10: round half up), ≤ 1024: U12
             self.s8_neg[i].d.next = self.s7_neg[i].q.val();
             // stage 9
             if self.s8_neg[i].q.val() {

@@ -46,7 +46,7 @@ impl<const W: usize, const A: usize, const N: usize> Logic for RamDelay<W, A, N>
         self.ram.write_enable.next = true;
         self.ram.write_address.next = self.wp.q.val();
         self.ram.write_data.next = self.d.val();
-        self.ram.read_address.next = self.wp.q.val() + self.back.val();
+        self.ram.read_address.next = self.wp.q.val() + self.back.val(); // wp − (N − 1) modulo 2^A (back = 2^A − N + 1): wraps on purpose
         self.q.next = self.ram.read_data.val();
     }
 }
