@@ -28,11 +28,11 @@ fn bilinear_hard_cases() {
     assert_eq!(e(&[vec![0; 4], vec![255; 4], vec![0; 4], vec![255; 4], vec![255, 0]].concat()), vec![254; 4]);
 }
 
-/// One `BilinearUnit<W, F>` driven directly, one vector per clock: (t00, t10, t01, t11, u, v) → out.
-fn run_unit<const W: usize, const F: usize>(vecs: &[[i64; 6]]) -> Vec<i64> {
+/// One `BilinearUnit<W, F, D>` driven directly, one vector per clock: (t00, t10, t01, t11, u, v) → (out, wide).
+fn run_unit<const W: usize, const F: usize, const D: usize>(vecs: &[[i64; 6]]) -> Vec<(i64, i64)> {
     use rust_hdl::prelude::*;
     use rtl::bilinear::{BilinearUnit, LATENCY};
-    let mut uut = BilinearUnit::<W, F>::default();
+    let mut uut = BilinearUnit::<W, F, D>::default();
     uut.connect_all();
     let mut out = vec![];
     for k in 0..vecs.len() + LATENCY - 1 {
@@ -48,15 +48,15 @@ fn run_unit<const W: usize, const F: usize>(vecs: &[[i64; 6]]) -> Vec<i64> {
         uut.clock.next = Clock { clk: true };
         assert!(simulate(&mut uut, 10_000));
         if k + 1 >= LATENCY {
-            out.push(uut.out.val().to_u64() as i64);
+            out.push((uut.out.val().to_u64() as i64, uut.wide.val().to_u64() as i64));
         }
     }
     out
 }
 
 /// The unit at other widths than the colour filter's: every blend-factor pair on the texels' extremes and on a
-/// random draw, against the model's channel at the same F. 4-bit texels are the height-map issue's 4-bit heights.
-fn unit_matches_the_model_at<const W: usize, const F: usize>() {
+/// random draw, against the model's channel at the same F and D, both outputs. 4-bit texels are 4-bit heights.
+fn unit_matches_the_model_at<const W: usize, const F: usize, const D: usize>() {
     use rand::{Rng, SeedableRng};
     let top = (1i64 << W) - 1;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(W as u64 * 100 + F as u64);
@@ -73,20 +73,45 @@ fn unit_matches_the_model_at<const W: usize, const F: usize>() {
         let t: [i64; 4] = std::array::from_fn(|_| rng.gen_range(0..=top));
         vecs.push([t[0], t[1], t[2], t[3], rng.gen_range(0..1 << F), rng.gen_range(0..1 << F)]);
     }
-    let got = run_unit::<W, F>(&vecs);
+    let got = run_unit::<W, F, D>(&vecs);
     assert_eq!(got.len(), vecs.len());
+    let (f, d) = (F as u32, D as u32);
     for (x, g) in vecs.iter().zip(got) {
-        let want = vectors::bilinear::exact_channel(x[0], x[1], x[2], x[3], x[4], x[5], F as u32);
-        assert_eq!(g, want, "BilinearUnit<{W}, {F}> on {x:?}");
+        let out = vectors::bilinear::exact_channel_with(x[0], x[1], x[2], x[3], x[4], x[5], f, d);
+        let wide = vectors::bilinear::exact_wide(x[0], x[1], x[2], x[3], x[4], x[5], f, d);
+        assert_eq!(g, (out, wide), "BilinearUnit<{W}, {F}, {D}> on {x:?}");
     }
 }
 
 #[test]
 fn bilinear_unit_at_4_bit_texels_and_4_blend_bits() {
-    unit_matches_the_model_at::<4, 4>();
+    unit_matches_the_model_at::<4, 4, 0>();
 }
 
 #[test]
 fn bilinear_unit_at_8_bit_texels_and_6_blend_bits() {
-    unit_matches_the_model_at::<8, 6>();
+    unit_matches_the_model_at::<8, 6, 0>();
+}
+
+#[test]
+fn bilinear_unit_at_9_blend_bits_one_dropped() {
+    // the shared unit of the texture filter: 9 blend bits (the height path's adjusted factors, ½ + u/2, exact) and
+    // one bit dropped between the stages so that |b' − a'| fits 16 bits
+    unit_matches_the_model_at::<8, 9, 1>();
+}
+
+#[test]
+fn nine_blend_bits_with_one_dropped_filter_colour_exactly_as_eight() {
+    // colour mode through the shared unit: u, v at 9 bits are the 8-bit factors doubled, so a and b are even and
+    // dropping their last bit loses nothing: the rounded output is the 8-bit unit's, on every factor pair
+    let t = [[0, 255, 17, 200], [255, 255, 255, 255], [3, 250, 128, 0], [1, 0, 0, 1]];
+    for q in t {
+        for u in 0..256 {
+            for v in 0..256 {
+                let e8 = vectors::bilinear::exact_channel(q[0], q[1], q[2], q[3], u, v, 8);
+                let e9 = vectors::bilinear::exact_channel_with(q[0], q[1], q[2], q[3], 2 * u, 2 * v, 9, 1);
+                assert_eq!(e8, e9, "{q:?} u {u} v {v}");
+            }
+        }
+    }
 }

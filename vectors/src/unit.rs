@@ -146,17 +146,27 @@ macro_rules! unit_table {
             rtl {
                 cart_decode: $crate::cart_decode::MODEL, rtl::cart_decode::CartDecode, [];
                 cart_decode_hemi_oct: $crate::cart_decode_hemi_oct::MODEL, rtl::cart_decode_hemi_oct::CartDecodeHemiOct, [];
-                bilinear: $crate::bilinear::MODEL, rtl::bilinear::Bilinear, [];
+                bilinear: $crate::bilinear::MODEL, rtl::bilinear::Bilinear, [
+                    ("unit$0$wide", "the colour filter reads each bilinear unit's rounded output; the exact one is the \
+                        height-map path's"),
+                    ("unit$1$wide", "as unit$0$wide"),
+                    ("unit$2$wide", "as unit$0$wide"),
+                    ("unit$3$wide", "as unit$0$wide"),
+                ];
                 light_iter: $crate::light_iter::MODEL, rtl::light_iter::LightIter, [];
                 normalise: $crate::normalise::MODEL, rtl::normalise::Normalise, [];
                 dot3: $crate::dot3::MODEL, rtl::dot3::Dot3, [];
                 gloss: $crate::gloss::MODEL, rtl::gloss::Gloss, [];
                 blend: $crate::blend::MODEL, rtl::blend::Blend, [];
                 cart_pipeline: $crate::cart_pipeline::MODEL, rtl::cart_pipeline::CartPipeline, [
+                    ("filter$0$wide", "the texel's components are read rounded, as the colour filter reads them"),
+                    ("filter$1$wide", "as filter$0$wide"),
                     ("light$valid_out", "the light path runs in lockstep with the bump path, whose valid is used"),
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];
                 cart_pipeline_hemi_oct: $crate::cart_pipeline::MODEL_HEMI_OCT, rtl::cart_pipeline::CartPipelineHemiOct, [
+                    ("filter$0$wide", "as in cart_pipeline"),
+                    ("filter$1$wide", "as filter$0$wide"),
                     ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];

@@ -1,11 +1,15 @@
 //! `bilinear`: the texture filter's bilinear units (seed 001, units 65–68).
 //!
-//! `BilinearUnit<W, F>` is one unit: one channel of `W` bits (W ≤ 8), `F` blend-factor bits (F ≤ 8), the patent's
+//! `BilinearUnit<W, F, D>` is one unit: one channel of `W` bits (W ≤ 8), `F` blend-factor bits (F ≤ 9), the patent's
 //! "four (usually identical) bilinear units, each of which computes one of the four colour channels". The colour
 //! filter holds four, the Cartesian pipeline two (its texel's two components), and the height-map normal generator
 //! will feed the same four with heights. Per channel:
 //! `a = t00·2^F + (t10 − t00)·u`, `b = t01·2^F + (t11 − t01)·u` (exact, U(W+F)), then
-//! `out = (a·2^F + (b − a)·v + 2^(2F−1)) >> 2F` — the model's `a·(2^F − v) + b·v` rounded half up, same value.
+//! `a' = a >> D`, `b' = b >> D` (truncation: `D` bits dropped so that |b' − a'| fits the multiplier's 16 bits; exact
+//! when u is a multiple of 2^D, as in colour mode with F = 9), then `wide = a'·2^F + (b' − a')·v` (U(W + 2F − D),
+//! exact) and `out = (wide + 2^(2F−D−1)) >> (2F − D)` (UW, rounded half up). With D = 0 this is the model's
+//! `a·(2^F − v) + b·v` rounded half up. The colour filter reads `out`; the height-map path reads `wide`, whose
+//! 2F − D fraction bits the tangents need.
 //! Latency 11: widen; differences; the two `SmMul`s (|d|, operand registers, ·u); a and b; b − a; the `SmMul`
 //! (|b − a|, operand registers, ·v); the rounded sum.
 //!
@@ -21,9 +25,10 @@ use rust_hdl::prelude::*;
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
 
-/// One bilinear unit: `W`-bit texels, `F`-bit blend factors (`u`, `v` ∈ 0..2^F, the second texel's weight u/2^F).
+/// One bilinear unit: `W`-bit texels, `F`-bit blend factors (`u`, `v` ∈ 0..2^F, the second texel's weight u/2^F),
+/// `D` bits dropped between its two stages.
 #[derive(LogicBlock)]
-pub struct BilinearUnit<const W: usize, const F: usize> {
+pub struct BilinearUnit<const W: usize, const F: usize, const D: usize = 0> {
     pub clock: Signal<In, Clock>,
     pub t00: Signal<In, Bits<W>>,
     pub t10: Signal<In, Bits<W>>,
@@ -31,11 +36,14 @@ pub struct BilinearUnit<const W: usize, const F: usize> {
     pub t11: Signal<In, Bits<W>>,
     pub ublend: Signal<In, Bits<F>>,
     pub vblend: Signal<In, Bits<F>>,
-    /// The filtered channel, LATENCY clocks later (UW).
+    /// The filtered channel, LATENCY clocks later (UW, rounded half up).
     pub out: Signal<Out, Bits<W>>,
+    /// The same, exact before the rounding: U(W + 2F − D), 2F − D fraction bits.
+    pub wide: Signal<Out, Bits<32>>,
     shift_f: Constant<Bits<8>>,   // F
-    shift_2f: Constant<Bits<5>>,  // 2F, an index into 32 bits
-    half: Constant<Bits<32>>,     // 2^(2F−1), the rounding constant
+    shift_d: Constant<Bits<8>>,   // D
+    shift_out: Constant<Bits<5>>, // 2F − D, an index into 32 bits
+    half: Constant<Bits<32>>,     // 2^(2F−D−1), the rounding constant
     u: Delay<Bits<16>, 2>,        // u, to meet the differences at the multipliers (UF)
     v: Delay<Bits<16>, 7>,        // v, to meet b − a (UF)
     // stage 1: the texels widened (UW in 16 bits), the two bases (UW in 32)
@@ -60,21 +68,28 @@ pub struct BilinearUnit<const W: usize, const F: usize> {
     // stage 6: a, b ∈ 0..(2^W − 1)·2^F (U(W+F)), exact
     s6_a: DFF<Bits<32>>,
     s6_b: DFF<Bits<32>>,
-    // stage 7: b − a (S(W+F), two's complement in 32 bits; |b − a| ≤ (2^W − 1)·2^F < 2^16 fits SmMul's 16)
+    // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's 16)
     s7_e: DFF<Bits<32>>,
     s7_a: DFF<Bits<32>>,
     // stages 8–10: |b − a|·v < 2^(W+2F), a carried
     mul2: SmMul<32>,
     a: Delay<Bits<32>, { sm_mul::LATENCY }>,
-    w_a: Signal<Local, Bits<32>>, // a·2^F (U(W+2F))
-    w_r: Signal<Local, Bits<32>>, // a·2^F ± |b − a|·v + 2^(2F−1) ∈ 0..2^(W+2F) (U(W+2F) ≤ 24 bits), exact
-    // stage 11: the top W bits of W + 2F: truncation of the rounded sum, so round half up overall
+    w_ad: Signal<Local, Bits<32>>, // a >> D (U(W+F−D)), truncated
+    w_bd: Signal<Local, Bits<32>>, // b >> D, truncated
+    w_a: Signal<Local, Bits<32>>, // a'·2^F (U(W+2F−D))
+    w_wide: Signal<Local, Bits<32>>, // a'·2^F ± |b' − a'|·v ∈ 0..2^(W+2F−D) (≤ 25 bits), exact
+    w_r: Signal<Local, Bits<32>>, // that + 2^(2F−D−1), < 2^(W+2F−D), exact
+    // stage 11: the top W bits of W + 2F − D: truncation of the rounded sum, so round half up overall; and wide
     s11_out: DFF<Bits<W>>,
+    s11_wide: DFF<Bits<32>>,
 }
 
-impl<const W: usize, const F: usize> Default for BilinearUnit<W, F> {
+impl<const W: usize, const F: usize, const D: usize> Default for BilinearUnit<W, F, D> {
     fn default() -> Self {
-        assert!(W <= 8 && (1..=8).contains(&F), "BilinearUnit<{W}, {F}>: W ≤ 8 and 1 ≤ F ≤ 8 keep |b − a| in 16 bits");
+        assert!(
+            W <= 8 && (1..=9).contains(&F) && D < F && W + F - D <= 16,
+            "BilinearUnit<{W}, {F}, {D}>: W ≤ 8, 1 ≤ F ≤ 9 and W + F − D ≤ 16 keep |b' − a'| in 16 bits"
+        );
         Self {
             clock: Default::default(),
             t00: Default::default(),
@@ -84,9 +99,11 @@ impl<const W: usize, const F: usize> Default for BilinearUnit<W, F> {
             ublend: Default::default(),
             vblend: Default::default(),
             out: Default::default(),
+            wide: Default::default(),
             shift_f: Constant::new(Bits::from(F as u64)),
-            shift_2f: Constant::new(Bits::from(2 * F as u64)),
-            half: Constant::new(Bits::from(1u64 << (2 * F - 1))),
+            shift_d: Constant::new(Bits::from(D as u64)),
+            shift_out: Constant::new(Bits::from((2 * F - D) as u64)),
+            half: Constant::new(Bits::from(1u64 << (2 * F - D - 1))),
             u: Default::default(),
             v: Default::default(),
             s1_t00: Default::default(),
@@ -111,18 +128,22 @@ impl<const W: usize, const F: usize> Default for BilinearUnit<W, F> {
             s7_a: Default::default(),
             mul2: Default::default(),
             a: Default::default(),
+            w_ad: Default::default(),
+            w_bd: Default::default(),
             w_a: Default::default(),
+            w_wide: Default::default(),
             w_r: Default::default(),
             s11_out: Default::default(),
+            s11_wide: Default::default(),
         }
     }
 }
 
-impl<const W: usize, const F: usize> Logic for BilinearUnit<W, F> {
+impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F, D> {
     #[hdl_gen]
     fn update(&mut self) {
         clock!(self, clock, u, v, s1_t00, s1_t10, s1_t01, s1_t11, s1_b0, s1_b1, s2_d0, s2_d1, s2_b0, s2_b1);
-        clock!(self, clock, mul0, mul1, b0, b1, s6_a, s6_b, s7_e, s7_a, mul2, a, s11_out);
+        clock!(self, clock, mul0, mul1, b0, b1, s6_a, s6_b, s7_e, s7_a, mul2, a, s11_out, s11_wide);
         self.u.d.next = bit_cast::<16, F>(self.ublend.val()); // UF in 16, widening
         self.v.d.next = bit_cast::<16, F>(self.vblend.val()); // UF in 16, widening
         // stage 1: widening only
@@ -158,21 +179,27 @@ impl<const W: usize, const F: usize> Logic for BilinearUnit<W, F> {
             self.s6_b.d.next = self.w_base1.val() + self.mul1.p.val();
         }
         // stage 7: b − a, wrapping in 32 bits to its two's complement
-        self.s7_e.d.next = self.s6_b.q.val() - self.s6_a.q.val();
-        self.s7_a.d.next = self.s6_a.q.val();
+        self.w_ad.next = self.s6_a.q.val() >> self.shift_d.val(); // U(W+F) → U(W+F−D), truncated
+        self.w_bd.next = self.s6_b.q.val() >> self.shift_d.val(); // the same
+        self.s7_e.d.next = self.w_bd.val() - self.w_ad.val(); // S(W+F−D), wrapping in 32 bits to its two's complement
+        self.s7_a.d.next = self.w_ad.val();
         // stages 8–10: |b − a|·v, a beside
         self.mul2.x.next = self.s7_e.q.val();
         self.mul2.w.next = self.v.q.val();
         self.a.d.next = self.s7_a.q.val();
-        // stage 11: a·2^F + 2^(2F−1) ± |b − a|·v, then bits 2F.. (truncation: with the half added, round half up)
+        // stage 11: a'·2^F ± |b' − a'|·v (wide), + 2^(2F−D−1), then bits 2F − D.. (truncation of the rounded sum:
+        // round half up)
         self.w_a.next = self.a.q.val() << self.shift_f.val();
         if self.mul2.neg.val() {
-            self.w_r.next = self.w_a.val() + self.half.val() - self.mul2.p.val();
+            self.w_wide.next = self.w_a.val() - self.mul2.p.val();
         } else {
-            self.w_r.next = self.w_a.val() + self.half.val() + self.mul2.p.val();
+            self.w_wide.next = self.w_a.val() + self.mul2.p.val();
         }
-        self.s11_out.d.next = self.w_r.val().get_bits::<W>(self.shift_2f.val().index());
+        self.w_r.next = self.w_wide.val() + self.half.val();
+        self.s11_out.d.next = self.w_r.val().get_bits::<W>(self.shift_out.val().index());
+        self.s11_wide.d.next = self.w_wide.val();
         self.out.next = self.s11_out.q.val();
+        self.wide.next = self.s11_wide.q.val();
     }
 }
 

@@ -4,7 +4,7 @@
 //! exact: `a = t00·(2^F − u) + t10·u`, `b = t01·(2^F − u) + t11·u` (U(8+F), no rounding), then
 //! `r = round_half_up((a·(2^F − v) + b·v), 2F)` (U8). The rtl computes the same value as `a·2^F + (b − a)·v`.
 
-use crate::fixed::round_half_up;
+use crate::fixed::{round_half_up, truncate};
 use crate::unit::UnitModel;
 
 pub const F: u32 = 8;
@@ -22,10 +22,22 @@ crate::ports! {
 
 /// One channel with `f` blend-factor bits; `u`, `v` in 0..2^f (weight of the second texel is u/2^f).
 pub fn exact_channel(t00: i64, t10: i64, t01: i64, t11: i64, u: i64, v: i64, f: u32) -> i64 {
+    exact_channel_with(t00, t10, t01, t11, u, v, f, 0)
+}
+
+/// The unit's value before its rounding, with `d` bits dropped between its two stages: `a' = a >> d`,
+/// `b' = b >> d` (truncate), `a'·2^f + (b' − a')·v` = `a'·(2^f − v) + b'·v` (U(8 + 2f − d), 2f − d fraction bits).
+/// The rtl's `BilinearUnit<W, F, D>` output `wide`.
+pub fn exact_wide(t00: i64, t10: i64, t01: i64, t11: i64, u: i64, v: i64, f: u32, d: u32) -> i64 {
     let one = 1i64 << f;
-    let a = t00 * (one - u) + t10 * u; // U(8+f)
-    let b = t01 * (one - u) + t11 * u; // U(8+f)
-    round_half_up(a * (one - v) + b * v, 2 * f) // U(8+2f) → U8, round half up
+    let a = truncate(t00 * (one - u) + t10 * u, d); // U(8+f) → U(8+f−d), floor
+    let b = truncate(t01 * (one - u) + t11 * u, d); // U(8+f) → U(8+f−d), floor
+    a * (one - v) + b * v // U(8+2f−d), exact
+}
+
+/// The unit's output `out`: `exact_wide` rounded half up to the texels' integer scale (U8).
+pub fn exact_channel_with(t00: i64, t10: i64, t01: i64, t11: i64, u: i64, v: i64, f: u32, d: u32) -> i64 {
+    round_half_up(exact_wide(t00, t10, t01, t11, u, v, f, d), 2 * f - d) // U(8+2f−d) → U8, round half up
 }
 
 pub fn ideal_channel(t00: f64, t10: f64, t01: f64, t11: f64, u: f64, v: f64) -> f64 {
