@@ -67,7 +67,7 @@ impl Scene {
         let n = t as f64;
         let heights: Vec<f64> =
             (0..t * t).map(|k| height(((k % t) as f64 + 0.5) / n, ((k / t) as f64 + 0.5) / n) * self.relief).collect();
-        vectors::height::normals(&heights, t, t)
+        vectors::normal_map::normals(&heights, t, t)
     }
 
     /// The ideal blend of the material's colours at α (8-bit units, real).

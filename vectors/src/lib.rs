@@ -9,7 +9,7 @@ pub mod shared {
     pub mod dot3;
     pub mod fixed;
     pub mod gloss;
-    pub mod height;
+    pub mod normal_map;
     pub mod normalise;
 }
 
@@ -32,6 +32,16 @@ pub mod polar {
     pub mod sincos;
 }
 
+/// Seed 001: normals generated from height maps on the texture filter's bilinear units.
+pub mod height {
+    pub mod blend_adjust;
+    pub mod height_addr;
+    pub mod height_normal;
+    pub mod height_pipeline;
+    pub mod replicate;
+    pub mod tangent;
+}
+
 pub mod csv;
 pub mod stats;
 pub mod unit;
@@ -39,5 +49,6 @@ pub mod unit;
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, light_iter};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
-pub use shared::{bilinear, blend, dot3, fixed, gloss, height, normalise};
+pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
+pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent};
 pub use unit::{Port, UnitModel, UNITS};

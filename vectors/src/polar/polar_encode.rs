@@ -80,7 +80,7 @@ pub fn encode_normal(sc: Scale, n: [f64; 3]) -> (i64, i64) {
 /// as the normal-map tools do it: central differences with wrap (`height::normals`), then `encode_normal`.
 pub fn encode_height_map(sc: Scale, heights: &[u8], w: usize, h: usize, relief: f64) -> Vec<(i64, i64)> {
     let hf: Vec<f64> = heights.iter().map(|&x| x as f64 / 255.0 * relief).collect();
-    crate::height::normals(&hf, w, h).into_iter().map(|n| encode_normal(sc, n)).collect()
+    crate::normal_map::normals(&hf, w, h).into_iter().map(|n| encode_normal(sc, n)).collect()
 }
 
 /// (S, R) → the unit normal it stands for.

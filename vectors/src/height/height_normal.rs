@@ -1,0 +1,47 @@
+//! `height_normal`: seed 001's normal unit [156]. The tangents T1 = (1, Tang1y, 0) and T2 = (0, Tang2y, 1) in texel
+//! units give N = T2 × T1 = (−∂h/∂u, 1, −∂h/∂v). With heights in quarter texels (8-bit UQ6.2) and Tang = ½ ∂H/∂u
+//! (H in height LSB), ∂h/∂u = Tang/2, so N ∝ (−k·Tang1y, 2, −k·Tang2y), where k is the per-model scale factor of ¶82
+//! (UQ4.4, 16 = 1.0: the map's own relief). The sign is the seed's left open: this one points out of a raised bump,
+//! so the side of a bump facing the light is lit (proved on an analytic bump in the tests).
+//!
+//! exact: N = 7·(−k·t1, 2, −k·t2) with 16 fraction bits (S32; 7 = 8 − 1, a shift and a subtract), then one shift
+//! s for all three, the smallest that brings the largest magnitude to ≤ 511 after rounding, magnitudes rounded half up: S10 components
+//! for the shared `normalise` unit, which is scale-free. The factor 7 puts a flat map's (0, 14·2^16, 0) at
+//! (0, 448, 0), which the normaliser returns as exactly (0, 1024, 0); a power of two such as 256 sits at the bottom
+//! of a seed-table bin and comes out as 1023.
+
+use crate::height::tangent::FRAC;
+
+/// Fraction bits of the scale factor.
+pub const SCALE_FRAC: u32 = 4;
+
+crate::ports! {
+    inputs: [
+        t1: s 21, t2: s 21, scale: u 8,
+    ],
+    outputs: [
+        n_x: s 10, n_y: s 10, n_z: s 10,
+    ],
+}
+
+/// The unnormalised normal before the shift, 7·N: S32 with FRAC + SCALE_FRAC fraction bits.
+pub fn wide(t1: i64, t2: i64, scale: i64) -> [i64; 3] {
+    let k7 = 7 * scale; // U11, exact
+    [-(k7 * t1), 14 << (FRAC + SCALE_FRAC), -(k7 * t2)] // S21 × U11 → S32, exact; 7·2.0 in the same units
+}
+
+/// N as three S10 components: one right shift for all three (the magnitudes truncated), the largest ≤ 511.
+pub fn exact(t1: i64, t2: i64, scale: i64) -> [i64; 3] {
+    let n = wide(t1, t2, scale);
+    let m = n.iter().map(|x| x.abs()).max().unwrap_or(0);
+    // block floating point: the smallest shift whose rounded largest magnitude is ≤ 511
+    let s = (0..32).find(|&s| crate::fixed::round_half_up(m, s) <= 511).unwrap_or(31);
+    n.map(|x| x.signum() * crate::fixed::round_half_up(x.abs(), s)) // magnitude >> s, rounded half up; sign restored: S10
+}
+
+/// The unit normal in reals, from the tangents in height LSB and the scale as a real factor.
+pub fn ideal(t1: f64, t2: f64, k: f64) -> [f64; 3] {
+    let n = [-k * t1, 2.0, -k * t2];
+    let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    n.map(|c| c / l)
+}
