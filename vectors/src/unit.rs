@@ -170,6 +170,9 @@ macro_rules! unit_table {
                     ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];
+                height_addr: $crate::height_addr::MODEL, rtl::height_addr::HeightAddr, [];
+                replicate: $crate::replicate::MODEL, rtl::replicate::Replicate, [];
+                blend_adjust: $crate::blend_adjust::MODEL, rtl::blend_adjust::BlendAdjust, [];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];
