@@ -173,6 +173,7 @@ macro_rules! unit_table {
                 height_addr: $crate::height_addr::MODEL, rtl::height_addr::HeightAddr, [];
                 replicate: $crate::replicate::MODEL, rtl::replicate::Replicate, [];
                 blend_adjust: $crate::blend_adjust::MODEL, rtl::blend_adjust::BlendAdjust, [];
+                tangent: $crate::tangent::MODEL, rtl::tangent::Tangent, [];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];

@@ -86,6 +86,109 @@ impl<const N: usize> Logic for SmMul<N> {
     }
 }
 
+/// Clock edges from x and w to the product of `SmMulWide`.
+pub const WIDE_LATENCY: usize = 4;
+
+/// `SmMulWide`: the same for a magnitude wider than 16 bits, |x| < 2^32, as two 16 × 16 products: |x| = hi·2^16 + lo,
+/// |x|·w = lo·w + (hi·w)·2^16. The caller bounds |x|·w < 2^32. Four stages: |x| split; the operand registers;
+/// both products; their sum.
+#[derive(LogicBlock)]
+pub struct SmMulWide<const N: usize> {
+    pub clock: Signal<In, Clock>,
+    /// Two's complement, N bits (N ≤ 33).
+    pub x: Signal<In, Bits<N>>,
+    /// Unsigned weight.
+    pub w: Signal<In, Bits<16>>,
+    /// |x|·w, WIDE_LATENCY clocks later (U32).
+    pub p: Signal<Out, Bits<32>>,
+    /// The sign of x beside it.
+    pub neg: Signal<Out, Bit>,
+    sign_bit: Constant<Bits<N>>, // 2^(N−1)
+    w_abs: Signal<Local, Bits<N>>,
+    w_abs32: Signal<Local, Bits<32>>,
+    w_hi16: Signal<Local, Bits<32>>,
+    s1_lo: DFF<Bits<16>>,
+    s1_hi: DFF<Bits<16>>,
+    s1_w: DFF<Bits<16>>,
+    s1_n: DFF<Bit>,
+    mop_lo: DFF<Bits<16>>,
+    mop_hi: DFF<Bits<16>>,
+    mop_wl: DFF<Bits<16>>,
+    mop_wh: DFF<Bits<16>>,
+    s2_n: DFF<Bit>,
+    s3_pl: DFF<Bits<32>>,
+    s3_ph: DFF<Bits<32>>,
+    s3_n: DFF<Bit>,
+    s4_p: DFF<Bits<32>>,
+    s4_n: DFF<Bit>,
+}
+
+impl<const N: usize> Default for SmMulWide<N> {
+    fn default() -> Self {
+        assert!((2..=33).contains(&N), "SmMulWide: x is 2 to 33 bits, not {N}");
+        Self {
+            clock: Default::default(),
+            x: Default::default(),
+            w: Default::default(),
+            p: Default::default(),
+            neg: Default::default(),
+            sign_bit: Constant::new(Bits::from(1u64 << (N - 1))),
+            w_abs: Default::default(),
+            w_abs32: Default::default(),
+            w_hi16: Default::default(),
+            s1_lo: Default::default(),
+            s1_hi: Default::default(),
+            s1_w: Default::default(),
+            s1_n: Default::default(),
+            mop_lo: Default::default(),
+            mop_hi: Default::default(),
+            mop_wl: Default::default(),
+            mop_wh: Default::default(),
+            s2_n: Default::default(),
+            s3_pl: Default::default(),
+            s3_ph: Default::default(),
+            s3_n: Default::default(),
+            s4_p: Default::default(),
+            s4_n: Default::default(),
+        }
+    }
+}
+
+impl<const N: usize> Logic for SmMulWide<N> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, s1_lo, s1_hi, s1_w, s1_n, mop_lo, mop_hi, mop_wl, mop_wh);
+        clock!(self, clock, s2_n, s3_pl, s3_ph, s3_n, s4_p, s4_n);
+        // stage 1: |x| (N bits), split into two 16-bit halves; the sign
+        if (self.x.val() & self.sign_bit.val()).any() {
+            self.w_abs.next = !self.x.val() + 1;
+        } else {
+            self.w_abs.next = self.x.val();
+        }
+        self.w_abs32.next = bit_cast::<32, N>(self.w_abs.val()); // |x| < 2^32: U32, exact
+        self.s1_lo.d.next = self.w_abs32.val().get_bits::<16>(0); // the low half, a split
+        self.s1_hi.d.next = self.w_abs32.val().get_bits::<16>(16); // the high half, a split
+        self.s1_w.d.next = self.w.val();
+        self.s1_n.d.next = (self.x.val() & self.sign_bit.val()).any();
+        // stage 2: each DSP's operands, registered alone (the weight once per multiplier)
+        self.mop_lo.d.next = self.s1_lo.q.val();
+        self.mop_hi.d.next = self.s1_hi.q.val();
+        self.mop_wl.d.next = self.s1_w.q.val();
+        self.mop_wh.d.next = self.s1_w.q.val();
+        self.s2_n.d.next = self.s1_n.q.val();
+        // stage 3: U16 × U16 → U32, both exact
+        self.s3_pl.d.next = self.mop_lo.q.val() * self.mop_wl.q.val();
+        self.s3_ph.d.next = self.mop_hi.q.val() * self.mop_wh.q.val();
+        self.s3_n.d.next = self.s2_n.q.val();
+        // stage 4: lo·w + hi·w·2^16 (U32: the caller's bound |x|·w < 2^32 makes the bits shifted out zero)
+        self.w_hi16.next = self.s3_ph.q.val() << 16;
+        self.s4_p.d.next = self.s3_pl.q.val() + self.w_hi16.val(); // U32, exact under the bound
+        self.s4_n.d.next = self.s3_n.q.val();
+        self.p.next = self.s4_p.q.val();
+        self.neg.next = self.s4_n.q.val();
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -120,6 +223,29 @@ mod tests {
         }
         let pairs: Vec<(i64, u64)> = vec![(-65_280, 255), (65_280, 255), (-65_535, 65_535), (0, 7)];
         let got = run::<32>(&pairs);
+        for ((x, w), (p, n)) in pairs.iter().zip(got) {
+            assert_eq!((p, n), ((x.unsigned_abs() * w), *x < 0), "x {x} w {w}");
+        }
+    }
+
+    #[test]
+    fn the_wide_multiplier_takes_magnitudes_beyond_16_bits() {
+        let pairs: Vec<(i64, u64)> = vec![(-(1 << 21) + 1, 255), ((1 << 21) - 1, 255), (-1_048_576, 1785), (65_536, 1), (0, 9), (-7, 3)];
+        let mut uut = SmMulWide::<22>::default();
+        uut.connect_all();
+        let mut got = vec![];
+        for k in 0..pairs.len() + WIDE_LATENCY - 1 {
+            let (x, w) = pairs.get(k).copied().unwrap_or((0, 0));
+            uut.x.next = Bits::from((x as u64) & ((1u64 << 22) - 1));
+            uut.w.next = Bits::from(w);
+            uut.clock.next = Clock { clk: false };
+            assert!(simulate(&mut uut, 1000));
+            uut.clock.next = Clock { clk: true };
+            assert!(simulate(&mut uut, 1000));
+            if k + 1 >= WIDE_LATENCY {
+                got.push((uut.p.val().to_u64(), uut.neg.val()));
+            }
+        }
         for ((x, w), (p, n)) in pairs.iter().zip(got) {
             assert_eq!((p, n), ((x.unsigned_abs() * w), *x < 0), "x {x} w {w}");
         }
