@@ -45,6 +45,7 @@ pub mod polar {
 pub mod height {
     pub mod blend_adjust;
     pub mod height_addr;
+    pub mod height_normal;
     pub mod replicate;
     pub mod tangent;
 }
@@ -53,7 +54,7 @@ pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
-pub use height::{blend_adjust, height_addr, replicate, tangent};
+pub use height::{blend_adjust, height_addr, height_normal, replicate, tangent};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
 pub use stream::StreamUnit;

@@ -174,6 +174,7 @@ macro_rules! unit_table {
                 replicate: $crate::replicate::MODEL, rtl::replicate::Replicate, [];
                 blend_adjust: $crate::blend_adjust::MODEL, rtl::blend_adjust::BlendAdjust, [];
                 tangent: $crate::tangent::MODEL, rtl::tangent::Tangent, [];
+                height_normal: $crate::height_normal::MODEL, rtl::height_normal::HeightNormal, [];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];

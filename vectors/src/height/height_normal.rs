@@ -11,6 +11,7 @@
 //! of a seed-table bin and comes out as 1023.
 
 use crate::height::tangent::FRAC;
+use crate::unit::{Accuracy, UnitModel};
 
 /// Fraction bits of the scale factor.
 pub const SCALE_FRAC: u32 = 4;
@@ -45,3 +46,39 @@ pub fn ideal(t1: f64, t2: f64, k: f64) -> [f64; 3] {
     let l = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
     n.map(|c| c / l)
 }
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    exact(i[input::t1], i[input::t2], i[input::scale]).to_vec()
+}
+
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    let (lo, hi) = (-(1i64 << 20), (1i64 << 20) - 1);
+    let mut v = vec![];
+    // flat (zero tangents, any scale; scale 0, any tangents): (0, 448, 0)
+    for s in [0, 16, 255] {
+        v.push(vec![0, 0, s]);
+    }
+    v.push(vec![hi, lo, 0]);
+    // the largest scale on the largest tangents, both signs: the shift at its largest
+    for (t1, t2) in [(hi, hi), (lo, lo), (hi, lo), (lo, 0), (0, hi), (1, -1)] {
+        v.push(vec![t1, t2, 255]);
+        v.push(vec![t1, t2, 1]);
+    }
+    // where rounding at the first shift reaches 512 and the shift grows by one: 7k·t in [511.5, 512)·2^s0
+    v.push(vec![601_000, 0, 255]);
+    v.push(vec![74_836, 0, 16]);
+    v
+}
+
+/// Random tangents and scales: the S10 vector's angle to the ideal normal (degrees).
+fn accuracy(samples: usize, seed: u64) -> Vec<Accuracy> {
+    vec![Accuracy::over_random("degrees, random tangents and scales", samples, seed, random_inputs, |v| {
+        let (t1, t2, k) = (v[input::t1], v[input::t2], v[input::scale]);
+        let q = (1 << FRAC) as f64;
+        let e = exact(t1, t2, k).map(|c| c as f64);
+        vec![crate::stats::angle_deg(e, ideal(t1 as f64 / q, t2 as f64 / q, k as f64 / (1 << SCALE_FRAC) as f64))]
+    })]
+}
+
+pub static MODEL: UnitModel =
+    UnitModel::new("height_normal", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
