@@ -46,6 +46,7 @@ pub mod height {
     pub mod blend_adjust;
     pub mod height_addr;
     pub mod height_normal;
+    pub mod height_pipeline;
     pub mod replicate;
     pub mod tangent;
 }
@@ -54,7 +55,7 @@ pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
-pub use height::{blend_adjust, height_addr, height_normal, replicate, tangent};
+pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
 pub use stream::StreamUnit;

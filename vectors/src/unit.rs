@@ -175,6 +175,13 @@ macro_rules! unit_table {
                 blend_adjust: $crate::blend_adjust::MODEL, rtl::blend_adjust::BlendAdjust, [];
                 tangent: $crate::tangent::MODEL, rtl::tangent::Tangent, [];
                 height_normal: $crate::height_normal::MODEL, rtl::height_normal::HeightNormal, [];
+                height_pipeline: $crate::height_pipeline::MODEL, rtl::height_pipeline::HeightPipeline, [
+                    ("unit$0$out", "the height path reads each bilinear unit's exact result; the rounded one is the \
+                        colour filter's"),
+                    ("unit$1$out", "as unit$0$out"),
+                    ("unit$2$out", "as unit$0$out"),
+                    ("unit$3$out", "as unit$0$out"),
+                ];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];

@@ -1,0 +1,133 @@
+//! `height_pipeline`: seed 001's normal generation (FIG. 7) from the fetched 3×3 heights, one normal per clock,
+//! built from the unit blocks themselves: replicate [152] and blend adjust [153] side by side → the four bilinear
+//! units [65–68] (`BilinearUnit<8, 9, 1>`, the colour filter's own) → tangent [155] → height_normal [156] →
+//! the shared `normalise`. The unadjusted blend factors ride beside the bilinear units to the tangent unit, the
+//! scale factor to the normal unit.
+//! Latency 41 = replicate 1 + bilinear 11 + tangent 8 + height_normal 10 + normalise 11.
+
+use crate::bilinear::{self, BilinearUnit};
+use crate::blend_adjust::{self, BlendAdjust};
+use crate::delay::Delay;
+use crate::height_normal::{self, HeightNormal};
+use crate::normalise::{self, Normalise};
+use crate::q::{Sq1_10, U8};
+use crate::replicate::{self, Replicate};
+use crate::tangent::{self, Tangent};
+use rust_hdl::prelude::*;
+
+/// Clocks from the pipeline's input to the tangent unit's and the normal unit's.
+pub const AT_TANGENT: usize = replicate::LATENCY + bilinear::LATENCY;
+pub const AT_NORMAL: usize = AT_TANGENT + tangent::LATENCY;
+pub const LATENCY: usize = AT_NORMAL + height_normal::LATENCY + normalise::LATENCY;
+// replicate and blend adjust run side by side
+const _: () = assert!(replicate::LATENCY == blend_adjust::LATENCY);
+
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct HeightPipeline: unit("height_pipeline", LATENCY) {
+        in {
+            a: U8,
+            b: U8,
+            c: U8,
+            d: U8,
+            e: U8,
+            f: U8,
+            g: U8,
+            h: U8,
+            k: U8,
+            ublend: U8,
+            vblend: U8,
+            scale: U8,
+        }
+        out {
+            norm_x: Sq1_10,
+            norm_y: Sq1_10,
+            norm_z: Sq1_10,
+        }
+        pub replicate: Replicate,
+        pub adjust: BlendAdjust,
+        pub unit: [BilinearUnit<8, 9, 1>; 4], // red, green, blue, alpha
+        pub tangent: Tangent,
+        pub normal: HeightNormal,
+        pub norm: Normalise,
+        unit_valid: Delay<Bit, { bilinear::LATENCY }>,
+        u_dly: Delay<U8, AT_TANGENT>,
+        v_dly: Delay<U8, AT_TANGENT>,
+        scale_dly: Delay<U8, AT_NORMAL>,
+    }
+}
+
+impl Logic for HeightPipeline {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, replicate, adjust, tangent, normal, norm, unit_valid, u_dly, v_dly, scale_dly);
+        for i in 0..4 {
+            self.unit[i].clock.next = self.clock.val();
+        }
+        // replicate [152] and blend adjust [153]
+        self.replicate.valid_in.next = self.valid_in.val();
+        self.replicate.a.next = self.a.val();
+        self.replicate.b.next = self.b.val();
+        self.replicate.c.next = self.c.val();
+        self.replicate.d.next = self.d.val();
+        self.replicate.e.next = self.e.val();
+        self.replicate.f.next = self.f.val();
+        self.replicate.g.next = self.g.val();
+        self.replicate.h.next = self.h.val();
+        self.replicate.k.next = self.k.val();
+        self.adjust.valid_in.next = self.valid_in.val();
+        self.adjust.ublend.next = self.ublend.val();
+        self.adjust.vblend.next = self.vblend.val();
+        // the four bilinear units [65–68]: red (U0, V0), green (U1, V0), blue (U0, V1), alpha (U1, V1) [60]
+        self.unit[0].t00.next = self.replicate.r00.val();
+        self.unit[0].t10.next = self.replicate.r10.val();
+        self.unit[0].t01.next = self.replicate.r01.val();
+        self.unit[0].t11.next = self.replicate.r11.val();
+        self.unit[0].ublend.next = self.adjust.u0.val();
+        self.unit[0].vblend.next = self.adjust.v0.val();
+        self.unit[1].t00.next = self.replicate.g00.val();
+        self.unit[1].t10.next = self.replicate.g10.val();
+        self.unit[1].t01.next = self.replicate.g01.val();
+        self.unit[1].t11.next = self.replicate.g11.val();
+        self.unit[1].ublend.next = self.adjust.u1.val();
+        self.unit[1].vblend.next = self.adjust.v0.val();
+        self.unit[2].t00.next = self.replicate.b00.val();
+        self.unit[2].t10.next = self.replicate.b10.val();
+        self.unit[2].t01.next = self.replicate.b01.val();
+        self.unit[2].t11.next = self.replicate.b11.val();
+        self.unit[2].ublend.next = self.adjust.u0.val();
+        self.unit[2].vblend.next = self.adjust.v1.val();
+        self.unit[3].t00.next = self.replicate.a00.val();
+        self.unit[3].t10.next = self.replicate.a10.val();
+        self.unit[3].t01.next = self.replicate.a01.val();
+        self.unit[3].t11.next = self.replicate.a11.val();
+        self.unit[3].ublend.next = self.adjust.u1.val();
+        self.unit[3].vblend.next = self.adjust.v1.val();
+        // both front units carry the same valid flag; it rides beside the bilinear units
+        self.unit_valid.d.next = self.replicate.valid_out.val() & self.adjust.valid_out.val();
+        // tangent [155]: the units' exact results (U25 of the 32-bit wide outputs: their range, exact)
+        self.u_dly.d.next = self.ublend.val();
+        self.v_dly.d.next = self.vblend.val();
+        self.tangent.valid_in.next = self.unit_valid.q.val();
+        self.tangent.red.next = self.unit[0].wide.val().get_bits::<25>(0); // U25, exact
+        self.tangent.green.next = self.unit[1].wide.val().get_bits::<25>(0); // U25, exact
+        self.tangent.blue.next = self.unit[2].wide.val().get_bits::<25>(0); // U25, exact
+        self.tangent.alpha.next = self.unit[3].wide.val().get_bits::<25>(0); // U25, exact
+        self.tangent.ublend.next = self.u_dly.q.val();
+        self.tangent.vblend.next = self.v_dly.q.val();
+        // normal [156], then the shared normaliser
+        self.scale_dly.d.next = self.scale.val();
+        self.normal.valid_in.next = self.tangent.valid_out.val();
+        self.normal.t1.next = self.tangent.t1.val();
+        self.normal.t2.next = self.tangent.t2.val();
+        self.normal.scale.next = self.scale_dly.q.val();
+        self.norm.valid_in.next = self.normal.valid_out.val();
+        self.norm.vec_x.next = self.normal.n_x.val();
+        self.norm.vec_y.next = self.normal.n_y.val();
+        self.norm.vec_z.next = self.normal.n_z.val();
+        self.norm_x.next = self.norm.norm_x.val();
+        self.norm_y.next = self.norm.norm_y.val();
+        self.norm_z.next = self.norm.norm_z.val();
+        self.valid_out.next = self.norm.valid_out.val();
+    }
+}
