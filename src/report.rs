@@ -15,6 +15,15 @@ pub fn accuracy(directions: usize, samples: usize) {
     for r in sim::accuracy::encoders(directions, seed).into_iter().chain(sim::accuracy::polar_encoders(directions, seed)) {
         stat_line(&r.unit, &r.metric, &r.stats);
     }
+    println!("\nheight maps (seed 001): the B-spline path against analytic surfaces, angle to the true normal in degrees");
+    println!("(float: the method in reals; codes: 8-bit UQ6.2 heights with scale k; exact: the pipeline on the codes)");
+    println!("{:<44} {:>3} {:>17} {:>17} {:>17} {:>17}", "surface", "k", "float, true h", "float, codes", "exact, codes", "exact vs float");
+    for surface in vectors::height::surfaces::all() {
+        let r = vectors::height::surfaces::measure(&surface, 4);
+        let c = |s: &ErrorStats| format!("{:.3} / {:.3}", s.mean(), s.max);
+        println!("{:<44} {:>3} {:>17} {:>17} {:>17} {:>17}", r.name, r.scale, c(&r.float_true), c(&r.float_codes), c(&r.exact), c(&r.exact_vs_float));
+    }
+    println!("(mean / max; k = 16/m where the codes hold the heights ×m)");
     println!("\nnormalise seed table and Newton steps (model; the rtl has 10 table bits, no Newton step):");
     println!("{:>11} {:>7} {:>24} {:>9}", "table bits", "Newton", "mean err (Sq1.10 LSB)", "max");
     for (t, n, s) in sim::accuracy::normaliser_tradeoff(samples, 3) {

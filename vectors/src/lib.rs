@@ -39,6 +39,7 @@ pub mod height {
     pub mod height_normal;
     pub mod height_pipeline;
     pub mod replicate;
+    pub mod surfaces;
     pub mod tangent;
 }
 

@@ -1,14 +1,16 @@
 //! `height_normal`: seed 001's normal unit [156]: N = 7·(−k·Tang1y, 2, −k·Tang2y) (16 fraction bits), brought to
 //! S10 for the shared normaliser by one shift for all three components, the smallest that keeps the largest rounded
-//! magnitude ≤ 511. See `vectors::height_normal`. Latency 10: 7k; the two `SmMulWide`s; the largest magnitude; its
-//! leading one; the shift (one more if the rounding carries); the three magnitudes shifted and rounded; the signs.
+//! magnitude ≤ 511. See `vectors::height_normal`. Latency 12: 7k; the two `SmMulWide`s; the larger product; the
+//! largest magnitude; the
+//! shift from its leading one (one more where rounding carries, read off its top ten bits, no shifter); 2^(s−1);
+//! the three magnitudes + 2^(s−1); >> s; the signs.
 
 use crate::delay::Delay;
 use crate::q::U8;
 use crate::sm_mul::{self, SmMulWide};
 use rust_hdl::prelude::*;
 
-pub const LATENCY: usize = 6 + sm_mul::WIDE_LATENCY;
+pub const LATENCY: usize = 8 + sm_mul::WIDE_LATENCY;
 
 crate::stream_block! {
     #[derive(Default)]
@@ -30,51 +32,54 @@ crate::stream_block! {
         // stages 2–5: 7k·|t| < 1785·2^20 < 2^31 (U31 in 32), with t's sign
         mul1: SmMulWide<21>,
         mul2: SmMulWide<21>,
-        // stage 6: the largest magnitude of (7k·|t1|, 14·2^16, 7k·|t2|), U31 in 32; N's signs (x, z negative where
-        // the tangent is positive: N = −7k·t)
+        // stage 5b: the larger of the two products; N's signs (x, z negative where the tangent is positive: N = −7k·t)
+        s5b_m12: DFF<Bits<32>>,
+        s5b_p1: DFF<Bits<32>>,
+        s5b_p2: DFF<Bits<32>>,
+        s5b_n1: DFF<Bit>,
+        s5b_n2: DFF<Bit>,
+        // stage 6: the largest magnitude of (7k·|t1|, 14·2^16, 7k·|t2|), U31 in 32
         s6_m: DFF<Bits<32>>,
         s6_p1: DFF<Bits<32>>,
         s6_p2: DFF<Bits<32>>,
         s6_n1: DFF<Bit>,
         s6_n2: DFF<Bit>,
-        // stage 7: s0 = (the largest's leading one) − 8, 11..22: m >> s0 ∈ 256..511
-        s7_s0: DFF<Bits<5>>,
-        s7_m: DFF<Bits<32>>,
+        // stage 7: the shift s, 11..23: the largest rounded at s is ≤ 511
+        s7_s: DFF<Bits<5>>,
         s7_p1: DFF<Bits<32>>,
         s7_p2: DFF<Bits<32>>,
         s7_n1: DFF<Bit>,
         s7_n2: DFF<Bit>,
-        // stage 8: s = s0, or s0 + 1 where rounding m at s0 reaches 512
+        // stage 8: 2^(s−1)
+        s8_half: DFF<Bits<32>>,
         s8_s: DFF<Bits<5>>,
         s8_p1: DFF<Bits<32>>,
         s8_p2: DFF<Bits<32>>,
         s8_n1: DFF<Bit>,
         s8_n2: DFF<Bit>,
-        // stage 9: the three magnitudes at s, rounded half up: ≤ 511 (U9 in 10)
-        s9_q1: DFF<Bits<10>>,
-        s9_qy: DFF<Bits<10>>,
-        s9_q2: DFF<Bits<10>>,
+        // stage 9: the magnitudes + 2^(s−1)
+        s9_a1: DFF<Bits<32>>,
+        s9_ay: DFF<Bits<32>>,
+        s9_a2: DFF<Bits<32>>,
+        s9_s: DFF<Bits<5>>,
         s9_n1: DFF<Bit>,
         s9_n2: DFF<Bit>,
-        // stage 10: the signs: S10
-        s10_x: DFF<Bits<10>>,
-        s10_y: DFF<Bits<10>>,
-        s10_z: DFF<Bits<10>>,
+        // stage 10: >> s, ≤ 511 (U9 in 10)
+        s10_q1: DFF<Bits<10>>,
+        s10_qy: DFF<Bits<10>>,
+        s10_q2: DFF<Bits<10>>,
+        s10_n1: DFF<Bit>,
+        s10_n2: DFF<Bit>,
+        // stage 11: the signs: S10
+        s11_x: DFF<Bits<10>>,
+        s11_y: DFF<Bits<10>>,
+        s11_z: DFF<Bits<10>>,
         valid: Delay<Bit, LATENCY>,
         w_k: Signal<Local, Bits<16>>,
         w_k8: Signal<Local, Bits<16>>,
         w_ny: Signal<Local, Bits<32>>,
-        w_m12: Signal<Local, Bits<32>>,
         w_one: Signal<Local, Bits<32>>,
-        w_s0m1: Signal<Local, Bits<5>>,
-        w_half0: Signal<Local, Bits<32>>,
-        w_r0: Signal<Local, Bits<32>>,
         w_sm1: Signal<Local, Bits<5>>,
-        w_half: Signal<Local, Bits<32>>,
-        w_q0: Signal<Local, Bits<32>>,
-        w_a1: Signal<Local, Bits<32>>,
-        w_ay: Signal<Local, Bits<32>>,
-        w_a2: Signal<Local, Bits<32>>,
         w_r1: Signal<Local, Bits<32>>,
         w_ry: Signal<Local, Bits<32>>,
         w_r2: Signal<Local, Bits<32>>,
@@ -84,9 +89,10 @@ crate::stream_block! {
 impl Logic for HeightNormal {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_k7, s1_t1, s1_t2, s6_m, s6_p1, s6_p2, s6_n1, s6_n2, s7_s0, s7_m, s7_p1, s7_p2);
-        dff_setup!(self, clock, s7_n1, s7_n2, s8_s, s8_p1, s8_p2, s8_n1, s8_n2, s9_q1, s9_qy, s9_q2, s9_n1, s9_n2);
-        dff_setup!(self, clock, s10_x, s10_y, s10_z);
+        dff_setup!(self, clock, s1_k7, s1_t1, s1_t2, s6_m, s6_p1, s6_p2, s6_n1, s6_n2, s7_s, s7_p1, s7_p2, s7_n1);
+        dff_setup!(self, clock, s7_n2, s8_half, s8_s, s8_p1, s8_p2, s8_n1, s8_n2, s9_a1, s9_ay, s9_a2, s9_s, s9_n1);
+        dff_setup!(self, clock, s5b_m12, s5b_p1, s5b_p2, s5b_n1, s5b_n2);
+        dff_setup!(self, clock, s9_n2, s10_q1, s10_qy, s10_q2, s10_n1, s10_n2, s11_x, s11_y, s11_z);
         clock!(self, clock, mul1, mul2, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1: 7k = 8k − k, U11, exact
@@ -100,97 +106,144 @@ impl Logic for HeightNormal {
         self.mul1.w.next = self.s1_k7.q.val();
         self.mul2.x.next = self.s1_t2.q.val();
         self.mul2.w.next = self.s1_k7.q.val();
-        // stage 6: the largest of the three magnitudes; N_x = −7k·t1 is negative where t1 is positive
+        // stage 5b: the larger product; N_x = −7k·t1 is negative where t1 is positive
         self.w_ny.next = 917_504.into(); // N_y = 7·2 with 16 fraction bits = 14·2^16
         if self.mul1.p.val() > self.mul2.p.val() {
-            self.w_m12.next = self.mul1.p.val();
+            self.s5b_m12.d.next = self.mul1.p.val();
         } else {
-            self.w_m12.next = self.mul2.p.val();
+            self.s5b_m12.d.next = self.mul2.p.val();
         }
-        if self.w_m12.val() > self.w_ny.val() {
-            self.s6_m.d.next = self.w_m12.val();
+        self.s5b_p1.d.next = self.mul1.p.val();
+        self.s5b_p2.d.next = self.mul2.p.val();
+        self.s5b_n1.d.next = !self.mul1.neg.val();
+        self.s5b_n2.d.next = !self.mul2.neg.val();
+        // stage 6: the largest of the three magnitudes
+        if self.s5b_m12.q.val() > self.w_ny.val() {
+            self.s6_m.d.next = self.s5b_m12.q.val();
         } else {
             self.s6_m.d.next = self.w_ny.val();
         }
-        self.s6_p1.d.next = self.mul1.p.val();
-        self.s6_p2.d.next = self.mul2.p.val();
-        self.s6_n1.d.next = !self.mul1.neg.val();
-        self.s6_n2.d.next = !self.mul2.neg.val();
-        // stage 7: the leading one of m (bit 19 at least: m ≥ 14·2^16), s0 = its position − 8 (a priority chain)
+        self.s6_p1.d.next = self.s5b_p1.q.val();
+        self.s6_p2.d.next = self.s5b_p2.q.val();
+        self.s6_n1.d.next = self.s5b_n1.q.val();
+        self.s6_n2.d.next = self.s5b_n2.q.val();
+        // stage 7: the shift s: the leading one of m is at p ≥ 19 (m ≥ 14·2^16), so m >> (p − 8) ∈ 256..511; rounding
+        // at p − 8 reaches 512 exactly when the ten bits p..p − 9 are all ones, and then s = p − 7 (a priority chain)
         if self.s6_m.q.val().get_bit(30) {
-            self.s7_s0.d.next = 22.into();
+            if self.s6_m.q.val().get_bits::<10>(21).all() {
+                self.s7_s.d.next = 23.into();
+            } else {
+                self.s7_s.d.next = 22.into();
+            }
         } else if self.s6_m.q.val().get_bit(29) {
-            self.s7_s0.d.next = 21.into();
+            if self.s6_m.q.val().get_bits::<10>(20).all() {
+                self.s7_s.d.next = 22.into();
+            } else {
+                self.s7_s.d.next = 21.into();
+            }
         } else if self.s6_m.q.val().get_bit(28) {
-            self.s7_s0.d.next = 20.into();
+            if self.s6_m.q.val().get_bits::<10>(19).all() {
+                self.s7_s.d.next = 21.into();
+            } else {
+                self.s7_s.d.next = 20.into();
+            }
         } else if self.s6_m.q.val().get_bit(27) {
-            self.s7_s0.d.next = 19.into();
+            if self.s6_m.q.val().get_bits::<10>(18).all() {
+                self.s7_s.d.next = 20.into();
+            } else {
+                self.s7_s.d.next = 19.into();
+            }
         } else if self.s6_m.q.val().get_bit(26) {
-            self.s7_s0.d.next = 18.into();
+            if self.s6_m.q.val().get_bits::<10>(17).all() {
+                self.s7_s.d.next = 19.into();
+            } else {
+                self.s7_s.d.next = 18.into();
+            }
         } else if self.s6_m.q.val().get_bit(25) {
-            self.s7_s0.d.next = 17.into();
+            if self.s6_m.q.val().get_bits::<10>(16).all() {
+                self.s7_s.d.next = 18.into();
+            } else {
+                self.s7_s.d.next = 17.into();
+            }
         } else if self.s6_m.q.val().get_bit(24) {
-            self.s7_s0.d.next = 16.into();
+            if self.s6_m.q.val().get_bits::<10>(15).all() {
+                self.s7_s.d.next = 17.into();
+            } else {
+                self.s7_s.d.next = 16.into();
+            }
         } else if self.s6_m.q.val().get_bit(23) {
-            self.s7_s0.d.next = 15.into();
+            if self.s6_m.q.val().get_bits::<10>(14).all() {
+                self.s7_s.d.next = 16.into();
+            } else {
+                self.s7_s.d.next = 15.into();
+            }
         } else if self.s6_m.q.val().get_bit(22) {
-            self.s7_s0.d.next = 14.into();
+            if self.s6_m.q.val().get_bits::<10>(13).all() {
+                self.s7_s.d.next = 15.into();
+            } else {
+                self.s7_s.d.next = 14.into();
+            }
         } else if self.s6_m.q.val().get_bit(21) {
-            self.s7_s0.d.next = 13.into();
+            if self.s6_m.q.val().get_bits::<10>(12).all() {
+                self.s7_s.d.next = 14.into();
+            } else {
+                self.s7_s.d.next = 13.into();
+            }
         } else if self.s6_m.q.val().get_bit(20) {
-            self.s7_s0.d.next = 12.into();
+            if self.s6_m.q.val().get_bits::<10>(11).all() {
+                self.s7_s.d.next = 13.into();
+            } else {
+                self.s7_s.d.next = 12.into();
+            }
+        } else if self.s6_m.q.val().get_bits::<10>(10).all() {
+            self.s7_s.d.next = 12.into();
         } else {
-            self.s7_s0.d.next = 11.into();
+            self.s7_s.d.next = 11.into();
         }
-        self.s7_m.d.next = self.s6_m.q.val();
         self.s7_p1.d.next = self.s6_p1.q.val();
         self.s7_p2.d.next = self.s6_p2.q.val();
         self.s7_n1.d.next = self.s6_n1.q.val();
         self.s7_n2.d.next = self.s6_n2.q.val();
-        // stage 8: m rounded half up at s0; if that reaches 512 the shift is s0 + 1 (saturate the shift, not the value)
+        // stage 8: the rounding constant 2^(s−1) (s − 1 ≥ 10)
         self.w_one.next = 1.into();
-        self.w_s0m1.next = self.s7_s0.q.val() - 1; // s0 − 1 ≥ 10: U5, exact
-        self.w_half0.next = self.w_one.val() << self.w_s0m1.val(); // 2^(s0−1): U32, exact
-        self.w_r0.next = self.s7_m.q.val() + self.w_half0.val(); // < 2^31 + 2^21: U32, exact
-        self.w_q0.next = self.w_r0.val() >> self.s7_s0.q.val(); // m rounded at s0: ≤ 512, exact
-        if self.w_q0.val() > 511 {
-            self.s8_s.d.next = self.s7_s0.q.val() + 1; // ≤ 23: U5, exact
-        } else {
-            self.s8_s.d.next = self.s7_s0.q.val();
-        }
+        self.w_sm1.next = self.s7_s.q.val() - 1; // U5, exact
+        self.s8_half.d.next = self.w_one.val() << self.w_sm1.val(); // 2^(s−1): U32, exact
+        self.s8_s.d.next = self.s7_s.q.val();
         self.s8_p1.d.next = self.s7_p1.q.val();
         self.s8_p2.d.next = self.s7_p2.q.val();
         self.s8_n1.d.next = self.s7_n1.q.val();
         self.s8_n2.d.next = self.s7_n2.q.val();
-        // stage 9: each magnitude + 2^(s−1), >> s (round half up): ≤ 511 by the choice of s
-        self.w_sm1.next = self.s8_s.q.val() - 1; // s − 1 ≥ 10: U5, exact
-        self.w_half.next = self.w_one.val() << self.w_sm1.val(); // 2^(s−1): U32, exact
-        self.w_a1.next = self.s8_p1.q.val() + self.w_half.val(); // < 2^31 + 2^22: U32, exact
-        self.w_ay.next = self.w_ny.val() + self.w_half.val(); // U32, exact
-        self.w_a2.next = self.s8_p2.q.val() + self.w_half.val(); // U32, exact
-        self.w_r1.next = self.w_a1.val() >> self.s8_s.q.val(); // ≤ 511 (U9 in 32), rounded half up
-        self.w_ry.next = self.w_ay.val() >> self.s8_s.q.val(); // ≤ 511, rounded half up
-        self.w_r2.next = self.w_a2.val() >> self.s8_s.q.val(); // ≤ 511, rounded half up
-        self.s9_q1.d.next = self.w_r1.val().get_bits::<10>(0); // U9 in 10: exact
-        self.s9_qy.d.next = self.w_ry.val().get_bits::<10>(0); // U9 in 10: exact
-        self.s9_q2.d.next = self.w_r2.val().get_bits::<10>(0); // U9 in 10: exact
+        // stage 9: each magnitude + 2^(s−1) (< 2^31 + 2^22: U32, exact)
+        self.s9_a1.d.next = self.s8_p1.q.val() + self.s8_half.q.val();
+        self.s9_ay.d.next = self.w_ny.val() + self.s8_half.q.val();
+        self.s9_a2.d.next = self.s8_p2.q.val() + self.s8_half.q.val();
+        self.s9_s.d.next = self.s8_s.q.val();
         self.s9_n1.d.next = self.s8_n1.q.val();
         self.s9_n2.d.next = self.s8_n2.q.val();
-        // stage 10: the signs back: S10 (−511..511, exact)
-        if self.s9_n1.q.val() {
-            self.s10_x.d.next = !self.s9_q1.q.val() + 1;
+        // stage 10: >> s: the magnitudes rounded half up, ≤ 511 by the choice of s (U9 in 10, exact)
+        self.w_r1.next = self.s9_a1.q.val() >> self.s9_s.q.val();
+        self.w_ry.next = self.s9_ay.q.val() >> self.s9_s.q.val();
+        self.w_r2.next = self.s9_a2.q.val() >> self.s9_s.q.val();
+        self.s10_q1.d.next = self.w_r1.val().get_bits::<10>(0); // ≤ 511: U9 in 10, exact
+        self.s10_qy.d.next = self.w_ry.val().get_bits::<10>(0); // ≤ 511: U9 in 10, exact
+        self.s10_q2.d.next = self.w_r2.val().get_bits::<10>(0); // ≤ 511: U9 in 10, exact
+        self.s10_n1.d.next = self.s9_n1.q.val();
+        self.s10_n2.d.next = self.s9_n2.q.val();
+        // stage 11: the signs back: S10 (−511..511, exact)
+        if self.s10_n1.q.val() {
+            self.s11_x.d.next = !self.s10_q1.q.val() + 1;
         } else {
-            self.s10_x.d.next = self.s9_q1.q.val();
+            self.s11_x.d.next = self.s10_q1.q.val();
         }
-        self.s10_y.d.next = self.s9_qy.q.val();
-        if self.s9_n2.q.val() {
-            self.s10_z.d.next = !self.s9_q2.q.val() + 1;
+        self.s11_y.d.next = self.s10_qy.q.val();
+        if self.s10_n2.q.val() {
+            self.s11_z.d.next = !self.s10_q2.q.val() + 1;
         } else {
-            self.s10_z.d.next = self.s9_q2.q.val();
+            self.s11_z.d.next = self.s10_q2.q.val();
         }
-        self.n_x.next = self.s10_x.q.val();
-        self.n_y.next = self.s10_y.q.val();
-        self.n_z.next = self.s10_z.q.val();
+        self.n_x.next = self.s11_x.q.val();
+        self.n_y.next = self.s11_y.q.val();
+        self.n_z.next = self.s11_z.q.val();
         self.valid_out.next = self.valid.q.val();
     }
 }
