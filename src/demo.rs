@@ -5,7 +5,7 @@
 //! (`sim::pipeline`); this file is the command's flow and its printing.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use sim::pipeline::{Cartesian, Pipeline, Polar, Prepared};
+use sim::pipeline::{Cartesian, Height, Pipeline, Polar, Prepared};
 use sim::shortcomings::Shortcomings;
 use sim::render::{self, Image};
 use sim::scene::Scene;
@@ -102,7 +102,8 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     // tests: the model and Verilator are the two fast paths)
     let polar = Polar { scale, pw: POLAR_PW, h: POLAR_H };
     let (cart, hemi) = (Cartesian { decode: Decode::Seed }, Cartesian { decode: Decode::HemiOct });
-    let pipes: [(&dyn Pipeline, bool); 3] = [(&cart, true), (&hemi, false), (&polar, true)];
+    let height = Height::new(&scene);
+    let pipes: [(&dyn Pipeline, bool); 4] = [(&cart, true), (&hemi, false), (&polar, true), (&height, true)];
     let runs = pipes
         .iter()
         .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
@@ -175,6 +176,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
     };
     line("pixels/s (mismatches vs model)", &|r| r.pipe.label().to_string());
     let pps = |i: &Image, m: usize| format!("{:.0} ({m})", i.pixels_per_second());
+    line("bytes per texel", &|r| format!("{}", r.pipe.bytes_per_texel()));
     line("f64 ideal (scene set-up included)", &|r| format!("{:.0}", n as f64 / r.ideal_s));
     line("bit-exact model", &|r| pps(&r.model, 0));
     line("rust-hdl (loop-driven)", &|r| r.hdl.as_ref().map(|h| pps(h, r.mism_hdl)).unwrap_or("in the tests".into()));

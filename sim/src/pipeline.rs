@@ -13,7 +13,7 @@ use synth::fpga::{Fit, Part};
 use vectors::cart_encode::{self, Encoder};
 use vectors::cart_pipeline::{self, Decode};
 use vectors::polar_encode::{self, Scale};
-use vectors::{bilinear, gloss, light_iter, polar_pipeline, UnitModel};
+use vectors::{bilinear, blend, gloss, height_addr, height_pipeline, light_iter, polar_pipeline, UnitModel};
 
 /// The f64 ideal of one pixel.
 #[derive(Clone, Copy, Debug)]
@@ -54,6 +54,10 @@ pub trait Pipeline: Sync {
     /// The unit normal the model computes for one input vector, where the pipeline has one.
     fn normal(&self, _input: &[i64]) -> Option<[f64; 3]> {
         None
+    }
+    /// Bytes of texture memory per texel of the bump source.
+    fn bytes_per_texel(&self) -> f64 {
+        2.0
     }
 }
 
@@ -284,6 +288,112 @@ impl Pipeline for Polar {
     }
 }
 
+/// Seed 001 (FIG. 7): the scene's height map itself, 8-bit UQ6.2 heights (the scale factor k of ¶82 making up the
+/// range), through the normal generator on the colour filter's bilinear units. The address unit's work (height
+/// mode: no half-texel subtraction, clamped) and the 3×3 fetch are done here, in the set-up; the shade is
+/// max(0, N·L) with the surface's one light (the light at the quad's centre), so that its error against the
+/// surface's true normal under the same light is the normal generator's alone.
+#[derive(Clone, Copy, Debug)]
+pub struct Height {
+    /// the surface's light, and the material's colours (blended by the shade)
+    pub light: [f64; 3],
+    pub src: [i64; 3],
+    pub dst: [i64; 3],
+}
+
+impl Height {
+    pub fn new(scene: &Scene) -> Height {
+        Height { light: scene.light_dir(0.5, 0.5), src: scene.src, dst: scene.dst }
+    }
+
+    /// The 8-bit heights of the scene's map (row-major, one per texel), the scale factor (UQ4.4) that brings them
+    /// back to texel units, and the true height field's gradient at a point in texel coordinates.
+    pub fn codes(scene: &Scene) -> (Vec<i64>, i64) {
+        let t = scene.tex;
+        let h: Vec<f64> =
+            (0..t * t).map(|k| crate::scene::height(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64) * scene.relief).collect();
+        let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+        // the largest power of two m that keeps (h − lo)·4·m in 8 bits; k = 16/m
+        let m = (0..=4).rev().map(|p| 1i64 << p).find(|&m| (hi - lo) * 4.0 * m as f64 <= 255.0).unwrap_or(1);
+        (h.iter().map(|x| ((x - lo) * 4.0 * m as f64).round().clamp(0.0, 255.0) as i64).collect(), 16 / m)
+    }
+
+    fn shade_of(&self, n: [f64; 3]) -> f64 {
+        255.0 * (n[0] * self.light[0] + n[1] * self.light[1] + n[2] * self.light[2]).max(0.0)
+    }
+}
+
+impl Pipeline for Height {
+    fn label(&self) -> &'static str {
+        "height map"
+    }
+    fn model(&self) -> &'static UnitModel {
+        &height_pipeline::MODEL
+    }
+    fn rtl(&self) -> &'static dyn RtlPaths {
+        &Rtl::<rtl::height_pipeline::HeightPipeline>::PATHS
+    }
+    fn units(&self) -> &'static [&'static str] {
+        &["replicate", "blend_adjust", "bilinear", "tangent", "height_normal", "normalise"]
+    }
+    fn describe(&self, scene: &Scene) -> String {
+        let (_, k) = Height::codes(scene);
+        format!("8-bit heights (k = {k}/16), B-spline normals on the bilinear units, one light per surface, N·L")
+    }
+    fn prepare(&self, scene: &Scene) -> Prepared {
+        let t = scene.tex;
+        let (codes, k) = Height::codes(scene);
+        let size_log2 = t.trailing_zeros() as i64;
+        assert!(t.is_power_of_two(), "the height path's address unit takes power-of-two textures");
+        let n = scene.size;
+        let mut p = Prepared { size: n, inputs: vec![], ideal: vec![] };
+        for py in 0..n {
+            for px in 0..n {
+                let (u, v) = ((px as f64 + 0.5) / n as f64, (py as f64 + 0.5) / n as f64);
+                // the address unit [150] in height mode, clamped: UQ8.8 texel coordinates
+                let coord = |x: f64| ((x * t as f64 * 256.0).round() as i64).clamp(0, 65_535);
+                let (i, ub) = height_addr::exact(coord(u), size_log2, false, true);
+                let (j, vb) = height_addr::exact(coord(v), size_log2, false, true);
+                // the fetch [151]: the 3×3 window around (i, j), clamped at the borders
+                let at = |di: i64, dj: i64| {
+                    let (x, z) = ((i + di).clamp(0, t as i64 - 1) as usize, (j + dj).clamp(0, t as i64 - 1) as usize);
+                    codes[z * t + x]
+                };
+                let mut x: Vec<i64> = (0..9).map(|q| at(q % 3 - 1, q / 3 - 1)).collect();
+                x.extend([ub, vb, k]);
+                p.inputs.push(x);
+                // the ideal: the true surface's normal at the pixel (its gradient in texel units), the same light
+                let (xt, zt) = (i as f64 + ub as f64 / 256.0, j as f64 + vb as f64 / 256.0);
+                let e = 1e-3;
+                let hf = |x: f64, z: f64| crate::scene::height(x / t as f64, z / t as f64) * scene.relief;
+                let (gx, gz) = ((hf(xt + e, zt) - hf(xt - e, zt)) / (2.0 * e), (hf(xt, zt + e) - hf(xt, zt - e)) / (2.0 * e));
+                let l = (gx * gx + 1.0 + gz * gz).sqrt();
+                let nrm = [-gx / l, 1.0 / l, -gz / l];
+                let shade = self.shade_of(nrm);
+                p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: self.light });
+            }
+        }
+        p
+    }
+    fn shade(&self, out: &[i64]) -> f64 {
+        use height_pipeline::output;
+        self.shade_of([out[output::norm_x], out[output::norm_y], out[output::norm_z]].map(|c| c as f64 / 1024.0))
+    }
+    fn shade_name(&self) -> &'static str {
+        "255·N·L"
+    }
+    fn colour(&self, out: &[i64]) -> [u8; 3] {
+        let a = (self.shade(out).round() as i64).clamp(0, 255);
+        std::array::from_fn(|c| blend::exact_channel(a, 1, self.src[c], self.dst[c]) as u8)
+    }
+    fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
+        Some(height_pipeline::exact_trace(input).normal.map(|c| c as f64))
+    }
+    fn bytes_per_texel(&self) -> f64 {
+        1.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -294,6 +404,7 @@ mod tests {
             Box::new(Cartesian { decode: Decode::HemiOct }),
             Box::new(Polar { scale: Scale::Seed, pw: 16, h: 1.0 }),
             Box::new(Polar { scale: Scale::Dc255, pw: 16, h: 1.0 }),
+            Box::new(Height::new(&Scene::default())),
         ]
     }
 
