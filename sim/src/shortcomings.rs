@@ -58,8 +58,10 @@ impl Shortcomings {
             let e = (a - s.surface_ideal[k]).abs();
             s.surface.add(e, || where_(k));
             let v = &setup.prepared.inputs[k];
-            let own = vectors::polar_shade::ideal(polar.scale, v[0], v[1], v[2], v[3], v[4], v[5]).clamp(0.0, 255.0);
-            s.own.add((a - vectors::power::ideal_real(own, v[6])).abs(), || where_(k));
+            use vectors::polar_pipeline::input;
+            let (sr, q, ks) = ((v[input::s], v[input::r]), v[input::q], (v[input::k1], v[input::k2], v[input::k3]));
+            let own = vectors::polar_shade::ideal(polar.scale, sr.0, sr.1, q, ks.0, ks.1, ks.2).clamp(0.0, 255.0);
+            s.own.add((a - vectors::power::ideal_real(own, v[input::pw])).abs(), || where_(k));
             if setup.straddles[k] {
                 s.wrap.add(e, || where_(k));
                 s.wrap_cartesian.add((cart.0.shade(&cart.2.outs[k]) - cart.1.ideal[k].shade).abs(), || where_(k));
