@@ -41,6 +41,7 @@ pub mod height {
     pub mod replicate;
     pub mod surfaces;
     pub mod tangent;
+    pub mod texture_filter;
 }
 
 pub mod csv;
@@ -51,5 +52,5 @@ pub mod unit;
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, light_iter};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
-pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent};
+pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent, texture_filter};
 pub use unit::{Port, UnitModel, UNITS};

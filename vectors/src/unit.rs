@@ -182,6 +182,7 @@ macro_rules! unit_table {
                     ("unit$2$out", "as unit$0$out"),
                     ("unit$3$out", "as unit$0$out"),
                 ];
+                texture_filter: $crate::texture_filter::MODEL, rtl::texture_filter::TextureFilter, [];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];
