@@ -49,6 +49,7 @@ pub mod height {
     pub mod height_pipeline;
     pub mod replicate;
     pub mod tangent;
+    pub mod tangent_to_normal;
     pub mod texture_filter;
 }
 
@@ -56,7 +57,7 @@ pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
-pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent, texture_filter};
+pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
 pub use stream::StreamUnit;

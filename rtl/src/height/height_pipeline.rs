@@ -8,17 +8,14 @@
 use crate::bilinear::{self, BilinearUnit};
 use crate::blend_adjust::{self, BlendAdjust};
 use crate::delay::Delay;
-use crate::height_normal::{self, HeightNormal};
-use crate::normalise::{self, Normalise};
 use crate::q::{Sq1_10, U8};
 use crate::replicate::{self, Replicate};
-use crate::tangent::{self, Tangent};
+use crate::tangent_to_normal::{self, TangentToNormal};
 use rust_hdl::prelude::*;
 
-/// Clocks from the pipeline's input to the tangent unit's and the normal unit's.
+/// Clocks from the pipeline's input to the tangent unit's.
 pub const AT_TANGENT: usize = replicate::LATENCY + bilinear::LATENCY;
-pub const AT_NORMAL: usize = AT_TANGENT + tangent::LATENCY;
-pub const LATENCY: usize = AT_NORMAL + height_normal::LATENCY + normalise::LATENCY;
+pub const LATENCY: usize = AT_TANGENT + tangent_to_normal::LATENCY;
 // replicate and blend adjust run side by side
 const _: () = assert!(replicate::LATENCY == blend_adjust::LATENCY);
 
@@ -47,20 +44,18 @@ crate::stream_block! {
         pub replicate: Replicate,
         pub adjust: BlendAdjust,
         pub unit: [BilinearUnit<8, 9, 1>; 4], // red, green, blue, alpha
-        pub tangent: Tangent,
-        pub normal: HeightNormal,
-        pub norm: Normalise,
+        pub back: TangentToNormal,
         unit_valid: Delay<Bit, { bilinear::LATENCY }>,
         u_dly: Delay<U8, AT_TANGENT>,
         v_dly: Delay<U8, AT_TANGENT>,
-        scale_dly: Delay<U8, AT_NORMAL>,
+        scale_dly: Delay<U8, AT_TANGENT>,
     }
 }
 
 impl Logic for HeightPipeline {
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, replicate, adjust, tangent, normal, norm, unit_valid, u_dly, v_dly, scale_dly);
+        clock!(self, clock, replicate, adjust, back, unit_valid, u_dly, v_dly, scale_dly);
         for i in 0..4 {
             self.unit[i].clock.next = self.clock.val();
         }
@@ -105,29 +100,22 @@ impl Logic for HeightPipeline {
         self.unit[3].vblend.next = self.adjust.v1.val();
         // both front units carry the same valid flag; it rides beside the bilinear units
         self.unit_valid.d.next = self.replicate.valid_out.val() & self.adjust.valid_out.val();
-        // tangent [155]: the units' exact results (U25 of the 32-bit wide outputs: their range, exact)
+        // tangent [155], normal [156] and the normaliser, on the units' exact results (U25 of the 32-bit wide
+        // outputs: their range, exact)
         self.u_dly.d.next = self.ublend.val();
         self.v_dly.d.next = self.vblend.val();
-        self.tangent.valid_in.next = self.unit_valid.q.val();
-        self.tangent.red.next = self.unit[0].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.green.next = self.unit[1].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.blue.next = self.unit[2].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.alpha.next = self.unit[3].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.ublend.next = self.u_dly.q.val();
-        self.tangent.vblend.next = self.v_dly.q.val();
-        // normal [156], then the shared normaliser
         self.scale_dly.d.next = self.scale.val();
-        self.normal.valid_in.next = self.tangent.valid_out.val();
-        self.normal.t1.next = self.tangent.t1.val();
-        self.normal.t2.next = self.tangent.t2.val();
-        self.normal.scale.next = self.scale_dly.q.val();
-        self.norm.valid_in.next = self.normal.valid_out.val();
-        self.norm.vec_x.next = self.normal.n_x.val();
-        self.norm.vec_y.next = self.normal.n_y.val();
-        self.norm.vec_z.next = self.normal.n_z.val();
-        self.norm_x.next = self.norm.norm_x.val();
-        self.norm_y.next = self.norm.norm_y.val();
-        self.norm_z.next = self.norm.norm_z.val();
-        self.valid_out.next = self.norm.valid_out.val();
+        self.back.valid_in.next = self.unit_valid.q.val();
+        self.back.red.next = self.unit[0].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.green.next = self.unit[1].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.blue.next = self.unit[2].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.alpha.next = self.unit[3].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.ublend.next = self.u_dly.q.val();
+        self.back.vblend.next = self.v_dly.q.val();
+        self.back.scale.next = self.scale_dly.q.val();
+        self.norm_x.next = self.back.norm_x.val();
+        self.norm_y.next = self.back.norm_y.val();
+        self.norm_z.next = self.back.norm_z.val();
+        self.valid_out.next = self.back.valid_out.val();
     }
 }

@@ -7,16 +7,13 @@
 
 use crate::bilinear::{self, BilinearUnit};
 use crate::delay::Delay;
-use crate::height_normal::{self, HeightNormal};
-use crate::normalise::{self, Normalise};
 use crate::q::{Sq1_10, U8};
 use crate::ram_delay::RamDelay;
-use crate::tangent::{self, Tangent};
+use crate::tangent_to_normal::{self, TangentToNormal};
 use rust_hdl::prelude::*;
 
 pub const AT_TANGENT: usize = 1 + bilinear::LATENCY;
-pub const AT_NORMAL: usize = AT_TANGENT + tangent::LATENCY;
-pub const LATENCY: usize = AT_NORMAL + height_normal::LATENCY + normalise::LATENCY;
+pub const LATENCY: usize = AT_TANGENT + tangent_to_normal::LATENCY;
 
 crate::stream_block! {
     #[derive(Default)]
@@ -61,13 +58,11 @@ crate::stream_block! {
         s1_v: [DFF<Bits<9>>; 4],
         pub unit: [BilinearUnit<8, 9, 1>; 4], // red, green, blue, alpha
         colour: RamDelay<32, 5, { LATENCY - AT_TANGENT }>, // the rounded colour, waiting for the normal
-        pub tangent: Tangent,
-        pub normal: HeightNormal,
-        pub norm: Normalise,
+        pub back: TangentToNormal,
         valid: Delay<Bit, AT_TANGENT>,
         u_dly: Delay<U8, AT_TANGENT>,
         v_dly: Delay<U8, AT_TANGENT>,
-        scale_dly: Delay<U8, AT_NORMAL>,
+        scale_dly: Delay<U8, AT_TANGENT>,
         w_u9: Signal<Local, Bits<9>>,
         w_v9: Signal<Local, Bits<9>>,
         w_pack: Signal<Local, Bits<32>>,
@@ -81,7 +76,7 @@ crate::stream_block! {
 impl Logic for TextureFilter {
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, colour, tangent, normal, norm, valid, u_dly, v_dly, scale_dly);
+        clock!(self, clock, colour, back, valid, u_dly, v_dly, scale_dly);
         for i in 0..16 {
             self.s1_t[i].clock.next = self.clock.val();
         }
@@ -367,29 +362,22 @@ impl Logic for TextureFilter {
         self.out_g.next = self.colour.q.val().get_bits::<8>(8); // a split
         self.out_b.next = self.colour.q.val().get_bits::<8>(16); // a split
         self.out_a.next = self.colour.q.val().get_bits::<8>(24); // a split
-        // tangent [155] on the units' exact results (U25 of their 32-bit wide outputs, exact)
+        // tangent [155], normal [156] and the normaliser, on the units' exact results (U25 of the 32-bit wide
+        // outputs: their range, exact)
         self.u_dly.d.next = self.ublend.val();
         self.v_dly.d.next = self.vblend.val();
-        self.tangent.valid_in.next = self.valid.q.val();
-        self.tangent.red.next = self.unit[0].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.green.next = self.unit[1].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.blue.next = self.unit[2].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.alpha.next = self.unit[3].wide.val().get_bits::<25>(0); // U25, exact
-        self.tangent.ublend.next = self.u_dly.q.val();
-        self.tangent.vblend.next = self.v_dly.q.val();
-        // normal [156], then the shared normaliser
         self.scale_dly.d.next = self.scale.val();
-        self.normal.valid_in.next = self.tangent.valid_out.val();
-        self.normal.t1.next = self.tangent.t1.val();
-        self.normal.t2.next = self.tangent.t2.val();
-        self.normal.scale.next = self.scale_dly.q.val();
-        self.norm.valid_in.next = self.normal.valid_out.val();
-        self.norm.vec_x.next = self.normal.n_x.val();
-        self.norm.vec_y.next = self.normal.n_y.val();
-        self.norm.vec_z.next = self.normal.n_z.val();
-        self.norm_x.next = self.norm.norm_x.val();
-        self.norm_y.next = self.norm.norm_y.val();
-        self.norm_z.next = self.norm.norm_z.val();
-        self.valid_out.next = self.norm.valid_out.val();
+        self.back.valid_in.next = self.valid.q.val();
+        self.back.red.next = self.unit[0].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.green.next = self.unit[1].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.blue.next = self.unit[2].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.alpha.next = self.unit[3].wide.val().get_bits::<25>(0); // U25, exact
+        self.back.ublend.next = self.u_dly.q.val();
+        self.back.vblend.next = self.v_dly.q.val();
+        self.back.scale.next = self.scale_dly.q.val();
+        self.norm_x.next = self.back.norm_x.val();
+        self.norm_y.next = self.back.norm_y.val();
+        self.norm_z.next = self.back.norm_z.val();
+        self.valid_out.next = self.back.valid_out.val();
     }
 }
