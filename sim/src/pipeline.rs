@@ -306,16 +306,14 @@ impl Height {
         Height { light: scene.light_dir(0.5, 0.5), src: scene.src, dst: scene.dst }
     }
 
-    /// The 8-bit heights of the scene's map (row-major, one per texel), the scale factor (UQ4.4) that brings them
-    /// back to texel units, and the true height field's gradient at a point in texel coordinates.
+    /// The 8-bit heights of the scene's map (row-major, one per texel) and the scale factor (UQ4.4) that brings
+    /// them back to texel units.
     pub fn codes(scene: &Scene) -> (Vec<i64>, i64) {
         let t = scene.tex;
         let h: Vec<f64> =
             (0..t * t).map(|k| crate::scene::height(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64) * scene.relief).collect();
         let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
-        // the largest power of two m that keeps (h − lo)·4·m in 8 bits; k = 16/m
-        let m = (0..=4).rev().map(|p| 1i64 << p).find(|&m| (hi - lo) * 4.0 * m as f64 <= 255.0).unwrap_or(1);
-        (h.iter().map(|x| ((x - lo) * 4.0 * m as f64).round().clamp(0.0, 255.0) as i64).collect(), 16 / m)
+        vectors::height_normal::encode_heights(&h, lo, hi)
     }
 
     fn shade_of(&self, n: [f64; 3]) -> f64 {

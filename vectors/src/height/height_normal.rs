@@ -25,6 +25,15 @@ crate::ports! {
     ],
 }
 
+/// Heights in texel units as 8-bit UQ6.2 codes, and the scale factor k (UQ4.4) that gives their relief back: the
+/// codes hold (h − lo)·4·m (rounded, saturated to 8 bits), m the largest power of two up to 16 that keeps the range
+/// hi − lo in 8 bits, and k = 16/m.
+pub fn encode_heights(h: &[f64], lo: f64, hi: f64) -> (Vec<i64>, i64) {
+    let m = (0..=4).rev().map(|p| 1i64 << p).find(|&m| (hi - lo) * 4.0 * m as f64 <= 255.0).unwrap_or(1);
+    let codes = h.iter().map(|x| ((x - lo) * 4.0 * m as f64).round().clamp(0.0, 255.0) as i64).collect();
+    (codes, (1 << SCALE_FRAC) / m)
+}
+
 /// The unnormalised normal before the shift, 7·N: S32 with FRAC + SCALE_FRAC fraction bits.
 pub fn wide(t1: i64, t2: i64, scale: i64) -> [i64; 3] {
     let k7 = 7 * scale; // U11, exact

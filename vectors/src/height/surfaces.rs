@@ -50,9 +50,8 @@ pub fn cap() -> Surface {
 
 pub struct Row {
     pub name: String,
-    /// the scale factor used (UQ4.4) and the codes' step in texels
+    /// the scale factor used (UQ4.4; the codes' step is a quarter texel times scale/16)
     pub scale: i64,
-    pub step: f64,
     pub float_true: ErrorStats,
     pub float_codes: ErrorStats,
     pub exact: ErrorStats,
@@ -67,15 +66,11 @@ fn normal(hx: f64, hz: f64) -> [f64; 3] {
 
 /// Every surface's four errors, evaluated at `per` × `per` points in each texel away from the border.
 pub fn measure(s: &Surface, per: usize) -> Row {
-    // codes: (h − lo)·4·m with m the largest power of two that keeps the range in 8 bits; k = 16/m
-    let range = (s.hi - s.lo) * 4.0;
-    let m = (0..=4).rev().map(|p| 1i64 << p).find(|&m| range * m as f64 <= 255.0).unwrap_or(1);
-    let scale = 16 / m;
     let n = s.texels;
     let true_h: Vec<f64> = (0..n * n).map(|k| (s.h)((k % n) as f64 + 0.5, (k / n) as f64 + 0.5) - s.lo).collect();
-    let codes: Vec<i64> = true_h.iter().map(|h| (h * 4.0 * m as f64).round().clamp(0.0, 255.0) as i64).collect();
+    let (codes, scale) = crate::height::height_normal::encode_heights(&true_h, 0.0, s.hi - s.lo);
     let mut row = Row {
-        name: s.name.clone(), scale, step: 0.25 / m as f64, float_true: ErrorStats::default(), float_codes: ErrorStats::default(),
+        name: s.name.clone(), scale, float_true: ErrorStats::default(), float_codes: ErrorStats::default(),
         exact: ErrorStats::default(), exact_vs_float: ErrorStats::default(),
     };
     for j in 1..n - 1 {
