@@ -45,6 +45,7 @@ pub mod polar {
 pub mod height {
     pub mod blend_adjust;
     pub mod height_addr;
+    pub mod height_fetch;
     pub mod height_normal;
     pub mod height_pipeline;
     pub mod replicate;
@@ -57,7 +58,7 @@ pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
-pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
+pub use height::{blend_adjust, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
 pub use stream::StreamUnit;

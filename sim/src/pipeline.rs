@@ -344,6 +344,7 @@ impl Pipeline for Height {
         let size_log2 = t.trailing_zeros() as i64;
         assert!(t.is_power_of_two(), "the height path's address unit takes power-of-two textures");
         let n = scene.size;
+        let map = vectors::height_fetch::Map::from_heights(&codes, t, t);
         let mut p = Prepared { size: n, inputs: vec![], ideal: vec![] };
         for py in 0..n {
             for px in 0..n {
@@ -352,12 +353,8 @@ impl Pipeline for Height {
                 let coord = |x: f64| ((x * t as f64 * 256.0).round() as i64).clamp(0, 65_535);
                 let (i, ub) = height_addr::exact(coord(u), size_log2, false, true);
                 let (j, vb) = height_addr::exact(coord(v), size_log2, false, true);
-                // the fetch [151]: the 3×3 window around (i, j), clamped at the borders
-                let at = |di: i64, dj: i64| {
-                    let (x, z) = ((i + di).clamp(0, t as i64 - 1) as usize, (j + dj).clamp(0, t as i64 - 1) as usize);
-                    codes[z * t + x]
-                };
-                let mut x: Vec<i64> = (0..9).map(|q| at(q % 3 - 1, q / 3 - 1)).collect();
+                // the fetch [151]: the 3×3 window around (i, j) from the 2×2-interleaved map, clamped at the borders
+                let mut x = map.window(i, j, size_log2, size_log2, false, false).to_vec();
                 x.extend([ub, vb, k]);
                 p.inputs.push(x);
                 // the ideal: the true surface's normal at the pixel (its gradient in texel units), the same light

@@ -21,6 +21,7 @@ static M16X12: UnitModel = UnitModel {
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
     accuracy: None,
+    stream: None,
 };
 
 #[test]

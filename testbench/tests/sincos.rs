@@ -56,6 +56,7 @@ static M64X8: UnitModel = UnitModel {
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
     accuracy: None,
+    stream: None,
 };
 
 static M1024X12: UnitModel = UnitModel {
@@ -67,6 +68,7 @@ static M1024X12: UnitModel = UnitModel {
     exhaustive: MODEL.exhaustive,
     hard_cases: MODEL.hard_cases,
     accuracy: None,
+    stream: None,
 };
 
 #[test]

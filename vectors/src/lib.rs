@@ -36,6 +36,7 @@ pub mod polar {
 pub mod height {
     pub mod blend_adjust;
     pub mod height_addr;
+    pub mod height_fetch;
     pub mod height_normal;
     pub mod height_pipeline;
     pub mod replicate;
@@ -52,5 +53,5 @@ pub mod unit;
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, light_iter};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
-pub use height::{blend_adjust, height_addr, height_normal, height_pipeline, replicate, tangent, texture_filter};
+pub use height::{blend_adjust, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, texture_filter};
 pub use unit::{Port, UnitModel, UNITS};

@@ -73,6 +73,9 @@ pub struct UnitModel {
     /// The unit's error against its ideal, measured: (samples where it draws at random, seed) → one row per metric.
     /// `bumprtl accuracy` prints every unit's, in the table's order.
     pub accuracy: Option<fn(usize, u64) -> Vec<Accuracy>>,
+    /// A unit with state (a memory written by some vectors and read by later ones): the model over a whole stream,
+    /// from reset. `exact` is then the stream of that one vector.
+    pub stream: Option<fn(&[Vec<i64>]) -> Vec<Vec<i64>>>,
 }
 
 /// One measured error of a unit against its ideal: what is measured, over which inputs, and the statistics.
@@ -117,7 +120,7 @@ impl UnitModel {
         random: fn(&mut dyn rand::RngCore) -> Vec<i64>,
         hard_cases: fn() -> Vec<Vec<i64>>,
     ) -> UnitModel {
-        UnitModel { name, inputs: ports.0, outputs: ports.1, exact, random, exhaustive: None, hard_cases, accuracy: None }
+        UnitModel { name, inputs: ports.0, outputs: ports.1, exact, random, exhaustive: None, hard_cases, accuracy: None, stream: None }
     }
 
     pub const fn with_exhaustive(self, all: fn() -> Vec<Vec<i64>>) -> UnitModel {
@@ -126,6 +129,18 @@ impl UnitModel {
 
     pub const fn with_accuracy(self, f: fn(usize, u64) -> Vec<Accuracy>) -> UnitModel {
         UnitModel { accuracy: Some(f), ..self }
+    }
+
+    pub const fn with_stream(self, run: fn(&[Vec<i64>]) -> Vec<Vec<i64>>) -> UnitModel {
+        UnitModel { stream: Some(run), ..self }
+    }
+
+    /// The model's outputs for a stream of vectors in order: vector by vector, or through the unit's state.
+    pub fn run(&self, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+        match self.stream {
+            Some(run) => run(inputs),
+            None => inputs.iter().map(|v| (self.exact)(v)).collect(),
+        }
     }
 
     pub fn header(&self) -> Vec<&'static str> {
@@ -171,6 +186,7 @@ macro_rules! unit_table {
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];
                 height_addr: $crate::height_addr::MODEL, rtl::height_addr::HeightAddr, [];
+                height_fetch: $crate::height_fetch::MODEL, rtl::height_fetch::HeightFetch, [];
                 replicate: $crate::replicate::MODEL, rtl::replicate::Replicate, [];
                 blend_adjust: $crate::blend_adjust::MODEL, rtl::blend_adjust::BlendAdjust, [];
                 tangent: $crate::tangent::MODEL, rtl::tangent::Tangent, [];
