@@ -83,7 +83,23 @@ enum Cmd {
         /// skip yosys and nextpnr (the hardware-cost rows; minutes on the first run, cached after)
         #[arg(long)]
         no_synth: bool,
+        /// your own height map (PNG, 8- or 16-bit grey; colour is read as luma), in place of the procedural one
+        #[arg(long, value_name = "FILE.png")]
+        height_map: Option<PathBuf>,
+        /// the rise of the map's white above its black, in texels (default: a sixteenth of its side)
+        #[arg(long, requires = "height_map", value_parser = relief)]
+        relief: Option<f64>,
     },
+}
+
+/// A relief in texels: positive, finite, at most 64.
+fn relief(s: &str) -> Result<f64, String> {
+    let r: f64 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
+    if r.is_finite() && r > 0.0 && r <= 64.0 {
+        Ok(r)
+    } else {
+        Err(format!("{s} texels: the relief must be above 0 and at most 64"))
+    }
 }
 
 #[derive(Clone, Copy, clap::ValueEnum)]
@@ -234,7 +250,9 @@ pub fn main() -> Result<(), String> {
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())
         }
-        Cmd::Demo { out, size, polar_scale, no_synth } => crate::demo::run(&out, size as usize, polar_scale.into(), !no_synth)?,
+        Cmd::Demo { out, size, polar_scale, no_synth, height_map, relief } => {
+            crate::demo::run(&out, size as usize, polar_scale.into(), !no_synth, height_map.as_deref(), relief)?
+        }
     }
     Ok(())
 }

@@ -85,13 +85,22 @@ fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] as f64 - ideal[c]).abs()).fold(0.0, f64::max)
 }
 
-pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), String> {
+pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Option<&Path>, relief: Option<f64>) -> Result<(), String> {
     let wall = Instant::now();
+    // a user's map is read (or refused) before anything is written
+    let mut scene = Scene { size, ..Scene::default() };
+    if let Some(path) = height_map {
+        let loaded = sim::heightmap::load(path)?;
+        for n in &loaded.notes {
+            println!("{n}");
+        }
+        let side = loaded.map.side;
+        scene = Scene { tex: side, relief: relief.unwrap_or(side as f64 / 16.0), map: Some(std::sync::Arc::new(loaded.map)), ..scene };
+    }
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
     let probe = out.join(".write-test");
     std::fs::write(&probe, b"").map_err(|e| format!("cannot write into {}: {e}", out.display()))?;
     let _ = std::fs::remove_file(&probe);
-    let scene = Scene { size, ..Scene::default() };
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
     let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };
@@ -163,7 +172,11 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         None
     };
 
-    println!("scene: {size}x{size} quad, {t}x{t} height map, 4 vertex lights towards a point light", t = scene.tex);
+    let source = match height_map {
+        Some(p) => format!("{} ({}x{}, white {:.2} texels above black)", p.display(), scene.tex, scene.tex, scene.relief),
+        None => format!("procedural {t}x{t} height map", t = scene.tex),
+    };
+    println!("scene: {size}x{size} quad, {source}, 4 vertex lights towards a point light");
     for r in &runs {
         println!("  {} ({}): {}", r.pipe.label(), r.pipe.model().name, r.pipe.describe(&scene));
         println!("    units: {}", r.pipe.units().join(" → "));
@@ -203,7 +216,10 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool) -> Result<(), Str
         hardware_table(&names, hw);
     }
     println!("{:<52} {:>9} {:>9}   {}", "error of the bit-exact models vs the scene's ideal", "mean", "max", "max at");
-    let row = |name: &str, s: &ErrorStats| println!("{name:<52} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax);
+    let row = |name: &str, s: &ErrorStats| match s.count {
+        0 => println!("{name:<52} {:>9} {:>9}", "none", "none"),
+        _ => println!("{name:<52} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax),
+    };
     for r in &runs {
         row(&format!("{} shade, 8-bit LSB ({})", r.pipe.label(), r.pipe.shade_name()), &r.shade);
         row(&format!("{} blended colour, 8-bit LSB", r.pipe.label()), &r.colour);

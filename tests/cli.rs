@@ -198,3 +198,44 @@ fn verilog_writes_the_module_its_testbench_and_the_golden_vectors() {
     let hex = std::fs::read_to_string(d.join("dot3_in.hex")).unwrap();
     assert_eq!(hex.lines().filter(|l| !l.starts_with("//")).count(), rows);
 }
+
+#[test]
+fn a_bad_height_map_is_one_line_naming_it_and_nothing_is_written() {
+    let d = scratch("bad-map");
+    let (empty, text, tiny) = (d.join("empty.png"), d.join("text.png"), d.join("tiny.png"));
+    std::fs::write(&empty, b"").unwrap();
+    std::fs::write(&text, b"P2 2 2 255 0 0 0 0").unwrap();
+    image::GrayImage::new(1, 1).save(&tiny).unwrap();
+    for (map, what) in [(&empty, "empty"), (&text, "not a PNG"), (&tiny, "at least 2 × 2"), (&d.join("absent.png"), "cannot read")] {
+        let out = d.join("out");
+        let (code, _, err) = bumprtl(&["demo", "--no-synth", "--size", "16", "--height-map", map.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert_ne!(code, 0);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(map.to_str().unwrap()) && err.contains(what), "{err}");
+        assert!(!out.exists(), "{} was created for a refused map", out.display());
+    }
+    let (code, _, err) = bumprtl(&["demo", "--relief", "0", "--height-map", tiny.to_str().unwrap()]);
+    assert_ne!(code, 0);
+    assert!(err.contains("relief"), "{err}");
+}
+
+#[test]
+fn a_users_height_map_goes_through_the_height_cartesian_and_polar_paths() {
+    // a 5 × 3 colour map: read as luma and resampled to 8 × 8, both said; rendered without the EDA tools
+    let d = scratch("user-map");
+    let map = d.join("map.png");
+    image::RgbImage::from_fn(5, 3, |x, y| image::Rgb([(x * 50) as u8, (y * 90) as u8, 30])).save(&map).unwrap();
+    let out = d.join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+        .args(["demo", "--size", "16", "--height-map", map.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .env("PATH", "")
+        .output()
+        .unwrap();
+    let (stdout, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{stdout}\n{err}");
+    assert!(stdout.contains("read as its luma") && stdout.contains("5 × 3 resampled (bilinear) to 8 × 8"), "{stdout}");
+    assert!(stdout.contains("map.png (8x8"), "{stdout}");
+    for f in ["height_pipeline_model.png", "height_pipeline_rust_hdl.png", "cart_pipeline_model.png", "polar_pipeline_model.png"] {
+        assert!(out.join(f).is_file(), "{f} missing");
+    }
+}

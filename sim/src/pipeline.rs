@@ -311,7 +311,7 @@ impl Height {
     pub fn codes(scene: &Scene) -> (Vec<i64>, i64) {
         let t = scene.tex;
         let h: Vec<f64> =
-            (0..t * t).map(|k| crate::scene::height(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64) * scene.relief).collect();
+            (0..t * t).map(|k| scene.height_at(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64)).collect();
         let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
         vectors::height_normal::encode_heights(&h, lo, hi)
     }
@@ -360,7 +360,7 @@ impl Pipeline for Height {
                 // the ideal: the true surface's normal at the pixel (its gradient in texel units), the same light
                 let (xt, zt) = (i as f64 + ub as f64 / 256.0, j as f64 + vb as f64 / 256.0);
                 let e = 1e-3;
-                let hf = |x: f64, z: f64| crate::scene::height(x / t as f64, z / t as f64) * scene.relief;
+                let hf = |x: f64, z: f64| scene.height_at(x / t as f64, z / t as f64);
                 let (gx, gz) = ((hf(xt + e, zt) - hf(xt - e, zt)) / (2.0 * e), (hf(xt, zt + e) - hf(xt, zt - e)) / (2.0 * e));
                 let l = (gx * gx + 1.0 + gz * gz).sqrt();
                 let nrm = [-gx / l, 1.0 / l, -gz / l];

@@ -18,11 +18,13 @@ pub struct Scene {
     pub dst: [i64; 3],
     /// Height scale of the bumps, in texels of rise per texel of height-map value.
     pub relief: f64,
+    /// A user's height map in place of the procedural one (`tex` is then its side).
+    pub map: Option<std::sync::Arc<crate::heightmap::HeightMap>>,
 }
 
 impl Default for Scene {
     fn default() -> Self {
-        Scene { size: 256, tex: 128, light_pos: [0.2, 0.45, 0.25], conc: 96, src: [236, 196, 140], dst: [16, 20, 36], relief: 6.0 }
+        Scene { size: 256, tex: 128, light_pos: [0.2, 0.45, 0.25], conc: 96, src: [236, 196, 140], dst: [16, 20, 36], relief: 6.0, map: None }
     }
 }
 
@@ -49,6 +51,12 @@ pub fn height(u: f64, v: f64) -> f64 {
 }
 
 impl Scene {
+    /// The surface's height at (u, v) ∈ [0, 1]², in texel units of rise: the user's map (bilinear between its
+    /// texel centres) or the procedural field, times the relief.
+    pub fn height_at(&self, u: f64, v: f64) -> f64 {
+        self.relief * self.map.as_ref().map_or_else(|| height(u, v), |m| m.at(u, v))
+    }
+
     /// Unit direction from quad point (u, v) to the light, tangent space (x along u, y up, z along v).
     pub fn light_dir(&self, u: f64, v: f64) -> [f64; 3] {
         let d = [self.light_pos[0] - u, self.light_pos[1], self.light_pos[2] - v];
@@ -66,7 +74,7 @@ impl Scene {
         let t = self.tex;
         let n = t as f64;
         let heights: Vec<f64> =
-            (0..t * t).map(|k| height(((k % t) as f64 + 0.5) / n, ((k / t) as f64 + 0.5) / n) * self.relief).collect();
+            (0..t * t).map(|k| self.height_at(((k % t) as f64 + 0.5) / n, ((k / t) as f64 + 0.5) / n)).collect();
         vectors::normal_map::normals(&heights, t, t)
     }
 

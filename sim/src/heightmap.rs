@@ -1,0 +1,171 @@
+//! A user's height map from a PNG: 8- or 16-bit greyscale as it is, colour read as its luma (and said so), any
+//! size from 2 × 2 up, brought to the square power-of-two side the height path's memory holds (2^n texels, n ≤ 8)
+//! by bilinear resampling when it is not one already (and said so). Heights come out in [0, 1], white the highest.
+//! Every failure is one line naming the file and what is wrong with it.
+
+use std::path::Path;
+
+/// Square, `side` = 2^n texels, row-major heights in [0, 1].
+#[derive(Clone, Debug, PartialEq)]
+pub struct HeightMap {
+    pub side: usize,
+    pub h: Vec<f64>,
+}
+
+/// The largest side the height path's memory (`height_fetch`) holds.
+pub const MAX_SIDE: usize = 256;
+
+/// A map and the lines to tell the user about how it was read.
+pub struct Loaded {
+    pub map: HeightMap,
+    pub notes: Vec<String>,
+}
+
+impl HeightMap {
+    /// The height at (u, v) ∈ [0, 1]², bilinear between texel centres (at (i + ½)/side), clamped at the border.
+    pub fn at(&self, u: f64, v: f64) -> f64 {
+        bilinear(&self.h, self.side, self.side, u * self.side as f64 - 0.5, v * self.side as f64 - 0.5)
+    }
+}
+
+/// Bilinear sample of a w × h grid at (x, y) in texel units (centres at integers), clamped at the border.
+fn bilinear(g: &[f64], w: usize, h: usize, x: f64, y: f64) -> f64 {
+    let (x, y) = (x.clamp(0.0, (w - 1) as f64), y.clamp(0.0, (h - 1) as f64));
+    let (i0, j0) = (x.floor() as usize, y.floor() as usize);
+    let (i1, j1) = ((i0 + 1).min(w - 1), (j0 + 1).min(h - 1));
+    let (fx, fy) = (x - i0 as f64, y - j0 as f64);
+    let at = |i: usize, j: usize| g[j * w + i];
+    (1.0 - fy) * ((1.0 - fx) * at(i0, j0) + fx * at(i1, j0)) + fy * ((1.0 - fx) * at(i0, j1) + fx * at(i1, j1))
+}
+
+const PNG_SIGNATURE: &[u8] = b"\x89PNG\r\n\x1a\n";
+
+pub fn load(path: &Path) -> Result<Loaded, String> {
+    let name = path.display();
+    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the height map: {e}"))?;
+    if bytes.is_empty() {
+        return Err(format!("{name}: the height map is an empty file"));
+    }
+    if !bytes.starts_with(PNG_SIGNATURE) {
+        return Err(format!("{name}: not a PNG file (it does not start with the PNG signature)"));
+    }
+    let img = image::load_from_memory_with_format(&bytes, image::ImageFormat::Png)
+        .map_err(|e| format!("{name}: not a readable PNG: {e}"))?;
+    let (w, h) = (img.width() as usize, img.height() as usize);
+    if w < 2 || h < 2 {
+        return Err(format!("{name}: {w} × {h} pixels; a height map needs at least 2 × 2"));
+    }
+    let mut notes = vec![];
+    use image::ColorType::*;
+    let depth = img.color().bits_per_pixel() / img.color().channel_count() as u16;
+    let grey: Vec<f64> = match img.color() {
+        L8 | L16 | La8 | La16 => {
+            if img.color().has_alpha() {
+                notes.push(format!("{name}: its alpha channel is ignored"));
+            }
+            if depth == 16 {
+                img.to_luma16().pixels().map(|p| p.0[0] as f64 / 65_535.0).collect()
+            } else {
+                img.to_luma8().pixels().map(|p| p.0[0] as f64 / 255.0).collect()
+            }
+        }
+        _ => {
+            notes.push(format!(
+                "{name}: a colour PNG ({} channels, {depth}-bit), read as its luma 0.2126 R + 0.7152 G + 0.0722 B",
+                img.color().channel_count()
+            ));
+            let luma = |r: f64, g: f64, b: f64| 0.2126 * r + 0.7152 * g + 0.0722 * b;
+            if depth == 16 {
+                img.to_rgb16().pixels().map(|p| luma(p.0[0] as f64, p.0[1] as f64, p.0[2] as f64) / 65_535.0).collect()
+            } else {
+                img.to_rgb8().pixels().map(|p| luma(p.0[0] as f64, p.0[1] as f64, p.0[2] as f64) / 255.0).collect()
+            }
+        }
+    };
+    if depth == 16 {
+        notes.push(format!("{name}: 16-bit heights: the Cartesian and polar normals use all 16 bits, the height path stores 8"));
+    }
+    let side = w.max(h).next_power_of_two().min(MAX_SIDE);
+    let map = if w == side && h == side {
+        HeightMap { side, h: grey }
+    } else {
+        notes.push(format!(
+            "{name}: {w} × {h} resampled (bilinear) to {side} × {side}: the height path holds square maps of 2^n texels up to {MAX_SIDE}"
+        ));
+        let s = side as f64;
+        let h2 = (0..side * side)
+            .map(|k| {
+                let (x, y) = ((k % side) as f64 + 0.5, (k / side) as f64 + 0.5);
+                bilinear(&grey, w, h, x * w as f64 / s - 0.5, y * h as f64 / s - 0.5)
+            })
+            .collect();
+        HeightMap { side, h: h2 }
+    };
+    Ok(Loaded { map, notes })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Under the workspace's target folder, where the build's own files go.
+    fn test_dir() -> std::path::PathBuf {
+        std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/test-files/heightmap")
+    }
+
+    fn write(name: &str, img: image::DynamicImage) -> std::path::PathBuf {
+        let dir = test_dir();
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join(name);
+        img.save_with_format(&p, image::ImageFormat::Png).unwrap();
+        p
+    }
+
+    #[test]
+    fn an_8_bit_grey_power_of_two_map_is_read_as_it_is() {
+        let img = image::GrayImage::from_fn(4, 4, |x, y| image::Luma([(x * 60 + y) as u8]));
+        let l = load(&write("g8.png", img.into())).unwrap();
+        assert_eq!(l.map.side, 4);
+        assert!(l.notes.is_empty(), "{:?}", l.notes);
+        assert_eq!(l.map.h[1 * 4 + 3], 181.0 / 255.0);
+    }
+
+    #[test]
+    fn a_16_bit_map_keeps_its_bits_and_a_colour_map_is_read_as_luma() {
+        let img = image::ImageBuffer::<image::Luma<u16>, _>::from_fn(2, 2, |x, _| image::Luma([(x * 40_000 + 7) as u16]));
+        let l = load(&write("g16.png", image::DynamicImage::ImageLuma16(img))).unwrap();
+        assert_eq!(l.map.h[1], 40_007.0 / 65_535.0);
+        assert!(l.notes.iter().any(|n| n.contains("16-bit")));
+        let img = image::RgbImage::from_fn(2, 2, |_, _| image::Rgb([255, 0, 0]));
+        let l = load(&write("rgb.png", img.into())).unwrap();
+        assert!((l.map.h[0] - 0.2126).abs() < 1e-6);
+        assert!(l.notes.iter().any(|n| n.contains("luma")));
+    }
+
+    #[test]
+    fn other_sizes_are_resampled_to_a_square_power_of_two_and_say_so() {
+        let img = image::GrayImage::from_fn(3, 2, |x, _| image::Luma([(x * 100) as u8]));
+        let l = load(&write("g3x2.png", img.into())).unwrap();
+        assert_eq!(l.map.side, 4);
+        assert!(l.notes.iter().any(|n| n.contains("3 × 2 resampled")));
+        // a ramp stays a ramp: rising along x, constant along y
+        assert!(l.map.h[1] > l.map.h[0] && l.map.h[3] >= l.map.h[2] && l.map.h[4] == l.map.h[0]);
+    }
+
+    #[test]
+    fn bad_files_get_one_line_naming_the_file() {
+        let dir = test_dir();
+        std::fs::create_dir_all(&dir).unwrap();
+        let (empty, text, cut) = (dir.join("empty.png"), dir.join("text.png"), dir.join("cut.png"));
+        std::fs::write(&empty, b"").unwrap();
+        std::fs::write(&text, b"not an image").unwrap();
+        let good = std::fs::read(write("whole.png", image::GrayImage::new(8, 8).into())).unwrap();
+        std::fs::write(&cut, &good[..good.len() / 2]).unwrap();
+        let one = image::GrayImage::new(1, 5);
+        let thin = write("thin.png", one.into());
+        for (p, what) in [(&empty, "empty"), (&text, "not a PNG"), (&cut, "not a readable PNG"), (&thin, "at least 2 × 2"), (&dir.join("absent.png"), "cannot read")] {
+            let e = load(p).err().unwrap_or_else(|| panic!("{} loaded", p.display()));
+            assert!(e.contains(&p.display().to_string()) && e.contains(what) && !e.contains('\n'), "{e}");
+        }
+    }
+}
