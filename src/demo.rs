@@ -152,6 +152,16 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     png("below_horizon_cartesian.png", &|k| [to8(sc.low_cx[k]); 3])?;
     png("below_horizon_polar.png", &|k| [to8(sc.low_px[k]); 3])?;
 
+    // seed 001's variants: FIG. 8a/8b on a coarse map of the procedural heights, B-spline colour beside bilinear
+    let d = Scene::default();
+    let fig8 = sim::variants::fig8(size, d.relief * sim::variants::FIG8_TEXELS as f64 / d.tex as f64); // the same slopes as the scene's
+    png("fig8a_blinn.png", &|k| [fig8.blinn[k]; 3])?;
+    png("fig8b_bspline.png", &|k| [fig8.bspline[k]; 3])?;
+    let colour = sim::variants::colour(size);
+    png("colour_reference.png", &|k| colour.reference[k])?;
+    png("colour_bilinear.png", &|k| colour.bilinear[k])?;
+    png("colour_bspline.png", &|k| colour.bspline[k])?;
+
     // waveforms of the first pixels, and the Verilog
     let vdir = out.join("verilog");
     for r in &runs {
@@ -237,8 +247,20 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     row(&format!("(a) light {:.1}° below the horizon: Cartesian N·L", sc.low_below_deg), &sc.low_cartesian);
     row(&format!("    polar N·L, the light moved onto it: {}", sc.low_moved), &sc.low_polar);
     println!();
+    let n8 = sim::variants::FIG8_TEXELS;
+    println!("seed 001's variants (bit-exact models; {n8}x{n8} maps magnified to {size}x{size})");
+    println!(
+        "FIG. 8a/8b, largest jump across a texel edge (methods in reals): N·L derivative Blinn {:.4}, B-spline {:.4}; cross tangent derivative Blinn {:.4}, B-spline {:.4}",
+        fig8.jumps.blinn.0, fig8.jumps.bspline.0, fig8.jumps.blinn.1, fig8.jumps.bspline.1
+    );
+    row("bilinear colour vs the f64 picture, 8-bit LSB", &colour.bilinear_vs_reference);
+    row("B-spline colour (¶87) vs the f64 picture, 8-bit LSB", &colour.bspline_vs_reference);
+    row("bilinear colour vs its method in reals", &colour.bilinear_vs_own);
+    row("B-spline colour vs its method in reals", &colour.bspline_vs_own);
+    println!();
     println!("wrote {}: {};", out.display(), written.join(", "));
     println!("      polar_surface_light_error_heat, polar_wrap_pixels, below_horizon_{{ideal,cartesian,polar}} .png;");
+    println!("      fig8a_blinn, fig8b_bspline, colour_{{reference,bilinear,bspline}} .png;");
     let vcds: Vec<String> = runs.iter().map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
     println!("      {}; verilog/{}", vcds.join(", "), if synth { "; synth/" } else { "" });
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());

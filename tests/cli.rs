@@ -105,6 +105,7 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     for f in [
         "cart_pipeline_model.png", "cart_pipeline_rust_hdl.png", "polar_pipeline_model.png", "cart_pipeline_hemi_oct_model.png",
         "cart_pipeline.vcd", "polar_pipeline.vcd", "cart_pipeline_hemi_oct.vcd", "verilog/cart_pipeline.v",
+        "fig8a_blinn.png", "fig8b_bspline.png", "colour_reference.png", "colour_bilinear.png", "colour_bspline.png",
     ] {
         assert!(d.join(f).is_file(), "{f} missing");
     }

@@ -35,6 +35,7 @@ pub mod polar {
 /// Seed 001: normals generated from height maps on the texture filter's bilinear units.
 pub mod height {
     pub mod blend_adjust;
+    pub mod filters;
     pub mod height_addr;
     pub mod height_fetch;
     pub mod height_normal;

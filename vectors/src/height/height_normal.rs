@@ -29,8 +29,15 @@ crate::ports! {
 /// codes hold (h − lo)·4·m (rounded, saturated to 8 bits), m the largest power of two up to 16 that keeps the range
 /// hi − lo in 8 bits, and k = 16/m.
 pub fn encode_heights(h: &[f64], lo: f64, hi: f64) -> (Vec<i64>, i64) {
-    let m = (0..=4).rev().map(|p| 1i64 << p).find(|&m| (hi - lo) * 4.0 * m as f64 <= 255.0).unwrap_or(1);
-    let codes = h.iter().map(|x| ((x - lo) * 4.0 * m as f64).round().clamp(0.0, 255.0) as i64).collect();
+    encode_heights_in(h, lo, hi, 8)
+}
+
+/// The same in `bits` (8 or 4), a quarter of them fraction (¶50): UQ6.2 or UQ3.1. 4-bit codes q enter the 8-bit
+/// datapath as 2q, the same height in UQ6.2 (exact), with the same k.
+pub fn encode_heights_in(h: &[f64], lo: f64, hi: f64, bits: u32) -> (Vec<i64>, i64) {
+    let (top, per_texel) = ((1i64 << bits) - 1, (1i64 << (bits / 4)) as f64);
+    let m = (0..=4).rev().map(|p| 1i64 << p).find(|&m| (hi - lo) * per_texel * m as f64 <= top as f64).unwrap_or(1);
+    let codes = h.iter().map(|x| ((x - lo) * per_texel * m as f64).round().clamp(0.0, top as f64) as i64).collect();
     (codes, (1 << SCALE_FRAC) / m)
 }
 
@@ -40,9 +47,14 @@ pub fn wide(t1: i64, t2: i64, scale: i64) -> [i64; 3] {
     [-(k7 * t1), 14 << (FRAC + SCALE_FRAC), -(k7 * t2)] // S21 × U11 → S32, exact; 7·2.0 in the same units
 }
 
-/// N as three S10 components: one right shift for all three (the magnitudes truncated), the largest ≤ 511.
+/// N as three S10 components: one right shift for all three (the magnitudes rounded), the largest ≤ 511.
 pub fn exact(t1: i64, t2: i64, scale: i64) -> [i64; 3] {
-    let n = wide(t1, t2, scale);
+    to_s10(wide(t1, t2, scale))
+}
+
+/// Any unnormalised vector brought to three S10 components for the scale-free normaliser: the smallest right shift
+/// of all three whose rounded largest magnitude is ≤ 511.
+pub fn to_s10(n: [i64; 3]) -> [i64; 3] {
     let m = n.iter().map(|x| x.abs()).max().unwrap_or(0);
     // block floating point: the smallest shift whose rounded largest magnitude is ≤ 511
     let s = (0..32).find(|&s| crate::fixed::round_half_up(m, s) <= 511).unwrap_or(31);
