@@ -242,6 +242,11 @@ pub fn main() -> Result<(), String> {
                 synth::fpga::synth_and_place::<U>(&d, part, freq, &choice)
             })?;
             crate::report::synth_row(&r);
+            let family = r.part().family;
+            let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| {
+                with_unit!(name.as_str(), U => synth::fpga::synth_tied::<U>(&d, family, tag, ties, keep))
+            };
+            crate::hardware::mode_views(&name, family, &tied)?;
         }
         Cmd::Accuracy { directions, samples, lut_cost, dir } => {
             crate::report::accuracy(directions, samples);

@@ -45,3 +45,35 @@ pub fn run_jobs(jobs: Vec<Job<'_>>) -> Result<Vec<Vec<(Part, Fit)>>, String> {
     });
     results.into_iter().map(|r| r.expect("every job ran")).collect()
 }
+
+/// A unit with a mode input, synthesised as a design that needs only one mode would hold it (the mode tied, the other
+/// mode's outputs left open), beside the unit with both: what sharing one set of blocks between the modes saves.
+/// `texture_filter`'s colour and height modes share its four bilinear units.
+const MODE_VIEWS: &[(&str, &[(&str, &[(&str, u64)], &[&str])])] = &[(
+    "texture_filter",
+    &[
+        ("colour", &[("mode", 0)], &["out_r", "out_g", "out_b", "out_a"]),
+        ("height", &[("mode", 1)], &["norm_x", "norm_y", "norm_z"]),
+        ("both", &[], &["out_r", "out_g", "out_b", "out_a", "norm_x", "norm_y", "norm_z"]),
+    ],
+)];
+
+/// The mode views of a unit, if it has any: yosys figures of each, printed under the unit's report.
+pub type TiedSynth<'a> = &'a dyn Fn(&str, &[(&str, u64)], &[&str]) -> Result<(synth::fpga::Cells, synth::fpga::Blocks), String>;
+
+pub fn mode_views(unit: &str, family: synth::fpga::Family, synth_tied: TiedSynth) -> Result<(), String> {
+    let Some((_, views)) = MODE_VIEWS.iter().find(|(u, _)| *u == unit) else { return Ok(()) };
+    let [lut, ff, dsp, bram, _] = family.cells();
+    println!("  each mode alone (the mode tied, the other mode's outputs open) and both, yosys alone, operand copies not kept:");
+    let mut sum = synth::fpga::Cells::default();
+    for (tag, ties, keep) in views.iter() {
+        let (c, b) = synth_tied(tag, ties, keep)?;
+        println!("    {tag:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}", c.lut4, c.ff, c.dsp, c.bram);
+        crate::report::blocks_line(&b, family, 13);
+        if !ties.is_empty() {
+            sum = synth::fpga::Cells { lut4: sum.lut4 + c.lut4, ff: sum.ff + c.ff, dsp: sum.dsp + c.dsp, bram: sum.bram + c.bram, carry: sum.carry + c.carry };
+        }
+    }
+    println!("    {:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}   (one block per mode)", "sum", sum.lut4, sum.ff, sum.dsp, sum.bram);
+    Ok(())
+}

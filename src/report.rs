@@ -130,4 +130,16 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
     if let Some(c) = &r.critical {
         println!("  critical path {c}");
     }
+    blocks_line(&r.blocks, p.family, 2);
+}
+
+/// The hard blocks by top-level instance: "unit$0 3, unit$1 3, …" DSP, then BRAM.
+pub fn blocks_line(b: &synth::fpga::Blocks, family: synth::fpga::Family, indent: usize) {
+    let [.., dsp, bram, _] = family.cells();
+    for (k, name) in [(0, dsp), (1, bram)] {
+        let list: Vec<String> = b.by_instance.iter().map(|(i, d, m)| (i, [*d, *m][k])).filter(|x| x.1 > 0).map(|(i, n)| format!("{i} {n}")).collect();
+        if !list.is_empty() {
+            println!("{:indent$}{name:<12} by instance: {}", "", list.join(", "));
+        }
+    }
 }

@@ -123,6 +123,60 @@ pub struct Cells {
     pub carry: u64,
 }
 
+/// The hard blocks (DSP, block RAM) synthesis kept inside each of a design's top-level instances, read from the
+/// cells' names (yosys keeps a flattened cell's instance path in its name: `unit$0.mul1.s3_p.d_MULT18X18D_P0`).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Blocks {
+    /// (instance, DSP, BRAM), in name order; `-` for cells at the top level
+    pub by_instance: Vec<(String, u64, u64)>,
+}
+
+impl Blocks {
+    fn parse(family: Family, text: &str) -> Blocks {
+        Blocks::parse_under(family, text, "")
+    }
+
+    /// The same for a unit inside a wrapper: the cells' names begin with `prefix` (the unit's instance and a dot).
+    fn parse_under(family: Family, text: &str, prefix: &str) -> Blocks {
+        let [_, _, dsp, bram, _] = family.cells();
+        let mut m: std::collections::BTreeMap<String, (u64, u64)> = Default::default();
+        for line in text.lines() {
+            let Some((_, cell)) = line.trim().split_once('/') else { continue };
+            let cell = cell.trim_start_matches('\\');
+            let cell = cell.strip_prefix(prefix).unwrap_or(cell);
+            let inst = cell.split_once('.').map(|(i, _)| i).unwrap_or("-").to_string();
+            let e = m.entry(inst).or_default();
+            if cell.contains(&format!("_{dsp}")) {
+                e.0 += 1;
+            } else if cell.contains(&format!("_{bram}")) {
+                e.1 += 1;
+            }
+        }
+        Blocks { by_instance: m.into_iter().map(|(k, (d, b))| (k, d, b)).collect() }
+    }
+
+    fn read(dir: &Path, top: &str, family: Family) -> Blocks {
+        Blocks::parse(family, &std::fs::read_to_string(dir.join(format!("{top}.{family:?}.blocks"))).unwrap_or_default())
+    }
+
+    /// `name:dsp:bram,...`, for the saved report.
+    fn to_text(&self) -> String {
+        self.by_instance.iter().map(|(n, d, b)| format!("{n}:{d}:{b}")).collect::<Vec<_>>().join(",")
+    }
+
+    fn from_text(text: &str) -> Blocks {
+        let by_instance = text
+            .split(',')
+            .filter_map(|e| {
+                let mut f = e.rsplitn(3, ':');
+                let (b, d, n) = (f.next()?.parse().ok()?, f.next()?.parse().ok()?, f.next()?);
+                Some((n.to_string(), d, b))
+            })
+            .collect();
+        Blocks { by_instance }
+    }
+}
+
 /// A unit's figures on one part.
 #[derive(Clone, Debug, Default)]
 pub struct SynthReport {
@@ -140,6 +194,8 @@ pub struct SynthReport {
     pub critical: Option<String>,
     /// why place-and-route failed, when it did
     pub place_error: Option<String>,
+    /// the hard blocks of each top-level instance (the unit alone, before the wrapper)
+    pub blocks: Blocks,
 }
 
 impl SynthReport {
@@ -199,15 +255,20 @@ fn cells(family: Family, log: &str) -> Cells {
 pub const KEEP_OPERAND_COPIES: &str = "proc; setattr -set keep 1 *$mop_*/t:$dff";
 
 fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>) -> Result<String, String> {
+    yosys_with(dir, family, top, files, json, KEEP_OPERAND_COPIES)
+}
+
+fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>, before: &str) -> Result<String, String> {
     let mut script = String::new();
     for f in files {
         let _ = write!(script, "read_verilog {f}; ");
     }
-    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {} -top {top}", family.synth_command());
+    let _ = write!(script, "hierarchy -top {top}; {before}; {} -top {top}", family.synth_command());
     if let Some(j) = json {
         let _ = write!(script, " -json {j}");
     }
-    script.push_str("; stat");
+    let [_, _, dsp, bram, _] = family.cells();
+    let _ = write!(script, "; tee -q -o {top}.{family:?}.blocks select -list t:{dsp} t:{bram}; stat");
     let log = format!("{top}.{}.yosys.log", family.synth_command().split_whitespace().next().unwrap_or("synth"));
     tools::run(dir, "yosys", &["-q", "-p", &script, "-l", &log])?;
     std::fs::read_to_string(dir.join(&log)).map_err(|e| format!("no yosys log: {e}"))
@@ -218,7 +279,7 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
 pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
     let v = export::<U>();
     v.write(dir)?;
-    let key = format!("{}\n{KEEP_OPERAND_COPIES}\n{}", family.synth_command(), v.text);
+    let key = format!("{}\n{KEEP_OPERAND_COPIES}\nblocks\n{}", family.synth_command(), v.text);
     let (stamp, saved) = (dir.join(format!("{family:?}.cells.stamp")), dir.join(format!("{family:?}.cells")));
     if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
         let n: Vec<u64> = std::fs::read_to_string(&saved).unwrap_or_default().split_whitespace().filter_map(|x| x.parse().ok()).collect();
@@ -231,6 +292,49 @@ pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, St
     write_atomic(&saved, format!("{} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry).as_bytes())?;
     write_atomic(&stamp, key.as_bytes())?;
     Ok(c)
+}
+
+/// yosys figures of the unit with some inputs tied to constants and only some outputs used (the rest left open), as
+/// a design that needs one mode of a unit would hold it: synthesis removes what the constants and the open outputs
+/// make dead. `tag` names the wrapper module and its files. The multipliers' operand copies are not marked `keep`
+/// here (a kept copy would hold its dead multiplier alive), so compare these figures with each other, not with
+/// `synth_unit`'s.
+pub fn synth_tied<U: StreamUnit>(dir: &Path, family: Family, tag: &str, ties: &[(&str, u64)], keep: &[&str]) -> Result<(Cells, Blocks), String> {
+    let v = export::<U>();
+    v.write(dir)?;
+    let top = format!("{}_{tag}", U::NAME);
+    let ins: Vec<(&str, usize)> = U::INPUTS.iter().filter(|(n, _)| !ties.iter().any(|t| t.0 == *n)).copied().collect();
+    let outs: Vec<(&str, usize)> = U::OUTPUTS.iter().filter(|(n, _)| keep.contains(n)).copied().collect();
+    let port = |dir: &str, (n, w): &(&str, usize)| format!("{dir} [{}:0] {n}", w - 1);
+    let mut decl = vec!["input clock".to_string(), "input valid_in".into(), "output valid_out".into()];
+    decl.extend(ins.iter().map(|p| port("input", p)));
+    decl.extend(outs.iter().map(|p| port("output", p)));
+    let mut conns = vec![".clock(clock)".to_string(), ".valid_in(valid_in)".into(), ".valid_out(valid_out)".into()];
+    for (n, w) in U::INPUTS {
+        match ties.iter().find(|t| t.0 == *n) {
+            Some((_, value)) => conns.push(format!(".{n}({w}'d{value})")),
+            None => conns.push(format!(".{n}({n})")),
+        }
+    }
+    conns.extend(outs.iter().map(|(n, _)| format!(".{n}({n})")));
+    let text = format!(
+        "// generated by bumprtl: {} with {} tied\nmodule {top}({});\n  {} dut({});\nendmodule\n",
+        U::NAME,
+        ties.iter().map(|(n, v)| format!("{n} = {v}")).collect::<Vec<_>>().join(", "),
+        decl.join(", "),
+        U::NAME,
+        conns.join(", ")
+    );
+    let w = format!("{top}.v");
+    write_atomic(&dir.join(&w), text.as_bytes())?;
+    let log = yosys_with(dir, family, &top, &[&format!("{}.v", U::NAME), &w], None, "proc")?;
+    let list = std::fs::read_to_string(dir.join(format!("{top}.{family:?}.blocks"))).unwrap_or_default();
+    Ok((cells(family, &log), Blocks::parse_under(family, &list, "dut.")))
+}
+
+/// The hard blocks of each top-level instance of the unit, as its last `synth_unit` in `dir` left them.
+pub fn blocks_of<U: StreamUnit>(dir: &Path, family: Family) -> Blocks {
+    Blocks::read(dir, U::NAME, family)
 }
 
 /// The part a unit is placed on when the user names none: the UP5K when the unit fits it, else the smallest ECP5
@@ -281,7 +385,8 @@ pub fn synth_and_place<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64, cho
     if let Some(o) = part.overflow(&c) {
         return Err(format!("{} does not fit the {}: {o}", U::NAME, part.title));
     }
-    let mut r = SynthReport { unit: U::NAME.into(), part: part.name.into(), cells: c, latency: U::LATENCY, choice: choice.into(), ..Default::default() };
+    let blocks = Blocks::read(dir, U::NAME, part.family);
+    let mut r = SynthReport { unit: U::NAME.into(), part: part.name.into(), cells: c, latency: U::LATENCY, choice: choice.into(), blocks, ..Default::default() };
     let w = format!("{}_io.v", U::NAME);
     write_atomic(&dir.join(&w), wrapper::<U>().as_bytes())?;
     let top = format!("{}_io", U::NAME);
@@ -340,10 +445,10 @@ impl SynthReport {
         let o = |x: Option<String>| x.unwrap_or_default();
         let c = &self.cells;
         format!(
-            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\n",
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nblocks={}\n",
             self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, self.latency, self.choice.replace('\n', " "),
             o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
-            o(self.critical.clone()), o(self.place_error.clone())
+            o(self.critical.clone()), o(self.place_error.clone()), self.blocks.to_text()
         )
     }
 
@@ -368,6 +473,7 @@ impl SynthReport {
             fmax_mhz: opt("fmax_mhz").and_then(|v| v.parse().ok()),
             critical: opt("critical").map(str::to_string),
             place_error: opt("place_error").map(str::to_string),
+            blocks: Blocks::from_text(get("blocks")?),
         })
     }
 }
@@ -375,7 +481,7 @@ impl SynthReport {
 /// `synth_and_place`, reusing the figures of an earlier run in `dir` when the unit's Verilog, the wrapper, the part
 /// and the target frequency are all unchanged (place-and-route takes minutes; the demo asks for it on every run).
 pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
-    let key = format!("{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}", export::<U>().text, wrapper::<U>(), part.name);
+    let key = format!("{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}\nblocks", export::<U>().text, wrapper::<U>(), part.name);
     let (stamp, saved) = (dir.join("report.stamp"), dir.join("report.txt"));
     if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
         if let Some(r) = std::fs::read_to_string(&saved).ok().as_deref().and_then(SynthReport::from_text) {
@@ -399,6 +505,7 @@ mod tests {
             unit: "u".into(), part: "ecp5-45f".into(), cells: Cells { lut4: 1, ff: 3, dsp: 4, bram: 5, carry: 2 },
             latency: 8, choice: "not up5k: it needs 9 SB_MAC16".into(), lc: Some(6), fmax_mhz: Some(7.5),
             critical: Some("a → b (1 ns logic, 2 ns routing)".into()), place_error: Some("ERROR: no BELs".into()),
+            blocks: Blocks { by_instance: vec![("unit$0".into(), 3, 0), ("norm".into(), 6, 1)] },
         };
         let back = SynthReport::from_text(&r.to_text()).unwrap();
         assert_eq!(back.to_text(), r.to_text());
@@ -406,6 +513,15 @@ mod tests {
         assert_eq!(SynthReport::from_text(&none.to_text()).unwrap().to_text(), none.to_text());
         assert!(SynthReport::from_text("unit=u\nlut4=x\n").is_none());
         assert!(SynthReport::from_text(&none.to_text().replace("ecp5-45f", "ecp5-12f")).is_none());
+    }
+
+    #[test]
+    fn hard_blocks_are_counted_by_the_instance_their_names_begin_with() {
+        let list = "texture_filter/unit$0.mul0.s3_p.d_MULT18X18D_P0\ntexture_filter/unit$0.mul1.s3_p.d_MULT18X18D_P0\n\
+                    texture_filter/norm.s6_r.q_DP16KD_DOA0\ntexture_filter/norm.s2_sq$0$d_MULT18X18D_P0\ntexture_filter/x_DP16KD\n";
+        let b = Blocks::parse(Family::Ecp5, list);
+        assert_eq!(b.by_instance, vec![("-".into(), 0, 1), ("norm".into(), 1, 1), ("unit$0".into(), 2, 0)]);
+        assert_eq!(Blocks::from_text(&b.to_text()), b);
     }
 
     #[test]
