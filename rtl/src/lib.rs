@@ -44,6 +44,7 @@ pub mod polar {
 /// Seed 001: normals generated from height maps on the texture filter's bilinear units.
 pub mod height {
     pub mod blend_adjust;
+    pub mod blinn_pipeline;
     pub mod height_addr;
     pub mod height_fetch;
     pub mod height_normal;
@@ -58,7 +59,7 @@ pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
-pub use height::{blend_adjust, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
+pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
 pub use stream::StreamUnit;

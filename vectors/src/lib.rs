@@ -35,6 +35,7 @@ pub mod polar {
 /// Seed 001: normals generated from height maps on the texture filter's bilinear units.
 pub mod height {
     pub mod blend_adjust;
+    pub mod blinn_pipeline;
     pub mod filters;
     pub mod height_addr;
     pub mod height_fetch;
@@ -54,5 +55,5 @@ pub mod unit;
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, light_iter};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
-pub use height::{blend_adjust, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, texture_filter};
+pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, texture_filter};
 pub use unit::{Port, UnitModel, UNITS};

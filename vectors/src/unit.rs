@@ -199,6 +199,12 @@ macro_rules! unit_table {
                     ("unit$3$out", "as unit$0$out"),
                 ];
                 texture_filter: $crate::texture_filter::MODEL, rtl::texture_filter::TextureFilter, [];
+                blinn_pipeline: $crate::blinn_pipeline::MODEL, rtl::blinn_pipeline::BlinnPipeline, [
+                    ("unit$0$out", "Blinn's function reads each bilinear unit's exact result; the rounded one is the \
+                        colour filter's"),
+                    ("unit$1$out", "as unit$0$out"),
+                    ("unit$2$out", "as unit$0$out"),
+                ];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];

@@ -78,14 +78,7 @@ impl Filter {
                 let (t1, t2) = tangent::exact(r[0], r[1], r[2], r[3], ub, vb);
                 height_normal::exact(t1, t2, k)
             }
-            Filter::Blinn => {
-                let g = replicate::grids(&map.window(i, j));
-                let r: [i64; 3] = std::array::from_fn(|c| bilinear::exact_wide(g[c][0], g[c][1], g[c][2], g[c][3], 2 * ub, 2 * vb, B, D));
-                // G − R and B − R are ∂H/∂u and ∂H/∂v (17 fraction bits); the normal unit takes half of each with
-                // 12 fraction bits: one shift of 6, floor
-                let half = tangent::IN_FRAC - tangent::FRAC + 1;
-                height_normal::exact(truncate(r[1] - r[0], half), truncate(r[2] - r[0], half), k)
-            }
+            Filter::Blinn => return blinn_exact(&map.window(i, j), ub, vb, k),
             Filter::FourTap | Filter::Sobel | Filter::Prewitt => {
                 // colour-mode addressing: the texel centres around the point, half a texel back
                 let (cu, cv) = (cu - 128, cv - 128);
@@ -156,6 +149,21 @@ fn bspline_tangents(map: &Grid<f64>, cu: f64, cv: f64) -> [f64; 2] {
     let (i, j) = (cu.floor() as i64, cv.floor() as i64);
     let (_, hu, hv) = height_pipeline::bspline(&map.window(i, j), cu - i as f64, cv - j as f64);
     [hu / 2.0, hv / 2.0]
+}
+
+/// Blinn's function on one window (texel k unread): the red, green and blue units at the plain factors (doubled
+/// to the units' 9 bits, exact), then G − R and B − R, which are ∂H/∂u and ∂H/∂v with 17 fraction bits; the normal
+/// unit takes half of each with 12 fraction bits: one arithmetic shift of 6, floor. `blinn_pipeline`'s model.
+pub fn blinn_tangents(w: &[i64; 9], ub: i64, vb: i64) -> ([i64; 3], i64, i64) {
+    let g = replicate::grids(w);
+    let r: [i64; 3] = std::array::from_fn(|c| bilinear::exact_wide(g[c][0], g[c][1], g[c][2], g[c][3], 2 * ub, 2 * vb, B, D));
+    let half = tangent::IN_FRAC - tangent::FRAC + 1;
+    (r, truncate(r[1] - r[0], half), truncate(r[2] - r[0], half)) // S26 → S20, floor
+}
+
+pub fn blinn_exact(w: &[i64; 9], ub: i64, vb: i64, k: i64) -> [i64; 3] {
+    let (_, t1, t2) = blinn_tangents(w, ub, vb);
+    normalise::exact(height_normal::exact(t1, t2, k))
 }
 
 /// The preferred path on one window: `height_pipeline`.
