@@ -47,6 +47,12 @@ pub mod height {
     pub mod texture_filter;
 }
 
+/// Seed 004 (Tarini et al. 2000): quantized normal maps and per-frame colour tables.
+pub mod palette {
+    pub mod plane_fit;
+    pub mod quantize;
+}
+
 pub mod csv;
 pub mod stats;
 pub mod unit;
