@@ -51,6 +51,7 @@ pub mod height {
 pub mod palette {
     pub mod plane_fit;
     pub mod quantize;
+    pub mod tables;
 }
 
 pub mod csv;
