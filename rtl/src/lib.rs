@@ -55,6 +55,11 @@ pub mod height {
     pub mod texture_filter;
 }
 
+/// Seed 004 (Tarini et al. 2000): quantized normal maps and per-frame colour tables.
+pub mod palette {
+    pub mod palette_lookup;
+}
+
 pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
@@ -62,4 +67,5 @@ pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter
 pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
+pub use palette::palette_lookup;
 pub use stream::StreamUnit;

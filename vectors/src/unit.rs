@@ -205,6 +205,7 @@ macro_rules! unit_table {
                     ("unit$1$out", "as unit$0$out"),
                     ("unit$2$out", "as unit$0$out"),
                 ];
+                palette_lookup: $crate::palette_lookup::MODEL, rtl::palette_lookup::PaletteLookup<8, 9>, [];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];
