@@ -70,6 +70,28 @@ enum Cmd {
         #[arg(long, default_value = "target/synth/lut-sizes")]
         dir: PathBuf,
     },
+    /// Quantize a normal map (RGB PNG) or a height map (grey PNG) to a palette of N normals (seed 004): the palette,
+    /// the index map and its mip chain into DIR
+    Quantize {
+        map: PathBuf,
+        /// palette size s_N (1..=16384)
+        #[arg(long, value_parser = clap::value_parser!(u32).range(1..=16384))]
+        size: u32,
+        /// error-diffusion dithering of the index map
+        #[arg(long)]
+        dither: bool,
+        /// the RGB map's green channel points down the image (DirectX); default up (OpenGL)
+        #[arg(long)]
+        green_down: bool,
+        /// a grey map's white above its black, in texels (default: a sixteenth of its larger side)
+        #[arg(long, value_parser = relief)]
+        relief: Option<f64>,
+        /// neighbours of the plane fit for a grey map: 4 or 8
+        #[arg(long, default_value_t = 8, value_parser = neighbours)]
+        q: usize,
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
         #[arg(long, default_value = "out/demo")]
@@ -90,6 +112,15 @@ enum Cmd {
         #[arg(long, requires = "height_map", value_parser = relief)]
         relief: Option<f64>,
     },
+}
+
+/// The plane fit's neighbourhood: 4 or 8.
+fn neighbours(s: &str) -> Result<usize, String> {
+    match s {
+        "4" => Ok(4),
+        "8" => Ok(8),
+        _ => Err(format!("`{s}`: the plane fit takes 4 or 8 neighbours")),
+    }
 }
 
 /// A relief in texels: positive, finite, at most 64.
@@ -251,6 +282,13 @@ pub fn main() -> Result<(), String> {
         Cmd::Accuracy { directions, samples, lut_cost, dir } => {
             crate::report::accuracy(directions, samples);
             crate::report::lut_sizes(lut_cost, &dir)?;
+        }
+        Cmd::Quantize { out, .. } if out.as_os_str() == "-" => {
+            return Err("--out -: quantize writes a folder of files (palette, index map, mips); name a folder".into())
+        }
+        Cmd::Quantize { map, size, dither, green_down, relief, q, out } => {
+            let args = crate::quantize::Args { map: &map, size: size as usize, dither, green_down, relief, q, out: &out };
+            crate::quantize::run(&args)?
         }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

@@ -3,6 +3,7 @@
 mod cli;
 mod demo;
 mod hardware;
+mod quantize;
 mod report;
 
 fn main() {

@@ -240,3 +240,60 @@ fn a_users_height_map_goes_through_the_height_cartesian_and_polar_paths() {
         assert!(out.join(f).is_file(), "{f} missing");
     }
 }
+
+#[test]
+fn quantize_writes_the_palette_the_index_map_and_its_mips() {
+    let d = scratch("quantize");
+    // an RGB normal map of 5 × 3 texels (not a power of two): 15 distinct normals at most
+    let map = d.join("n.png");
+    image::RgbImage::from_fn(5, 3, |x, y| image::Rgb([100 + 20 * x as u8, 128 + 30 * y as u8, 230])).save(&map).unwrap();
+    let out = d.join("q");
+    let (code, stdout, err) = bumprtl(&["quantize", map.to_str().unwrap(), "--size", "4", "--dither", "--out", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(stdout.contains("distinct normals: 15") && stdout.contains("palette: 4 normals"), "{stdout}");
+    let csv = std::fs::read_to_string(out.join("palette.csv")).unwrap();
+    assert_eq!(csv.lines().filter(|l| !l.starts_with('#')).count(), 1 + 4, "{csv}");
+    for row in csv.lines().skip(2) {
+        let v: Vec<f64> = row.split(',').skip(1).map(|x| x.parse().unwrap()).collect();
+        assert!((v.iter().map(|c| c * c).sum::<f64>() - 1.0).abs() < 1e-6, "{row} is not a unit normal");
+    }
+    assert_eq!(std::fs::read(out.join("index.raw")).unwrap().len(), 15 * 2);
+    let index = image::open(out.join("index.png")).unwrap();
+    assert_eq!((index.width(), index.height()), (5, 3));
+    assert!(index.to_luma16().pixels().all(|p| p.0[0] < 4));
+    // 5 × 3 → 3 × 2 → 2 × 1 → 1 × 1
+    let mips: Vec<(u32, u32)> = (1..=3).map(|l| image::open(out.join(format!("mip{l}.png"))).unwrap()).map(|i| (i.width(), i.height())).collect();
+    assert_eq!(mips, [(3, 2), (2, 1), (1, 1)]);
+    assert!(!out.join("mip4.png").exists());
+    // enough normals: lossless
+    let (_, stdout, _) = bumprtl(&["quantize", map.to_str().unwrap(), "--size", "16", "--out", d.join("all").to_str().unwrap()]);
+    assert!(stdout.contains("mean 0.0000°, max 0.0000°"), "{stdout}");
+    // a grey map is a height map
+    let grey = d.join("h.png");
+    image::GrayImage::from_fn(8, 8, |x, _| image::Luma([x as u8 * 30])).save(&grey).unwrap();
+    let (code, stdout, err) = bumprtl(&["quantize", grey.to_str().unwrap(), "--size", "8", "--out", d.join("h").to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(stdout.contains("a height map") && stdout.contains("plane over 8 neighbours"), "{stdout}");
+}
+
+#[test]
+fn quantize_refuses_a_bad_map_in_one_line_and_writes_nothing() {
+    let d = scratch("quantize-bad");
+    let (empty, text) = (d.join("e.png"), d.join("t.png"));
+    std::fs::write(&empty, b"").unwrap();
+    std::fs::write(&text, b"not a png").unwrap();
+    for (map, what) in [(&empty, "empty"), (&text, "not a PNG"), (&d.join("absent.png"), "cannot read")] {
+        let out = d.join("out");
+        let (code, _, err) = bumprtl(&["quantize", map.to_str().unwrap(), "--size", "16", "--out", out.to_str().unwrap()]);
+        assert_ne!(code, 0);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(map.to_str().unwrap()) && err.contains(what), "{err}");
+        assert!(!out.exists());
+    }
+    for (bad, what) in [(["--size", "0", "--q", "8"], "size"), (["--size", "16385", "--q", "8"], "size"), (["--size", "16", "--q", "5"], "4 or 8")] {
+        let args = [&["quantize", empty.to_str().unwrap(), "--out", "x"][..], &bad[..]].concat();
+        let (code, _, err) = bumprtl(&args);
+        assert_ne!(code, 0, "{bad:?}");
+        assert!(err.contains(what), "{bad:?}: {err}");
+    }
+}

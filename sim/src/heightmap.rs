@@ -40,11 +40,12 @@ fn bilinear(g: &[f64], w: usize, h: usize, x: f64, y: f64) -> f64 {
 
 const PNG_SIGNATURE: &[u8] = b"\x89PNG\r\n\x1a\n";
 
-pub fn load(path: &Path) -> Result<Loaded, String> {
+/// A PNG of at least 2 × 2 pixels, or one line naming the file and what is wrong (`what`: "height map", …).
+pub fn read_png(path: &Path, what: &str) -> Result<image::DynamicImage, String> {
     let name = path.display();
-    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the height map: {e}"))?;
+    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the {what}: {e}"))?;
     if bytes.is_empty() {
-        return Err(format!("{name}: the height map is an empty file"));
+        return Err(format!("{name}: the {what} is an empty file"));
     }
     if !bytes.starts_with(PNG_SIGNATURE) {
         return Err(format!("{name}: not a PNG file (it does not start with the PNG signature)"));
@@ -53,13 +54,65 @@ pub fn load(path: &Path) -> Result<Loaded, String> {
         .map_err(|e| format!("{name}: not a readable PNG: {e}"))?;
     let (w, h) = (img.width() as usize, img.height() as usize);
     if w < 2 || h < 2 {
-        return Err(format!("{name}: {w} × {h} pixels; a height map needs at least 2 × 2"));
+        return Err(format!("{name}: {w} × {h} pixels; a {what} needs at least 2 × 2"));
     }
-    let mut notes = vec![];
+    Ok(img)
+}
+
+/// Bits a channel of the image holds (8 or 16).
+pub fn depth(img: &image::DynamicImage) -> u16 {
+    img.color().bits_per_pixel() / img.color().channel_count() as u16
+}
+
+/// Whether the image is greyscale (with or without alpha).
+pub fn is_grey(img: &image::DynamicImage) -> bool {
     use image::ColorType::*;
-    let depth = img.color().bits_per_pixel() / img.color().channel_count() as u16;
-    let grey: Vec<f64> = match img.color() {
-        L8 | L16 | La8 | La16 => {
+    matches!(img.color(), L8 | L16 | La8 | La16)
+}
+
+/// A grey image's values in [0, 1] (8 or 16 bits), row-major.
+pub fn grey_values(img: &image::DynamicImage) -> Vec<f64> {
+    if depth(img) == 16 {
+        img.to_luma16().pixels().map(|p| p.0[0] as f64 / 65_535.0).collect()
+    } else {
+        img.to_luma8().pixels().map(|p| p.0[0] as f64 / 255.0).collect()
+    }
+}
+
+/// A tangent-space normal map's normals from an RGB(A) image, in the OpenGL frame (x right, y up the image, z out):
+/// each channel c in 0..=max read as 2c/max − 1, green negated for a DirectX (green-down) map, then normalised.
+/// A zero-length texel (all channels at the middle) comes out straight out of the surface, and is counted.
+pub fn normal_values(img: &image::DynamicImage, green_down: bool) -> (Vec<[f64; 3]>, usize) {
+    let rgb: Vec<[f64; 3]> = if depth(img) == 16 {
+        img.to_rgb16().pixels().map(|p| p.0.map(|c| 2.0 * c as f64 / 65_535.0 - 1.0)).collect()
+    } else {
+        img.to_rgb8().pixels().map(|p| p.0.map(|c| 2.0 * c as f64 / 255.0 - 1.0)).collect()
+    };
+    let mut zero = 0;
+    let n = rgb
+        .into_iter()
+        .map(|[x, y, z]| {
+            let y = if green_down { -y } else { y };
+            let l = (x * x + y * y + z * z).sqrt();
+            if l < 1e-6 {
+                zero += 1;
+                [0.0, 0.0, 1.0]
+            } else {
+                [x / l, y / l, z / l]
+            }
+        })
+        .collect();
+    (n, zero)
+}
+
+pub fn load(path: &Path) -> Result<Loaded, String> {
+    let name = path.display();
+    let img = read_png(path, "height map")?;
+    let (w, h) = (img.width() as usize, img.height() as usize);
+    let mut notes = vec![];
+    let depth = depth(&img);
+    let grey: Vec<f64> = match is_grey(&img) {
+        true => {
             if img.color().has_alpha() {
                 notes.push(format!("{name}: its alpha channel is ignored"));
             }
@@ -69,7 +122,7 @@ pub fn load(path: &Path) -> Result<Loaded, String> {
                 img.to_luma8().pixels().map(|p| p.0[0] as f64 / 255.0).collect()
             }
         }
-        _ => {
+        false => {
             notes.push(format!(
                 "{name}: a colour PNG ({} channels, {depth}-bit), read as its luma 0.2126 R + 0.7152 G + 0.0722 B",
                 img.color().channel_count()
