@@ -206,6 +206,9 @@ macro_rules! unit_table {
                     ("unit$2$out", "as unit$0$out"),
                 ];
                 palette_lookup: $crate::palette_lookup::MODEL, rtl::palette_lookup::PaletteLookup<8, 9>, [];
+                table_builder: $crate::table_builder::MODEL, rtl::table_builder::TableBuilder, [
+                    ("diffuse$valid_out", "the two dot products run in lockstep; the highlight's valid is used"),
+                ];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];
