@@ -59,7 +59,7 @@ pub fn sq1_10(v: [f64; 3]) -> [i64; 3] {
 /// Any normal (S10, zero included), unit L and H (Sq1.10), any C and specular colour.
 fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
     use rand::Rng;
-    let mut dir = |rng: &mut dyn rand::RngCore| sq1_10([rng.gen_range(-1.0..1.0), rng.gen_range(-0.2..1.0), rng.gen_range(-1.0..1.0)]);
+    let dir = |rng: &mut dyn rand::RngCore| sq1_10([rng.gen_range(-1.0..1.0), rng.gen_range(-0.2..1.0), rng.gen_range(-1.0..1.0)]);
     let (l, h) = (dir(rng), dir(rng));
     let mut v = random_inputs(rng);
     for c in 0..3 {
