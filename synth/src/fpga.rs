@@ -124,7 +124,8 @@ pub struct Cells {
 }
 
 /// The hard blocks (DSP, block RAM) synthesis kept inside each of a design's top-level instances, read from the
-/// cells' names (yosys keeps a flattened cell's instance path in its name: `unit$0.mul1.s3_p.d_MULT18X18D_P0`).
+/// cells' names (yosys keeps a flattened cell's instance path in its name: `unit$0.mul1.s3_p.d_MULT18X18D_P0`,
+/// `lookup.ram.mem.0.0`); yosys lists each type apart, so the type never rests on the name.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Blocks {
     /// (instance, DSP, BRAM), in name order; `-` for cells at the top level
@@ -132,31 +133,34 @@ pub struct Blocks {
 }
 
 impl Blocks {
-    fn parse(family: Family, text: &str) -> Blocks {
-        Blocks::parse_under(family, text, "")
-    }
-
-    /// The same for a unit inside a wrapper: the cells' names begin with `prefix` (the unit's instance and a dot).
-    fn parse_under(family: Family, text: &str, prefix: &str) -> Blocks {
-        let [_, _, dsp, bram, _] = family.cells();
+    /// From yosys's `select -list` of the DSP cells and of the block RAM cells (`module/cell` lines); the cells'
+    /// names begin with `prefix` when the unit sits in a wrapper (its instance and a dot).
+    fn parse(dsp: &str, bram: &str, prefix: &str) -> Blocks {
         let mut m: std::collections::BTreeMap<String, (u64, u64)> = Default::default();
-        for line in text.lines() {
-            let Some((_, cell)) = line.trim().split_once('/') else { continue };
-            let cell = cell.trim_start_matches('\\');
-            let cell = cell.strip_prefix(prefix).unwrap_or(cell);
-            let inst = cell.split_once('.').map(|(i, _)| i).unwrap_or("-").to_string();
-            let e = m.entry(inst).or_default();
-            if cell.contains(&format!("_{dsp}")) {
-                e.0 += 1;
-            } else if cell.contains(&format!("_{bram}")) {
-                e.1 += 1;
+        for (k, text) in [(0, dsp), (1, bram)] {
+            for line in text.lines() {
+                let Some((_, cell)) = line.trim().split_once('/') else { continue };
+                let cell = cell.trim_start_matches('\\');
+                let cell = cell.strip_prefix(prefix).unwrap_or(cell);
+                let inst = cell.split_once('.').map(|(i, _)| i).unwrap_or("-").to_string();
+                let e = m.entry(inst).or_default();
+                if k == 0 {
+                    e.0 += 1;
+                } else {
+                    e.1 += 1;
+                }
             }
         }
         Blocks { by_instance: m.into_iter().map(|(k, (d, b))| (k, d, b)).collect() }
     }
 
+    fn read_under(dir: &Path, top: &str, family: Family, prefix: &str) -> Blocks {
+        let list = |kind: &str| std::fs::read_to_string(dir.join(format!("{top}.{family:?}.{kind}"))).unwrap_or_default();
+        Blocks::parse(&list("dsp"), &list("bram"), prefix)
+    }
+
     fn read(dir: &Path, top: &str, family: Family) -> Blocks {
-        Blocks::parse(family, &std::fs::read_to_string(dir.join(format!("{top}.{family:?}.blocks"))).unwrap_or_default())
+        Blocks::read_under(dir, top, family, "")
     }
 
     /// `name:dsp:bram,...`, for the saved report.
@@ -268,7 +272,7 @@ fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Optio
         let _ = write!(script, " -json {j}");
     }
     let [_, _, dsp, bram, _] = family.cells();
-    let _ = write!(script, "; tee -q -o {top}.{family:?}.blocks select -list t:{dsp} t:{bram}; stat");
+    let _ = write!(script, "; tee -q -o {top}.{family:?}.dsp select -list t:{dsp}; tee -q -o {top}.{family:?}.bram select -list t:{bram}; stat");
     let log = format!("{top}.{}.yosys.log", family.synth_command().split_whitespace().next().unwrap_or("synth"));
     tools::run(dir, "yosys", &["-q", "-p", &script, "-l", &log])?;
     std::fs::read_to_string(dir.join(&log)).map_err(|e| format!("no yosys log: {e}"))
@@ -279,7 +283,7 @@ fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Optio
 pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
     let v = export::<U>();
     v.write(dir)?;
-    let key = format!("{}\n{KEEP_OPERAND_COPIES}\nblocks\n{}", family.synth_command(), v.text);
+    let key = format!("{}\n{KEEP_OPERAND_COPIES}\nblocks by type\n{}", family.synth_command(), v.text);
     let (stamp, saved) = (dir.join(format!("{family:?}.cells.stamp")), dir.join(format!("{family:?}.cells")));
     if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
         let n: Vec<u64> = std::fs::read_to_string(&saved).unwrap_or_default().split_whitespace().filter_map(|x| x.parse().ok()).collect();
@@ -328,8 +332,7 @@ pub fn synth_tied<U: StreamUnit>(dir: &Path, family: Family, tag: &str, ties: &[
     let w = format!("{top}.v");
     write_atomic(&dir.join(&w), text.as_bytes())?;
     let log = yosys_with(dir, family, &top, &[&format!("{}.v", U::NAME), &w], None, "proc")?;
-    let list = std::fs::read_to_string(dir.join(format!("{top}.{family:?}.blocks"))).unwrap_or_default();
-    Ok((cells(family, &log), Blocks::parse_under(family, &list, "dut.")))
+    Ok((cells(family, &log), Blocks::read_under(dir, &top, family, "dut.")))
 }
 
 /// The hard blocks of each top-level instance of the unit, as its last `synth_unit` in `dir` left them.
@@ -481,7 +484,7 @@ impl SynthReport {
 /// `synth_and_place`, reusing the figures of an earlier run in `dir` when the unit's Verilog, the wrapper, the part
 /// and the target frequency are all unchanged (place-and-route takes minutes; the demo asks for it on every run).
 pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
-    let key = format!("{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}\nblocks", export::<U>().text, wrapper::<U>(), part.name);
+    let key = format!("{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}\nblocks by type", export::<U>().text, wrapper::<U>(), part.name);
     let (stamp, saved) = (dir.join("report.stamp"), dir.join("report.txt"));
     if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
         if let Some(r) = std::fs::read_to_string(&saved).ok().as_deref().and_then(SynthReport::from_text) {
@@ -517,10 +520,13 @@ mod tests {
 
     #[test]
     fn hard_blocks_are_counted_by_the_instance_their_names_begin_with() {
-        let list = "texture_filter/unit$0.mul0.s3_p.d_MULT18X18D_P0\ntexture_filter/unit$0.mul1.s3_p.d_MULT18X18D_P0\n\
-                    texture_filter/norm.s6_r.q_DP16KD_DOA0\ntexture_filter/norm.s2_sq$0$d_MULT18X18D_P0\ntexture_filter/x_DP16KD\n";
-        let b = Blocks::parse(Family::Ecp5, list);
-        assert_eq!(b.by_instance, vec![("-".into(), 0, 1), ("norm".into(), 1, 1), ("unit$0".into(), 2, 0)]);
+        let dsp = "texture_filter/unit$0.mul0.s3_p.d_MULT18X18D_P0\ntexture_filter/unit$0.mul1.s3_p.d_MULT18X18D_P0\n\
+                   texture_filter/norm.s2_sq$0$d_MULT18X18D_P0\n";
+        let bram = "texture_filter/norm.s6_r.q_DP16KD_DOA0\ntexture_filter/lookup.ram.mem.0.0\ntexture_filter/x\n";
+        let b = Blocks::parse(dsp, bram, "");
+        assert_eq!(b.by_instance, vec![("-".into(), 0, 1), ("lookup".into(), 0, 1), ("norm".into(), 1, 1), ("unit$0".into(), 2, 0)]);
+        let wrapped = Blocks::parse("w/dut.unit$0.mul0.x\n", "", "dut.");
+        assert_eq!(wrapped.by_instance, vec![("unit$0".into(), 1, 0)]);
         assert_eq!(Blocks::from_text(&b.to_text()), b);
     }
 

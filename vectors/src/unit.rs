@@ -209,6 +209,9 @@ macro_rules! unit_table {
                 table_builder: $crate::table_builder::MODEL, rtl::table_builder::TableBuilder, [
                     ("diffuse$valid_out", "the two dot products run in lockstep; the highlight's valid is used"),
                 ];
+                palette_pipeline: $crate::palette_pipeline::MODEL, rtl::palette_pipeline::PalettePipeline, [
+                    ("diffuse$valid_out", "as in table_builder"),
+                ];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];

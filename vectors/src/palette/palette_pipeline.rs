@@ -1,0 +1,116 @@
+//! `palette_pipeline`: seed 004's rendering phase as one block: the table builder (`table_builder`) writing the next
+//! frame's colour table while the pixels of this frame read theirs (`palette_lookup`), one normal and one pixel a
+//! clock. The pixel's index and frame wait beside the builder, so a write and a read meet the table RAM in the order
+//! their vectors came, whatever the idle clocks between them: a pixel sees every entry built by the vectors before
+//! it in the table it reads, and a frame never reads the table being built (writes go to table !frame).
+//!
+//! A vector: the pixel (`frame`, `idx`) and, when `build` = 1, one palette normal to shade into entry `b_idx` of
+//! the other table (the normal, L, H, C and the specular colour of `table_builder`). The model is `table_builder`'s
+//! entry fed to `palette_lookup`'s stream, at 8 index bits (s_N up to 256).
+
+use crate::palette::{palette_lookup, table_builder};
+use crate::unit::UnitModel;
+
+crate::ports! {
+    inputs: [
+        frame: u 1, idx: u 8, build: u 1, b_idx: u 8, n_x: s 10, n_y: s 10, n_z: s 10, l_x: s 12, l_y: s 12, l_z: s 12,
+        h_x: s 12, h_y: s 12, h_z: s 12, conc: u 8, spec_r: u 8, spec_g: u 8, spec_b: u 8,
+    ],
+    outputs: [
+        out_r: u 8, out_g: u 8, out_b: u 8, out_a: u 8,
+    ],
+}
+
+/// The lookup's vector for one of ours: the pixel, and the built entry packed (r in the low byte) when building.
+fn lookup_vector(v: &[i64]) -> Vec<i64> {
+    use input::*;
+    let e = table_builder::exact([v[n_x], v[n_y], v[n_z]], [v[l_x], v[l_y], v[l_z]], [v[h_x], v[h_y], v[h_z]], v[conc], [v[spec_r], v[spec_g], v[spec_b]]);
+    let packed = e[0] | e[1] << 8 | e[2] << 16 | e[3] << 24;
+    vec![v[frame], v[idx], v[build], v[b_idx], if v[build] == 1 { packed } else { 0 }]
+}
+
+pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+    let l: Vec<Vec<i64>> = inputs.iter().map(|v| lookup_vector(v)).collect();
+    palette_lookup::run_with(8, &l)
+}
+
+fn exact_ports(v: &[i64]) -> Vec<i64> {
+    run(&[v.to_vec()]).remove(0)
+}
+
+/// A palette normal to build into entry `e` while pixel `p` of frame `f` is read.
+pub fn build(f: i64, p: i64, e: i64, n: [i64; 3], conc: i64) -> Vec<i64> {
+    let up = [0, 1024, 0];
+    let l = table_builder::sq1_10([0.3, 1.0, 0.2]);
+    [vec![f, p, 1, e], n.to_vec(), l.to_vec(), up.to_vec(), vec![conc, 255, 200, 120]].concat()
+}
+
+/// A pixel alone.
+pub fn pixel(f: i64, p: i64) -> Vec<i64> {
+    [vec![f, p, 0, 0], vec![0; 9], vec![0, 0, 0, 0]].concat()
+}
+
+fn normal_of(e: i64) -> [i64; 3] {
+    // a fan of normals over the hemisphere, one per entry
+    let a = e as f64 * 0.7;
+    let t = (e % 16) as f64 / 16.0 * 1.4;
+    [(t.sin() * a.cos() * 400.0) as i64, (t.cos() * 400.0) as i64 + 50, (t.sin() * a.sin() * 400.0) as i64]
+}
+
+/// Frame 0 shown while table 1 is built (all 256 entries), the flip, frame 1's pixels reading it while table 0 is
+/// built with other light (a different C), the flip back; pixels read every entry between; a build and a read of the
+/// same entry in one vector, and the flip straight after the last build.
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    let mut v = vec![];
+    for e in 0..256 {
+        v.push(build(0, e, e, normal_of(e), 96));
+    }
+    for e in 0..256 {
+        v.push(build(1, 255 - e, e, normal_of(e), 250)); // frame 1 shows table 1, table 0 is built
+    }
+    for e in 0..256 {
+        v.push(pixel(0, e));
+    }
+    v.push(build(1, 7, 7, [0, 0, 0], 0)); // a zero-length normal into entry 7 of table 0, pixel 7 of table 1
+    v.push(pixel(0, 7));
+    v.push(pixel(1, 7));
+    v
+}
+
+/// Pixels and builds at random, flips at random: with the stream the hard cases leave every entry written.
+fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    use rand::Rng;
+    let mut v = random_inputs(rng);
+    let (l, h) = (table_builder::sq1_10([rng.gen_range(-1.0..1.0), 1.0, rng.gen_range(-1.0..1.0)]), table_builder::sq1_10([rng.gen_range(-0.5..0.5), 1.0, rng.gen_range(-0.5..0.5)]));
+    for c in 0..3 {
+        v[input::l_x + c] = l[c];
+        v[input::h_x + c] = h[c];
+    }
+    v
+}
+
+pub static MODEL: UnitModel = UnitModel::new("palette_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_frame_shows_only_the_table_built_for_it() {
+        let mut v = vec![];
+        for e in 0..4 {
+            v.push(build(0, 0, e, normal_of(e), 96)); // table 1 built while frame 0 is shown
+        }
+        v.push(pixel(0, 2));
+        v.push(pixel(1, 2));
+        v.push(build(1, 2, 2, [0, -400, 0], 96)); // entry 2 of table 0 facing away, while frame 1 reads table 1
+        v.push(pixel(1, 2));
+        v.push(pixel(0, 2));
+        let o = run(&v);
+        let want = table_builder::exact(normal_of(2), table_builder::sq1_10([0.3, 1.0, 0.2]), [0, 1024, 0], 96, [255, 200, 120]);
+        assert_eq!(o[4], vec![0; 4], "frame 0 reads table 0, still empty");
+        assert_eq!(o[5], want.to_vec(), "frame 1 reads the table built for it");
+        assert_eq!(o[7], want.to_vec(), "and does not see table 0 being rebuilt");
+        assert_eq!(o[8], vec![0; 4], "facing away: a black entry in table 0");
+    }
+}
