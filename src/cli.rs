@@ -92,6 +92,16 @@ enum Cmd {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Table 1 of Tarini et al. (2000) on this machine: the per-frame colour table's time for 256, 2048 and 16,384
+    /// normals under four lighting models, beside the paper's, with the rtl builder's and the errors
+    PaletteTable {
+        /// skip placing the table builder (its fmax gives the rtl column)
+        #[arg(long)]
+        no_synth: bool,
+        /// working folder for the tools' files
+        #[arg(long, default_value = "target/synth")]
+        dir: PathBuf,
+    },
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
         #[arg(long, default_value = "out/demo")]
@@ -289,6 +299,20 @@ pub fn main() -> Result<(), String> {
         Cmd::Quantize { map, size, dither, green_down, relief, q, out } => {
             let args = crate::quantize::Args { map: &map, size: size as usize, dither, green_down, relief, q, out: &out };
             crate::quantize::run(&args)?
+        }
+        Cmd::PaletteTable { no_synth, dir } => {
+            let tools = synth::tools::missing(&["yosys"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
+            let fmax = if no_synth || !tools {
+                if !no_synth {
+                    println!("the rtl column needs yosys and nextpnr-ecp5 (`bash .ci/run` installs them)");
+                }
+                None
+            } else {
+                let part = synth::fpga::ECP5_25F;
+                let d = dir.join("table_builder").join(part.name);
+                synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(&d, part, part.default_freq())?.fmax_mhz
+            };
+            crate::palette_table::run(fmax)?
         }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

@@ -3,6 +3,7 @@
 mod cli;
 mod demo;
 mod hardware;
+mod palette_table;
 mod quantize;
 mod report;
 
