@@ -39,11 +39,14 @@ pub fn table_entry(idx: u64, t: u32) -> u64 {
 
 /// Leading-zero pairs of a nonzero U20: the largest e with s·4^e < 2^20.
 pub fn norm_shift(s: u64) -> u32 {
-    let mut e = 0;
-    while s << (2 * (e + 1)) < (1 << 20) {
-        e += 1;
-    }
-    e
+    // s·4^e < 2^20 holds while 2e + 1 + ⌊log2 s⌋ < 20, i.e. 2e < 19 − ⌊log2 s⌋ (s ≥ 1)
+    (19 - (63 - s.leading_zeros())) / 2
+}
+
+/// The seed table at the rtl's size, built once: `table_entry` for every index.
+fn seed_table() -> &'static [u64] {
+    static T: std::sync::OnceLock<Vec<u64>> = std::sync::OnceLock::new();
+    T.get_or_init(|| (0..1u64 << TABLE_BITS).map(|i| table_entry(i, TABLE_BITS)).collect())
 }
 
 pub fn exact(v: [i64; 3]) -> [i64; 3] {
@@ -57,7 +60,8 @@ pub fn exact_with(v: [i64; 3], t: u32, newton: u32) -> [i64; 3] {
     }
     let e = norm_shift(s);
     let sn = s << (2 * e); // U20, [2^18, 2^20)
-    let mut r = table_entry(truncate(sn as i64, 20 - t) as u64, t) as i64; // the top t bits of U20 (floor) index a U13, Q1.12
+    let idx = truncate(sn as i64, 20 - t) as u64; // the top t bits of U20 (floor) index a U13, Q1.12
+    let mut r = if t == TABLE_BITS { seed_table()[idx as usize] } else { table_entry(idx, t) } as i64;
     for _ in 0..newton {
         let m = truncate(sn as i64, 8); // U20 → Q2.10 (floor)
         let t2 = truncate(m * r * r, 10); // Q2.10 × Q1.12² = Q.34 → Q.24 (floor)
@@ -175,5 +179,16 @@ mod tests {
         };
         assert!(err(6, 1) < err(6, 0));
         assert!(err(10, 0) < err(6, 0));
+    }
+}
+
+#[cfg(test)]
+mod shift_tests {
+    #[test]
+    fn norm_shift_is_the_largest_e_with_s_times_4_to_the_e_below_2_to_the_20() {
+        for s in 1u64..(1 << 20) {
+            let e = super::norm_shift(s);
+            assert!(s << (2 * e) < (1 << 20) && s << (2 * (e + 1)) >= (1 << 20), "s = {s}, e = {e}");
+        }
     }
 }
