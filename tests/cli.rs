@@ -297,3 +297,16 @@ fn quantize_refuses_a_bad_map_in_one_line_and_writes_nothing() {
         assert!(err.contains(what), "{bad:?}: {err}");
     }
 }
+
+#[test]
+fn palette_table_prints_table_1_with_its_added_columns() {
+    let (code, out, err) = bumprtl(&["palette-table", "--no-synth"]);
+    assert_eq!(code, 0, "{err}");
+    for model in ["Lambert ", "Lambert + specular", "chrome", "environment"] {
+        let rows: Vec<&str> = out.lines().filter(|l| l.starts_with(model)).collect();
+        assert_eq!(rows.len(), if model == "Lambert " { 6 } else { 3 }, "{model}: {out}");
+    }
+    // the paper's 16,348-normal Lambert + specular figure stands beside this machine's
+    assert!(out.lines().any(|l| l.starts_with("Lambert + specular") && l.contains("16384") && l.contains("12.5")), "{out}");
+    assert!(out.contains("angle mean/max") && out.contains("image LSB mean/max"));
+}
