@@ -7,6 +7,7 @@
 
 use std::time::Instant;
 use vectors::palette::{plane_fit, quantize, table_builder, tables};
+use vectors::stats::unit;
 
 /// The paper's per-frame overhead, ms, for (256, 2048, 16,348 normals): Lambert, L + specular, chrome, environment.
 const PAPER_MS: [[f64; 3]; 4] = [[0.0, 0.3, 3.9], [0.1, 1.2, 12.5], [0.0, 0.7, 8.6], [0.1, 1.7, 18.3]];
@@ -45,16 +46,8 @@ fn per_call(mut f: impl FnMut()) -> f64 {
 pub fn run(fmax_mhz: Option<f64>) -> Result<(), String> {
     let normals = normal_map();
     let view = [0.0, 1.0, 0.0];
-    let light = {
-        let l = [0.5f64, 0.8, 0.3];
-        let n = (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]).sqrt();
-        l.map(|c| c / n)
-    };
-    let half = {
-        let s = [0, 1, 2].map(|c| light[c] + view[c]);
-        let n = (s[0] * s[0] + s[1] * s[1] + s[2] * s[2]).sqrt();
-        s.map(|c| c / n)
-    };
+    let light = unit([0.5, 0.8, 0.3]);
+    let half = unit([0, 1, 2].map(|c| light[c] + view[c]));
     let (lq, hq) = (table_builder::sq1_10(light), table_builder::sq1_10(half));
     let (conc, spec) = (96, [255, 240, 200]);
     // the builder's entry from a palette normal as the palette stores it (S10, once per map): Lambert alone reads α,

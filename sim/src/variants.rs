@@ -3,18 +3,13 @@
 //! ordinary bilinear colour filter on the same texture, each against an f64 reference.
 
 use vectors::height::filters::{self, Filter, Grid};
-use vectors::stats::ErrorStats;
+use vectors::stats::{unit, ErrorStats};
 
 /// The FIG. 8 map's side: coarse, so that each method's texel grid shows when magnified.
 pub const FIG8_TEXELS: usize = 16;
 
 /// The FIG. 8 light: low, from +x and a little +z.
 pub const FIG8_LIGHT: [f64; 3] = [0.77, 0.5, 0.4];
-
-fn unit(v: [f64; 3]) -> [f64; 3] {
-    let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    v.map(|c| c / l)
-}
 
 /// The demo's procedural heights on a coarse map: the codes (8-bit) and scale, and the same heights in reals.
 pub fn fig8_map(relief: f64) -> (Vec<i64>, i64, Vec<f64>) {

@@ -32,6 +32,17 @@ impl ErrorStats {
     }
 }
 
+/// The dot product of two 3-vectors.
+pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// A 3-vector scaled to unit length; a zero vector stays as it is.
+pub fn unit(v: [f64; 3]) -> [f64; 3] {
+    let l = dot(v, v).sqrt();
+    if l > 0.0 { v.map(|c| c / l) } else { v }
+}
+
 /// Angle in degrees between two 3-vectors; zero-length vectors give NaN (callers decide what that means).
 pub fn angle_deg(a: [f64; 3], b: [f64; 3]) -> f64 {
     let la = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();

@@ -12,13 +12,11 @@
 /// The most k-means rounds.
 pub const KMEANS_ROUNDS: usize = 12;
 
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
+use crate::stats::dot;
 
+/// A mean or a sum of normals at unit length; one that cancels to zero is taken as straight up.
 fn unit(v: [f64; 3]) -> [f64; 3] {
-    let l = dot(v, v).sqrt();
-    if l > 0.0 { v.map(|c| c / l) } else { [0.0, 1.0, 0.0] }
+    if dot(v, v) > 0.0 { crate::stats::unit(v) } else { [0.0, 1.0, 0.0] }
 }
 
 /// A quantized normal map.

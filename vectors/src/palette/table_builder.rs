@@ -52,8 +52,7 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
 
 /// A unit vector as Sq1.10, rounded.
 pub fn sq1_10(v: [f64; 3]) -> [i64; 3] {
-    let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    v.map(|c| (c / l * 1024.0).round() as i64)
+    crate::stats::unit(v).map(|c| (c * 1024.0).round() as i64)
 }
 
 /// Any normal (S10, zero included), unit L and H (Sq1.10), any C and specular colour.

@@ -4,14 +4,7 @@
 //! reference. The hardware builder (`table_builder`, to come) computes the Lambert and specular terms through the
 //! project's `normalise`, `dot3` and `gloss` units; `exact_lambert_specular` is that arithmetic.
 
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn unit(v: [f64; 3]) -> [f64; 3] {
-    let l = dot(v, v).sqrt();
-    if l > 0.0 { v.map(|c| c / l) } else { v }
-}
+use crate::stats::{dot, unit};
 
 /// A rotation as its three rows; `to_object` applies its inverse (the transpose).
 pub type Rotation = [[f64; 3]; 3];
