@@ -18,25 +18,9 @@ pub struct Args<'a> {
     pub out: &'a Path,
 }
 
-/// A PNG written whole or not at all.
-fn write_png<P: image::Pixel<Subpixel = S> + image::PixelWithColorType, S: image::Primitive>(
-    path: &Path,
-    img: &image::ImageBuffer<P, Vec<S>>,
-) -> Result<(), String>
-where
-    [S]: image::EncodableLayout,
-{
-    let tmp = path.with_extension("png.partial");
-    img.save_with_format(&tmp, image::ImageFormat::Png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        format!("cannot write {}: {e}", path.display())
-    })
-}
-
 fn index_png(path: &Path, index: &[u32], w: usize, h: usize) -> Result<(), String> {
     let img = image::ImageBuffer::<image::Luma<u16>, Vec<u16>>::from_fn(w as u32, h as u32, |x, y| image::Luma([index[y as usize * w + x as usize] as u16]));
-    write_png(path, &img)
+    sim::render::save_png(path, &img)
 }
 
 pub fn run(a: &Args) -> Result<(), String> {
@@ -56,6 +40,7 @@ pub fn run(a: &Args) -> Result<(), String> {
         let (n, zero) = sim::heightmap::normal_values(&img, a.green_down);
         let conv = if a.green_down { "DirectX, green down" } else { "OpenGL, green up" };
         let z = if zero > 0 { format!("; {zero} zero-length texels read as straight out") } else { String::new() };
+        let z = if img.color().has_alpha() { format!("{z}; its alpha channel is ignored") } else { z };
         (n, format!("an RGB PNG: a tangent-space normal map ({conv}){z}"))
     };
     let normals_s = t.elapsed().as_secs_f64();
@@ -89,7 +74,7 @@ pub fn run(a: &Args) -> Result<(), String> {
             None => image::Rgb([0, 0, 0]),
         }
     });
-    write_png(&a.out.join("palette.png"), &swatch)?;
+    sim::render::save_png(&a.out.join("palette.png"), &swatch)?;
     index_png(&a.out.join("index.png"), &index, w, h)?;
     let raw: Vec<u8> = index.iter().flat_map(|&i| (i as u16).to_le_bytes()).collect();
     synth::export::write_atomic(&a.out.join("index.raw"), &raw)?;

@@ -35,7 +35,7 @@ fn bilinear(g: &[f64], w: usize, h: usize, x: f64, y: f64) -> f64 {
     let (i1, j1) = ((i0 + 1).min(w - 1), (j0 + 1).min(h - 1));
     let (fx, fy) = (x - i0 as f64, y - j0 as f64);
     let at = |i: usize, j: usize| g[j * w + i];
-    (1.0 - fy) * ((1.0 - fx) * at(i0, j0) + fx * at(i1, j0)) + fy * ((1.0 - fx) * at(i0, j1) + fx * at(i1, j1))
+    vectors::bilinear::ideal_channel(at(i0, j0), at(i1, j0), at(i0, j1), at(i1, j1), fx, fy)
 }
 
 const PNG_SIGNATURE: &[u8] = b"\x89PNG\r\n\x1a\n";
@@ -79,15 +79,21 @@ pub fn grey_values(img: &image::DynamicImage) -> Vec<f64> {
     }
 }
 
+/// A colour image's channels as they are stored (0..=255 or 0..=65,535), row-major, and the largest value.
+fn rgb_values(img: &image::DynamicImage) -> (Vec<[f64; 3]>, f64) {
+    if depth(img) == 16 {
+        (img.to_rgb16().pixels().map(|p| p.0.map(|c| c as f64)).collect(), 65_535.0)
+    } else {
+        (img.to_rgb8().pixels().map(|p| p.0.map(|c| c as f64)).collect(), 255.0)
+    }
+}
+
 /// A tangent-space normal map's normals from an RGB(A) image, in the OpenGL frame (x right, y up the image, z out):
 /// each channel c in 0..=max read as 2c/max − 1, green negated for a DirectX (green-down) map, then normalised.
 /// A zero-length texel (all channels at the middle) comes out straight out of the surface, and is counted.
 pub fn normal_values(img: &image::DynamicImage, green_down: bool) -> (Vec<[f64; 3]>, usize) {
-    let rgb: Vec<[f64; 3]> = if depth(img) == 16 {
-        img.to_rgb16().pixels().map(|p| p.0.map(|c| 2.0 * c as f64 / 65_535.0 - 1.0)).collect()
-    } else {
-        img.to_rgb8().pixels().map(|p| p.0.map(|c| 2.0 * c as f64 / 255.0 - 1.0)).collect()
-    };
+    let (raw, top) = rgb_values(img);
+    let rgb: Vec<[f64; 3]> = raw.iter().map(|p| p.map(|c| 2.0 * c / top - 1.0)).collect();
     let mut zero = 0;
     let n = rgb
         .into_iter()
@@ -116,23 +122,15 @@ pub fn load(path: &Path) -> Result<Loaded, String> {
             if img.color().has_alpha() {
                 notes.push(format!("{name}: its alpha channel is ignored"));
             }
-            if depth == 16 {
-                img.to_luma16().pixels().map(|p| p.0[0] as f64 / 65_535.0).collect()
-            } else {
-                img.to_luma8().pixels().map(|p| p.0[0] as f64 / 255.0).collect()
-            }
+            grey_values(&img)
         }
         false => {
             notes.push(format!(
                 "{name}: a colour PNG ({} channels, {depth}-bit), read as its luma 0.2126 R + 0.7152 G + 0.0722 B",
                 img.color().channel_count()
             ));
-            let luma = |r: f64, g: f64, b: f64| 0.2126 * r + 0.7152 * g + 0.0722 * b;
-            if depth == 16 {
-                img.to_rgb16().pixels().map(|p| luma(p.0[0] as f64, p.0[1] as f64, p.0[2] as f64) / 65_535.0).collect()
-            } else {
-                img.to_rgb8().pixels().map(|p| luma(p.0[0] as f64, p.0[1] as f64, p.0[2] as f64) / 255.0).collect()
-            }
+            let (rgb, top) = rgb_values(&img);
+            rgb.iter().map(|&[r, g, b]| (0.2126 * r + 0.7152 * g + 0.0722 * b) / top).collect()
         }
     };
     if depth == 16 {

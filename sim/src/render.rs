@@ -115,9 +115,23 @@ pub fn write_png(path: &Path, size: usize, rgb: impl Fn(usize) -> [u8; 3]) -> Re
     for k in 0..size * size {
         img.put_pixel((k % size) as u32, (k / size) as u32, image::Rgb(rgb(k)));
     }
+    save_png(path, &img)
+}
+
+/// Any image as PNG, whole or not at all: written beside the path, then renamed onto it.
+pub fn save_png<P: image::Pixel<Subpixel = S> + image::PixelWithColorType, S: image::Primitive>(
+    path: &Path,
+    img: &image::ImageBuffer<P, Vec<S>>,
+) -> Result<(), String>
+where
+    [S]: image::EncodableLayout,
+{
     let tmp = path.with_extension("png.partial");
     img.save_with_format(&tmp, image::ImageFormat::Png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| format!("cannot write {}: {e}", path.display()))
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!("cannot write {}: {e}", path.display())
+    })
 }
 
 /// Heat map of an error in [0, max]: black → red → yellow → white.

@@ -75,14 +75,12 @@ pub fn measure(s: &Surface, per: usize) -> Row {
 /// border (the derivative filters read a 4 × 4 block).
 pub fn measure_filter(f: Filter, s: &Surface, per: usize) -> Row {
     let n = s.texels;
-    let true_h: Vec<f64> = (0..n * n).map(|k| (s.h)((k % n) as f64 + 0.5, (k / n) as f64 + 0.5) - s.lo).collect();
+    let true_h = true_heights(s);
     let (mut codes, scale) = crate::height::height_normal::encode_heights_in(&true_h, 0.0, s.hi - s.lo, f.bits());
     if f.bits() == 4 {
         codes.iter_mut().for_each(|c| *c *= 2); // UQ3.1 into the 8-bit datapath's UQ6.2: exact
     }
-    // the true heights in the same code units (UQ6.2 steps: 4·m per texel of height, k = 16/m)
-    let m = (1 << crate::height::height_normal::SCALE_FRAC) as f64 / scale as f64;
-    let true_c: Vec<f64> = true_h.iter().map(|h| h * 4.0 * m).collect();
+    let true_c = in_code_units(&true_h, scale);
     let codes_f: Vec<f64> = codes.iter().map(|&c| c as f64).collect();
     // MIP level 1: the stored (rounded) codes, which the method in reals on the codes reads too; of the true heights
     let l1 = filters::mip_exact(&codes, n);
@@ -146,11 +144,21 @@ mod tests {
     }
 }
 
-/// A surface's true heights in 8-bit code units (UQ6.2 steps, ×m) and its scale k: the map a method in reals reads.
-pub fn codes_in_reals(s: &Surface) -> (Vec<f64>, i64) {
+/// The surface sampled at texel centres, above its lowest point (texel units).
+fn true_heights(s: &Surface) -> Vec<f64> {
     let n = s.texels;
-    let true_h: Vec<f64> = (0..n * n).map(|k| (s.h)((k % n) as f64 + 0.5, (k / n) as f64 + 0.5) - s.lo).collect();
-    let (_, scale) = crate::height::height_normal::encode_heights(&true_h, 0.0, s.hi - s.lo);
+    (0..n * n).map(|k| (s.h)((k % n) as f64 + 0.5, (k / n) as f64 + 0.5) - s.lo).collect()
+}
+
+/// Heights in texel units in the 8-bit codes' units for scale k (UQ6.2 steps: 4·m per texel, k = 16/m), unrounded.
+fn in_code_units(h: &[f64], scale: i64) -> Vec<f64> {
     let m = (1 << crate::height::height_normal::SCALE_FRAC) as f64 / scale as f64;
-    (true_h.iter().map(|h| h * 4.0 * m).collect(), scale)
+    h.iter().map(|x| x * 4.0 * m).collect()
+}
+
+/// A surface's true heights in 8-bit code units and its scale k: the map a method in reals reads.
+pub fn codes_in_reals(s: &Surface) -> (Vec<f64>, i64) {
+    let true_h = true_heights(s);
+    let (_, scale) = crate::height::height_normal::encode_heights(&true_h, 0.0, s.hi - s.lo);
+    (in_code_units(&true_h, scale), scale)
 }

@@ -56,22 +56,27 @@ pub fn write(frame: i64, idx: i64, addr: i64, data: i64) -> Vec<i64> {
     vec![frame, idx, 1, addr, data]
 }
 
-/// The entries the random vectors touch: the first 64 and the last 64 of each table, written by the hard cases.
+/// The entries the random vectors touch: the first 64 and the last 64 of each table (all of a smaller one), written
+/// by the hard cases.
 const REGION: i64 = 64;
+
+/// How many entries at each end of a table of `bits` index bits the region holds.
+fn region_end(bits: u32) -> i64 {
+    REGION.min((1i64 << bits) / 2).max(1)
+}
 
 fn in_region(rng: &mut dyn rand::RngCore, bits: u32) -> i64 {
     use rand::Rng;
-    let top = 1i64 << bits;
-    let k = rng.gen_range(0..2 * REGION.min(top / 2).max(1));
-    if k < REGION.min(top / 2).max(1) { k } else { top - 1 - (k - REGION.min(top / 2).max(1)) }
+    let n = region_end(bits);
+    let k = rng.gen_range(0..2 * n);
+    if k < n { k } else { (1i64 << bits) - 1 - (k - n) }
 }
 
 /// Both tables' first and last entries written (each write while the other table is read), then frames flipped
 /// back and forth with reads of entries just written, the index's ends, and a write and a read of the same entry
 /// in one vector (the write goes to the other table: the read must not see it).
 pub fn hard_cases_with(bits: u32) -> Vec<Vec<i64>> {
-    let top = 1i64 << bits;
-    let n = REGION.min(top / 2).max(1);
+    let (top, n) = (1i64 << bits, region_end(bits));
     let entries: Vec<i64> = (0..n).chain(top - n..top).collect();
     let data = |f: i64, e: i64| ((e * 2_654_435_761 + f * 97) % (1 << 32)) ^ 0x5a5a_5a5a;
     let mut v = vec![];
