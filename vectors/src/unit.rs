@@ -209,7 +209,10 @@ macro_rules! unit_table {
                 table_builder: $crate::table_builder::MODEL, rtl::table_builder::TableBuilder, [
                     ("diffuse$valid_out", "the two dot products run in lockstep; the highlight's valid is used"),
                 ];
-                palette_pipeline: $crate::palette_pipeline::MODEL, rtl::palette_pipeline::PalettePipeline, [
+                palette_pipeline: $crate::palette_pipeline::MODEL, rtl::palette_pipeline::PalettePipeline<8, 9>, [
+                    ("diffuse$valid_out", "as in table_builder"),
+                ];
+                palette_pipeline_12: $crate::palette_pipeline::MODEL_12, rtl::palette_pipeline::PalettePipeline<12, 13>, [
                     ("diffuse$valid_out", "as in table_builder"),
                 ];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];

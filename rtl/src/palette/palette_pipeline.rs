@@ -3,6 +3,8 @@
 //! vector's write and its read reach the table RAM together: a read sees every entry built by the vectors before it,
 //! however many idle clocks lie between them, and a flip of `frame` shows a table whose last entry has already
 //! landed. See `vectors::palette_pipeline`. Latency 34 = table_builder 31 + palette_lookup 3.
+//! `A` is the index width, ⌈log2 s_N⌉, and `R` = A + 1 the table RAM's address width: `PalettePipeline<8, 9>` is
+//! `palette_pipeline` (s_N up to 256), `PalettePipeline<12, 13>` is `palette_pipeline_12` (up to 4,096).
 
 use crate::delay::Delay;
 use crate::palette_lookup::{self, PaletteLookup};
@@ -12,14 +14,23 @@ use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = table_builder::LATENCY + palette_lookup::LATENCY;
 
+/// The unit's name for an index of `a` bits; the two widths in the unit table, and no other.
+pub const fn name(a: usize) -> &'static str {
+    match a {
+        8 => "palette_pipeline",
+        12 => "palette_pipeline_12",
+        _ => panic!("PalettePipeline<A, R>: A is 8 or 12"),
+    }
+}
+
 crate::stream_block! {
     #[derive(Default)]
-    pub struct PalettePipeline: unit("palette_pipeline", LATENCY) {
+    pub struct PalettePipeline<const A: usize, const R: usize>: unit(name(A), LATENCY) {
         in {
             frame: Bits<1>,
-            idx: U8,
+            idx: Bits<A>,
             build: Bits<1>,
-            b_idx: U8,
+            b_idx: Bits<A>,
             n_x: Sq9_0,
             n_y: Sq9_0,
             n_z: Sq9_0,
@@ -41,9 +52,9 @@ crate::stream_block! {
             out_a: U8,
         }
         pub builder: TableBuilder,
-        pub lookup: PaletteLookup<8, 9>,
+        pub lookup: PaletteLookup<A, R>,
         frame_dly: Delay<Bits<1>, { table_builder::LATENCY }>,
-        idx_dly: Delay<U8, { table_builder::LATENCY }>,
+        idx_dly: Delay<Bits<A>, { table_builder::LATENCY }>,
         valid_dly: Delay<Bit, { table_builder::LATENCY }>,
         w_b_idx: Signal<Local, Bits<14>>,
         w_g: Signal<Local, Bits<32>>,
@@ -53,13 +64,13 @@ crate::stream_block! {
     }
 }
 
-impl Logic for PalettePipeline {
+impl<const A: usize, const R: usize> Logic for PalettePipeline<A, R> {
     #[hdl_gen]
     fn update(&mut self) {
         clock!(self, clock, builder, lookup, frame_dly, idx_dly, valid_dly);
         // the builder takes the vector's normal when it builds
         self.builder.valid_in.next = self.valid_in.val() & self.build.val().any();
-        self.w_b_idx.next = bit_cast::<14, 8>(self.b_idx.val()); // U8 in 14, widening
+        self.w_b_idx.next = bit_cast::<14, A>(self.b_idx.val()); // UA in 14, widening
         self.builder.idx.next = self.w_b_idx.val();
         self.builder.n_x.next = self.n_x.val();
         self.builder.n_y.next = self.n_y.val();
@@ -87,7 +98,7 @@ impl Logic for PalettePipeline {
         self.lookup.frame.next = self.frame_dly.q.val();
         self.lookup.idx.next = self.idx_dly.q.val();
         self.lookup.we.next = self.builder.valid_out.val().into();
-        self.lookup.waddr.next = self.builder.addr.val().get_bits::<8>(0); // U8 of U14: the index as it came, exact
+        self.lookup.waddr.next = self.builder.addr.val().get_bits::<A>(0); // UA of U14: the index as it came, exact
         self.lookup.wdata.next = self.w_r.val() | self.w_g.val() | self.w_b.val() | self.w_a.val(); // four U8 side by side
         self.out_r.next = self.lookup.out_r.val();
         self.out_g.next = self.lookup.out_g.val();

@@ -61,11 +61,12 @@ pub fn write(frame: i64, idx: i64, addr: i64, data: i64) -> Vec<i64> {
 const REGION: i64 = 64;
 
 /// How many entries at each end of a table of `bits` index bits the region holds.
-fn region_end(bits: u32) -> i64 {
+pub fn region_end(bits: u32) -> i64 {
     REGION.min((1i64 << bits) / 2).max(1)
 }
 
-fn in_region(rng: &mut dyn rand::RngCore, bits: u32) -> i64 {
+/// An entry of the region at random.
+pub fn in_region(rng: &mut dyn rand::RngCore, bits: u32) -> i64 {
     use rand::Rng;
     let n = region_end(bits);
     let k = rng.gen_range(0..2 * n);

@@ -6,7 +6,8 @@
 //!
 //! A vector: the pixel (`frame`, `idx`) and, when `build` = 1, one palette normal to shade into entry `b_idx` of
 //! the other table (the normal, L, H, C and the specular colour of `table_builder`). The model is `table_builder`'s
-//! entry fed to `palette_lookup`'s stream, at 8 index bits (s_N up to 256).
+//! entry fed to `palette_lookup`'s stream: at 8 index bits (s_N up to 256) as `palette_pipeline`, at 12 (up to 4,096)
+//! as `palette_pipeline_12` (module `wide`: the same ports in the same order, the two indices wider).
 
 use crate::palette::{palette_lookup, table_builder};
 use crate::unit::UnitModel;
@@ -29,13 +30,26 @@ fn lookup_vector(v: &[i64]) -> Vec<i64> {
     vec![v[frame], v[idx], v[build], v[b_idx], if v[build] == 1 { packed } else { 0 }]
 }
 
-pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+/// The unit over a stream, for indices of `bits` bits, from empty (zero) tables.
+pub fn run_with(bits: u32, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
     let l: Vec<Vec<i64>> = inputs.iter().map(|v| lookup_vector(v)).collect();
-    palette_lookup::run_with(8, &l)
+    palette_lookup::run_with(bits, &l)
+}
+
+pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+    run_with(8, inputs)
+}
+
+fn run_12(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+    run_with(12, inputs)
 }
 
 fn exact_ports(v: &[i64]) -> Vec<i64> {
     run(&[v.to_vec()]).remove(0)
+}
+
+fn exact_ports_12(v: &[i64]) -> Vec<i64> {
+    run_12(&[v.to_vec()]).remove(0)
 }
 
 /// A palette normal to build into entry `e` while pixel `p` of frame `f` is read.
@@ -57,30 +71,46 @@ fn normal_of(e: i64) -> [i64; 3] {
     [(t.sin() * a.cos() * 400.0) as i64, (t.cos() * 400.0) as i64 + 50, (t.sin() * a.sin() * 400.0) as i64]
 }
 
-/// Frame 0 shown while table 1 is built (all 256 entries), the flip, frame 1's pixels reading it while table 0 is
-/// built with other light (a different C), the flip back; pixels read every entry between; a build and a read of the
-/// same entry in one vector, and the flip straight after the last build.
-pub fn hard_cases() -> Vec<Vec<i64>> {
+/// Frame 0 shown while table 1 is built, the flip, frame 1's pixels reading it while table 0 is built with other
+/// light (a different C), the flip back; pixels read every entry built between; a build and a read of the same entry
+/// in one vector, and the flip straight after the last build. At 8 bits every entry is built; wider, the
+/// `palette_lookup` region (the first and last 64 entries), which the random vectors then stay in.
+pub fn hard_cases_with(bits: u32) -> Vec<Vec<i64>> {
+    let (top, n) = (1i64 << bits, palette_lookup::region_end(bits).min(128));
+    let entries: Vec<i64> = if bits <= 8 { (0..top).collect() } else { (0..n).chain(top - n..top).collect() };
     let mut v = vec![];
-    for e in 0..256 {
+    for &e in &entries {
         v.push(build(0, e, e, normal_of(e), 96));
     }
-    for e in 0..256 {
-        v.push(build(1, 255 - e, e, normal_of(e), 250)); // frame 1 shows table 1, table 0 is built
+    for (k, &e) in entries.iter().enumerate() {
+        v.push(build(1, entries[entries.len() - 1 - k], e, normal_of(e), 250)); // frame 1 shows table 1, table 0 is built
     }
-    for e in 0..256 {
+    for &e in &entries {
         v.push(pixel(0, e));
     }
     v.push(build(1, 7, 7, [0, 0, 0], 0)); // a zero-length normal into entry 7 of table 0, pixel 7 of table 1
     v.push(pixel(0, 7));
     v.push(pixel(1, 7));
+    v.push(build(0, top - 1, top - 1, [0, -511, 0], 96)); // the last entry of table 1 facing away, read by frame 1 next
+    v.push(pixel(1, top - 1));
     v
 }
 
-/// Pixels and builds at random, flips at random: with the stream the hard cases leave every entry written.
-fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    hard_cases_with(8)
+}
+
+fn hard_cases_12() -> Vec<Vec<i64>> {
+    hard_cases_with(12)
+}
+
+/// Pixels and builds at random, flips at random, the indices in the entries the hard cases built.
+fn random_with(rng: &mut dyn rand::RngCore, bits: u32) -> Vec<i64> {
     use rand::Rng;
     let mut v = random_inputs(rng);
+    if bits > 8 {
+        (v[input::idx], v[input::b_idx]) = (palette_lookup::in_region(rng, bits), palette_lookup::in_region(rng, bits));
+    }
     let (l, h) = (table_builder::sq1_10([rng.gen_range(-1.0..1.0), 1.0, rng.gen_range(-1.0..1.0)]), table_builder::sq1_10([rng.gen_range(-0.5..0.5), 1.0, rng.gen_range(-0.5..0.5)]));
     for c in 0..3 {
         v[input::l_x + c] = l[c];
@@ -89,11 +119,42 @@ fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
     v
 }
 
+fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    random_with(rng, 8)
+}
+
+fn random_12(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    random_with(rng, 12)
+}
+
+/// The 12-bit unit's ports: `palette_pipeline`'s, the pixel's and the built entry's index 12 bits wide.
+pub mod wide {
+    crate::ports! {
+        inputs: [
+            frame: u 1, idx: u 12, build: u 1, b_idx: u 12, n_x: s 10, n_y: s 10, n_z: s 10, l_x: s 12, l_y: s 12,
+            l_z: s 12, h_x: s 12, h_y: s 12, h_z: s 12, conc: u 8, spec_r: u 8, spec_g: u 8, spec_b: u 8,
+        ],
+        outputs: [
+            out_r: u 8, out_g: u 8, out_b: u 8, out_a: u 8,
+        ],
+    }
+}
+
 pub static MODEL: UnitModel = UnitModel::new("palette_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
+pub static MODEL_12: UnitModel =
+    UnitModel::new("palette_pipeline_12", (wide::INPUTS, wide::OUTPUTS), exact_ports_12, random_12, hard_cases_12).with_stream(run_12);
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_wide_unit_has_the_same_ports_in_the_same_order() {
+        let names = |p: &[crate::unit::Port]| p.iter().map(|p| p.name).collect::<Vec<_>>();
+        assert_eq!(names(wide::INPUTS), names(INPUTS));
+        assert_eq!(names(wide::OUTPUTS), names(OUTPUTS));
+        assert_eq!((wide::INPUTS[input::idx].bits, wide::INPUTS[input::b_idx].bits), (12, 12));
+    }
 
     #[test]
     fn a_frame_shows_only_the_table_built_for_it() {
