@@ -1,11 +1,11 @@
-//! `bumprtl demo`: the embedded default scene through every pipeline of seed 000 — Cartesian (second embodiment,
-//! with the seed's texels and with hemi-octahedral ones) and polar (first embodiment, FIG. 3) — each through four
-//! paths (f64 ideal, bit-exact model, rust-hdl, Verilator), with pictures, waveforms, the Verilog, the seed's polar
+//! `bumprtl demo`: the embedded default scene through every pipeline — seed 000's Cartesian (second embodiment,
+//! with the seed's texels and with hemi-octahedral ones) and polar (first embodiment, FIG. 3), seed 001's height
+//! map, seed 004's palette at s_N = 256 and 4,096 — each through four paths (f64 ideal, bit-exact model, rust-hdl, Verilator), with pictures, waveforms, the Verilog, the seed's polar
 //! shortcomings shown, and one table of speed, hardware cost and error. The pipelines do the work
 //! (`sim::pipeline`); this file is the command's flow and its printing.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use sim::pipeline::{Cartesian, Height, Pipeline, Polar, Prepared};
+use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar, Prepared};
 use sim::shortcomings::Shortcomings;
 use sim::render::{self, Image};
 use sim::scene::Scene;
@@ -40,6 +40,8 @@ struct Run<'a> {
     shade: ErrorStats,
     colour: ErrorStats,
     normal: Option<ErrorStats>,
+    /// the shade against the ideal under the pipeline's one light per surface, where it has one
+    surface: Option<ErrorStats>,
 }
 
 fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl: bool, verilator: bool) -> Result<Run<'a>, String> {
@@ -47,10 +49,10 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
     let t = Instant::now();
     let prep = pipe.prepare(scene);
     let ideal_s = t.elapsed().as_secs_f64();
-    let model = render::model(m, prep.size, &prep.inputs);
+    let model = render::model(m, &prep);
     let hdl = rust_hdl.then(|| {
         let b = bar(prep.inputs.len() as u64, &format!("rust-hdl: {}", m.name));
-        let hdl = rtl.rust_hdl(m, prep.size, &prep.inputs, &|k| b.set_position(k as u64));
+        let hdl = rtl.rust_hdl(m, &prep, &|k| b.set_position(k as u64));
         b.finish_and_clear();
         hdl
     });
@@ -58,7 +60,7 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
         let b = ProgressBar::new_spinner();
         b.set_message(format!("Verilator: building and running {}", m.name));
         b.enable_steady_tick(std::time::Duration::from_millis(200));
-        let vl = rtl.verilator(m, prep.size, &prep.inputs, &out.join("verilator").join(m.name), 2);
+        let vl = rtl.verilator(m, &prep, &out.join("verilator").join(m.name), 2);
         b.finish_and_clear();
         Some(vl?)
     } else {
@@ -69,15 +71,19 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
     let mism_hdl = hdl.as_ref().map(|h| h.mismatches(&model)).unwrap_or(0);
     let where_ = render::pixel_at(prep.size);
     let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
-    let mut normal = pipe.normal(&prep.inputs[0]).map(|_| ErrorStats::default());
+    let mut normal = pipe.normal(&prep.pixels()[0]).map(|_| ErrorStats::default());
+    let mut surface = pipe.surface_ideal(scene, &prep.ideal[0]).map(|_| ErrorStats::default());
     for (k, (o, ideal)) in model.outs.iter().zip(&prep.ideal).enumerate() {
         shade.add((pipe.shade(o) - ideal.shade).abs(), || where_(k));
         colour.add(colour_err(pipe.colour(o), ideal.rgb), || where_(k));
-        if let (Some(s), Some(n)) = (normal.as_mut(), pipe.normal(&prep.inputs[k])) {
+        if let (Some(s), Some(n)) = (normal.as_mut(), pipe.normal(&prep.pixels()[k])) {
             s.add(angle_deg(n, ideal.normal), || where_(k));
         }
+        if let (Some(s), Some(i)) = (surface.as_mut(), pipe.surface_ideal(scene, ideal)) {
+            s.add((pipe.shade(o) - i).abs(), || where_(k));
+        }
     }
-    Ok(Run { pipe, prep, ideal_s, model, hdl, vl, mism_hdl, mism_vl, shade, colour, normal })
+    Ok(Run { pipe, prep, ideal_s, model, hdl, vl, mism_hdl, mism_vl, shade, colour, normal, surface })
 }
 
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
@@ -112,7 +118,9 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     let polar = Polar { scale, pw: POLAR_PW, h: POLAR_H };
     let (cart, hemi) = (Cartesian { decode: Decode::Seed }, Cartesian { decode: Decode::HemiOct });
     let height = Height::new(&scene);
-    let pipes: [(&dyn Pipeline, bool); 4] = [(&cart, true), (&hemi, false), (&polar, true), (&height, true)];
+    let (pal256, pal4096) = (Palette::new(256, &scene), Palette::new(4096, &scene));
+    let pipes: [(&dyn Pipeline, bool); 6] =
+        [(&cart, true), (&hemi, false), (&polar, true), (&height, true), (&pal256, true), (&pal4096, false)];
     let runs = pipes
         .iter()
         .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
@@ -165,8 +173,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     // waveforms of the first pixels, and the Verilog
     let vdir = out.join("verilog");
     for r in &runs {
-        let first: Vec<Vec<i64>> = r.prep.inputs.iter().take(64).cloned().collect();
-        r.pipe.rtl().write_vcd(r.pipe.model(), &first, &out.join(format!("{}.vcd", r.pipe.model().name)))?;
+        r.pipe.rtl().write_vcd(r.pipe.model(), &r.pipe.waveform(&r.prep), &out.join(format!("{}.vcd", r.pipe.model().name)))?;
         r.pipe.rtl().export(&vdir)?;
     }
 
@@ -199,7 +206,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     };
     line("pixels/s (mismatches vs model)", &|r| r.pipe.label().to_string());
     let pps = |i: &Image, m: usize| format!("{:.0} ({m})", i.pixels_per_second());
-    line("bytes per texel", &|r| format!("{}", r.pipe.bytes_per_texel()));
+    line("bits per texel of the bump source", &|r| format!("{}", r.pipe.bits_per_texel()));
     line("f64 ideal (scene set-up included)", &|r| format!("{:.0}", n as f64 / r.ideal_s));
     line("bit-exact model", &|r| pps(&r.model, 0));
     line("rust-hdl (loop-driven)", &|r| r.hdl.as_ref().map(|h| pps(h, r.mism_hdl)).unwrap_or("in the tests".into()));
@@ -235,6 +242,9 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         row(&format!("{} blended colour, 8-bit LSB", r.pipe.label()), &r.colour);
         if let Some(nrm) = &r.normal {
             row(&format!("{} normal angle, degrees", r.pipe.label()), nrm);
+        }
+        if let Some(s) = &r.surface {
+            row(&format!("{} shade vs the ideal under its one light", r.pipe.label()), s);
         }
     }
     row("polar shade vs an ideal lit by the surface's light", &sc.surface);

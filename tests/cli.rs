@@ -102,10 +102,16 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
     assert!(o.status.success(), "{out}\n{err}");
     assert!(out.contains("Verilator path skipped") && out.contains("UP5K and ECP5 figures skipped"), "{out}");
+    // the palette rows: ⌈log2 s_N⌉ bits a texel beside the Cartesian map's 16 and the height map's 8
+    let bits = out.lines().find(|l| l.starts_with("bits per texel")).unwrap_or_default();
+    assert_eq!(bits.split_whitespace().rev().take(6).collect::<Vec<_>>(), ["12", "8", "8", "16", "16", "16"], "{out}");
+    assert!(out.contains("palette 256 shade vs the ideal under its one light"), "{out}");
     for f in [
         "cart_pipeline_model.png", "cart_pipeline_rust_hdl.png", "polar_pipeline_model.png", "cart_pipeline_hemi_oct_model.png",
         "cart_pipeline.vcd", "polar_pipeline.vcd", "cart_pipeline_hemi_oct.vcd", "verilog/cart_pipeline.v",
         "fig8a_blinn.png", "fig8b_bspline.png", "colour_reference.png", "colour_bilinear.png", "colour_bspline.png",
+        "palette_pipeline_model.png", "palette_pipeline_rust_hdl.png", "palette_pipeline_12_model.png", "palette_pipeline.vcd",
+        "palette_pipeline_12.vcd", "verilog/palette_pipeline_12.v",
     ] {
         assert!(d.join(f).is_file(), "{f} missing");
     }
@@ -221,7 +227,7 @@ fn a_bad_height_map_is_one_line_naming_it_and_nothing_is_written() {
 }
 
 #[test]
-fn a_users_height_map_goes_through_the_height_cartesian_and_polar_paths() {
+fn a_users_height_map_goes_through_the_height_cartesian_polar_and_palette_paths() {
     // a 5 × 3 colour map: read as luma and resampled to 8 × 8, both said; rendered without the EDA tools
     let d = scratch("user-map");
     let map = d.join("map.png");
@@ -236,7 +242,12 @@ fn a_users_height_map_goes_through_the_height_cartesian_and_polar_paths() {
     assert!(o.status.success(), "{stdout}\n{err}");
     assert!(stdout.contains("read as its luma") && stdout.contains("5 × 3 resampled (bilinear) to 8 × 8"), "{stdout}");
     assert!(stdout.contains("map.png (8x8"), "{stdout}");
-    for f in ["height_pipeline_model.png", "height_pipeline_rust_hdl.png", "cart_pipeline_model.png", "polar_pipeline_model.png"] {
+    // 64 texels: both palettes hold every distinct normal
+    assert!(stdout.contains("s_N = 256: ") && stdout.contains("0.00° mean / 0.00° max"), "{stdout}");
+    for f in [
+        "height_pipeline_model.png", "height_pipeline_rust_hdl.png", "cart_pipeline_model.png", "polar_pipeline_model.png", "palette_pipeline_model.png",
+        "palette_pipeline_12_model.png",
+    ] {
         assert!(out.join(f).is_file(), "{f} missing");
     }
 }

@@ -1,6 +1,6 @@
 //! The bit-exact models against the f64 ideals on the demo scene, every pipeline, in one run.
 use criterion::{criterion_group, criterion_main, Criterion};
-use sim::pipeline::{Cartesian, Pipeline, Polar};
+use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar};
 use sim::scene::Scene;
 use vectors::cart_pipeline::Decode;
 use vectors::polar_encode::Scale;
@@ -9,12 +9,13 @@ fn bench(c: &mut Criterion) {
     let scene = Scene { size: 64, ..Scene::default() };
     let mut g = c.benchmark_group("demo scene 64x64");
     g.sample_size(10);
-    let pipes: [&dyn Pipeline; 3] =
-        [&Cartesian { decode: Decode::Seed }, &Cartesian { decode: Decode::HemiOct }, &Polar { scale: Scale::Seed, pw: 16, h: 1.0 }];
+    let (height, palette) = (Height::new(&scene), Palette::new(256, &scene));
+    let pipes: [&dyn Pipeline; 5] =
+        [&Cartesian { decode: Decode::Seed }, &Cartesian { decode: Decode::HemiOct }, &Polar { scale: Scale::Seed, pw: 16, h: 1.0 }, &height, &palette];
     for p in pipes {
         let prep = p.prepare(&scene);
         g.bench_function(format!("{} ideal (f64, scene set-up included)", p.model().name), |b| b.iter(|| p.prepare(&scene).ideal.len()));
-        g.bench_function(format!("{} bit-exact model", p.model().name), |b| b.iter(|| sim::render::model(p.model(), prep.size, &prep.inputs).outs.len()));
+        g.bench_function(format!("{} bit-exact model", p.model().name), |b| b.iter(|| sim::render::model(p.model(), &prep).outs.len()));
     }
     g.finish();
 }

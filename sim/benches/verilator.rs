@@ -17,7 +17,7 @@ fn frame<U: StreamUnit>(c: &mut Criterion, m: &UnitModel, inputs: &[Vec<i64>]) {
     g.throughput(Throughput::Elements(cycles));
     g.bench_function("bare loop", |b| b.iter(|| built.bare(cycles).expect("bare loop")));
     g.bench_function("frame, 1 thread", |b| b.iter(|| built.run_frame(&slots).expect("frame").len()));
-    g.bench_function("frame, 2 threads", |b| b.iter(|| built.run_split(&slots, 2).expect("frame").len()));
+    g.bench_function("frame, 2 threads", |b| b.iter(|| built.run_split(&slots, 2, 0).expect("frame").len()));
     g.finish();
 }
 

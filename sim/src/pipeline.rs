@@ -1,7 +1,7 @@
 //! A pipeline, as the demo and the renderers see it: the units it holds, its model and its rtl block, how it
 //! builds its per-pixel inputs from a scene (with the f64 ideal of every pixel beside them), and how it reads a
-//! shade and a colour off its outputs. Seed 000's Cartesian (both texel decodes) and polar pipelines implement it;
-//! the height-map and palette pipelines will be the next two.
+//! shade and a colour off its outputs. Seed 000's Cartesian (both texel decodes) and polar pipelines, seed 001's
+//! height-map pipeline and seed 004's palette pipeline (at two palette sizes) implement it.
 
 use crate::raster;
 use crate::render::{self, Image, VerilatorRun};
@@ -13,7 +13,7 @@ use synth::fpga::{Fit, Part};
 use vectors::cart_encode::{self, Encoder};
 use vectors::cart_pipeline::{self, Decode};
 use vectors::polar_encode::{self, Scale};
-use vectors::{bilinear, blend, gloss, height_addr, height_pipeline, light_iter, polar_pipeline, UnitModel};
+use vectors::{bilinear, blend, gloss, height_addr, height_pipeline, light_iter, palette_pipeline, polar_pipeline, UnitModel};
 
 /// The f64 ideal of one pixel.
 #[derive(Clone, Copy, Debug)]
@@ -27,11 +27,24 @@ pub struct Ideal {
     pub light: [f64; 3],
 }
 
-/// A scene set up for one pipeline: per pixel its input vector (in the model's port order) and its ideal.
+/// A scene set up for one pipeline: per pixel its input vector (in the model's port order) and its ideal, after
+/// `prologue` vectors that set up the block's state for the frame (a palette's colour table; none elsewhere).
 pub struct Prepared {
     pub size: usize,
     pub inputs: Vec<Vec<i64>>,
+    pub prologue: usize,
     pub ideal: Vec<Ideal>,
+}
+
+impl Prepared {
+    pub fn new(size: usize) -> Prepared {
+        Prepared { size, inputs: vec![], prologue: 0, ideal: vec![] }
+    }
+
+    /// The pixels' input vectors, the prologue left out.
+    pub fn pixels(&self) -> &[Vec<i64>] {
+        &self.inputs[self.prologue..]
+    }
 }
 
 pub trait Pipeline: Sync {
@@ -55,9 +68,18 @@ pub trait Pipeline: Sync {
     fn normal(&self, _input: &[i64]) -> Option<[f64; 3]> {
         None
     }
-    /// Bytes of texture memory per texel of the bump source.
-    fn bytes_per_texel(&self) -> f64 {
-        2.0
+    /// Where the pipeline lights a surface with one light but its ideal uses the pixel's own, the ideal shade (as
+    /// `Ideal::shade`) under that one light: the error against it leaves the one light out and shows the rest.
+    fn surface_ideal(&self, _scene: &Scene, _ideal: &Ideal) -> Option<f64> {
+        None
+    }
+    /// The vectors the demo's waveform traces: the prologue and the first 64 pixels.
+    fn waveform(&self, p: &Prepared) -> Vec<Vec<i64>> {
+        p.inputs.iter().take(p.prologue + 64).cloned().collect()
+    }
+    /// Bits of texture memory per texel of the bump source.
+    fn bits_per_texel(&self) -> u32 {
+        16
     }
 }
 
@@ -65,8 +87,8 @@ pub trait Pipeline: Sync {
 pub trait RtlPaths: Sync {
     fn name(&self) -> &'static str;
     fn latency(&self) -> usize;
-    fn rust_hdl(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> Image;
-    fn verilator(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
+    fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image;
+    fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
     fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String>;
     fn export(&self, dir: &Path) -> Result<(), String>;
     fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String>;
@@ -86,11 +108,11 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
     fn latency(&self) -> usize {
         U::LATENCY
     }
-    fn rust_hdl(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> Image {
-        render::rust_hdl::<U>(m, size, inputs, tick)
+    fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image {
+        render::rust_hdl::<U>(m, p, tick)
     }
-    fn verilator(&self, m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
-        render::verilator::<U>(m, size, inputs, dir, threads)
+    fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
+        render::verilator::<U>(m, p, dir, threads)
     }
     fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String> {
         crate::wave::write_vcd::<U>(m, inputs, path).map(|_| ())
@@ -151,7 +173,7 @@ impl Pipeline for Cartesian {
         let normals = scene.normals();
         let texels: Vec<(u8, u8)> = normals.iter().map(|&n| cart_encode::encode(encoder, n)).collect();
         let q: Vec<[i64; 3]> = scene.vertex_lights().iter().map(|&d| light_iter::quantise_vertex(d)).collect();
-        let mut p = Prepared { size: scene.size, inputs: vec![], ideal: vec![] };
+        let mut p = Prepared::new(scene.size);
         for px in raster::pixels(scene, &normals) {
             let mut x = vec![0; cart_pipeline::INPUTS.len()];
             for (slot, (i, j)) in cart_pipeline::TEXELS.iter().zip(px.corners) {
@@ -224,7 +246,7 @@ impl Polar {
         let codes: Vec<(i64, i64)> = normals.iter().map(|&n| polar_encode::encode_normal(self.scale, n)).collect();
         let surface_dir = scene.light_dir(0.5, 0.5);
         let light = polar_encode::encode_light(self.scale, surface_dir, self.h);
-        let mut p = Prepared { size: scene.size, inputs: vec![], ideal: vec![] };
+        let mut p = Prepared::new(scene.size);
         let mut straddles = vec![];
         for px in raster::pixels(scene, &normals) {
             let c = px.corners.map(|(i, j)| codes[j * t + i]);
@@ -345,7 +367,7 @@ impl Pipeline for Height {
         assert!(t.is_power_of_two(), "the height path's address unit takes power-of-two textures");
         let n = scene.size;
         let map = vectors::height_fetch::Map::from_heights(&codes, t, t);
-        let mut p = Prepared { size: n, inputs: vec![], ideal: vec![] };
+        let mut p = Prepared::new(n);
         for py in 0..n {
             for px in 0..n {
                 let (u, v) = ((px as f64 + 0.5) / n as f64, (py as f64 + 0.5) / n as f64);
@@ -384,8 +406,147 @@ impl Pipeline for Height {
     fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
         Some(height_pipeline::exact_trace(input).normal.map(|c| c as f64))
     }
-    fn bytes_per_texel(&self) -> f64 {
-        1.0
+    fn bits_per_texel(&self) -> u32 {
+        8
+    }
+}
+
+/// Seed 004 (Tarini et al.): the scene's normal map quantized to a palette of `s_n` normals (median cut and k-means
+/// on the sphere), an index per texel, point-sampled (indices cannot be blended: the texel nearest the pixel's
+/// sample point); the frame's colour table built by the table builder from the palette's normals (S10, rounded),
+/// one entry a clock, as the frame's prologue, then one table read a pixel. One light per surface (the light at the
+/// quad's centre, as the paper's directional light), H = L so that the entry's colour is gloss(C, N·L) times white:
+/// the Cartesian path's shade with its light fixed. The ideal is the Cartesian path's (the filtered float normal
+/// against the pixel's own light), so the error counts what the palette, the point sampling and the one light cost.
+/// `s_n` ≤ 256 runs on `palette_pipeline`, ≤ 4,096 on `palette_pipeline_12`.
+pub struct Palette {
+    pub s_n: usize,
+    /// the material's colours (blended by the shade)
+    pub src: [i64; 3],
+    pub dst: [i64; 3],
+    /// what the last `prepare` built: the palette's codes (for `normal`) and its quantization
+    built: std::sync::RwLock<Option<std::sync::Arc<PaletteBuilt>>>,
+}
+
+/// The quantization a `Palette` prepared: its codes, the map's distinct normals, the angle from each texel's normal
+/// to its palette normal (degrees), and the quantizer's time.
+pub struct PaletteBuilt {
+    pub codes: Vec<[i64; 3]>,
+    pub distinct: usize,
+    pub error: vectors::stats::ErrorStats,
+    pub quantize_s: f64,
+}
+
+impl Palette {
+    pub fn new(s_n: usize, scene: &Scene) -> Palette {
+        assert!((1..=4096).contains(&s_n), "the palette pipelines hold 1 to 4,096 normals (s_N = {s_n})");
+        Palette { s_n, src: scene.src, dst: scene.dst, built: Default::default() }
+    }
+
+    /// The quantization of the last `prepare`.
+    pub fn built(&self) -> Option<std::sync::Arc<PaletteBuilt>> {
+        self.built.read().ok()?.clone()
+    }
+
+    /// The vector that builds palette entry `e` from its code while pixel 0 of frame 0 is read (the prologue's).
+    fn build_vector(e: usize, n: [i64; 3], l: [i64; 3], conc: i64) -> Vec<i64> {
+        use palette_pipeline::input;
+        let mut x = vec![0; palette_pipeline::INPUTS.len()];
+        (x[input::frame], x[input::idx], x[input::build], x[input::b_idx]) = (0, 0, 1, e as i64);
+        for c in 0..3 {
+            (x[input::n_x + c], x[input::l_x + c], x[input::h_x + c]) = (n[c], l[c], l[c]);
+        }
+        (x[input::conc], x[input::spec_r], x[input::spec_g], x[input::spec_b]) = (conc, 255, 255, 255);
+        x
+    }
+}
+
+impl Pipeline for Palette {
+    fn label(&self) -> &'static str {
+        if self.s_n <= 256 { "palette 256" } else { "palette 4096" }
+    }
+    fn model(&self) -> &'static UnitModel {
+        if self.s_n <= 256 { &palette_pipeline::MODEL } else { &palette_pipeline::MODEL_12 }
+    }
+    fn rtl(&self) -> &'static dyn RtlPaths {
+        use rtl::palette_pipeline::PalettePipeline;
+        if self.s_n <= 256 { &Rtl::<PalettePipeline<8, 9>>::PATHS } else { &Rtl::<PalettePipeline<12, 13>>::PATHS }
+    }
+    fn units(&self) -> &'static [&'static str] {
+        &["normalise", "dot3", "gloss", "palette_lookup"]
+    }
+    fn describe(&self, scene: &Scene) -> String {
+        let what = match self.built() {
+            Some(b) => format!(
+                "{} of the map's {} distinct normals (quantized in {:.2} s, {:.2}° mean / {:.2}° max to the texels' normals)",
+                b.codes.len(), b.distinct, b.quantize_s, b.error.mean(), b.error.max
+            ),
+            None => format!("up to {} normals", self.s_n),
+        };
+        format!("s_N = {}: {what}; nearest texel; the table built a frame, one light per surface, gloss C = {}", self.s_n, scene.conc)
+    }
+    fn prepare(&self, scene: &Scene) -> Prepared {
+        use palette_pipeline::input;
+        let t = scene.tex;
+        let normals = scene.normals();
+        let clock = std::time::Instant::now();
+        let q = vectors::palette::quantize::quantize(&normals, self.s_n);
+        let quantize_s = clock.elapsed().as_secs_f64();
+        let error = vectors::palette::quantize::angular_error(&normals, &q.index, &q.palette);
+        // the palette as the table RAM's builder takes it: S10 (Sq9.0), rounded
+        let codes: Vec<[i64; 3]> = q.palette.iter().map(|n| n.map(|c| ((c * 511.0).round() as i64).clamp(-512, 511))).collect();
+        let l = vectors::table_builder::sq1_10(scene.light_dir(0.5, 0.5));
+        let mut p = Prepared::new(scene.size);
+        for (e, &n) in codes.iter().enumerate() {
+            p.inputs.push(Palette::build_vector(e, n, l, scene.conc)); // table 1 built while frame 0 is shown
+        }
+        p.prologue = codes.len();
+        for px in raster::pixels(scene, &normals) {
+            // the texel nearest the sample point: of the bilinear corners, the one the blend factors lean to
+            let (i, j) = px.corners[(px.ub >= 128) as usize + 2 * (px.vb >= 128) as usize];
+            let mut x = vec![0; palette_pipeline::INPUTS.len()];
+            (x[input::frame], x[input::idx]) = (1, q.index[j * t + i] as i64); // frame 1 reads table 1
+            p.inputs.push(x);
+            let (nrm, ld) = (px.normal, px.light);
+            let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
+            let shade = gloss::ideal_real(scene.conc, xd) / 1023.0 * 255.0;
+            p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: ld });
+        }
+        if let Ok(mut b) = self.built.write() {
+            *b = Some(std::sync::Arc::new(PaletteBuilt { codes, distinct: q.distinct, error, quantize_s }));
+        }
+        p
+    }
+    fn shade(&self, out: &[i64]) -> f64 {
+        out[palette_pipeline::output::out_r] as f64
+    }
+    fn shade_name(&self) -> &'static str {
+        "entry r, P·255/1023"
+    }
+    fn colour(&self, out: &[i64]) -> [u8; 3] {
+        let a = out[palette_pipeline::output::out_r];
+        std::array::from_fn(|c| blend::exact_channel(a, 1, self.src[c], self.dst[c]) as u8)
+    }
+    fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
+        let b = self.built()?;
+        Some(vectors::normalise::exact(b.codes[input[palette_pipeline::input::idx] as usize]).map(|c| c as f64 / 1024.0))
+    }
+    /// ⌈log2 s_N⌉
+    fn surface_ideal(&self, scene: &Scene, ideal: &Ideal) -> Option<f64> {
+        let (n, l) = (ideal.normal, scene.light_dir(0.5, 0.5));
+        Some(gloss::ideal_real(scene.conc, (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]).max(0.0) * 1023.0) / 1023.0 * 255.0)
+    }
+    /// The builds of the entries the first 64 pixels read, then those pixels: their frame as the hardware sees it,
+    /// in a file of a size a viewer opens (the whole prologue of 4,096 builds would be tens of megabytes).
+    fn waveform(&self, p: &Prepared) -> Vec<Vec<i64>> {
+        use palette_pipeline::input;
+        let first = &p.pixels()[..p.pixels().len().min(64)];
+        let read: std::collections::BTreeSet<i64> = first.iter().map(|x| x[input::idx]).collect();
+        let builds = p.inputs[..p.prologue].iter().filter(|x| read.contains(&x[input::b_idx]));
+        builds.chain(first).cloned().collect()
+    }
+    fn bits_per_texel(&self) -> u32 {
+        (usize::BITS - (self.s_n.max(2) - 1).leading_zeros()).max(1)
     }
 }
 
@@ -400,6 +561,8 @@ mod tests {
             Box::new(Polar { scale: Scale::Seed, pw: 16, h: 1.0 }),
             Box::new(Polar { scale: Scale::Dc255, pw: 16, h: 1.0 }),
             Box::new(Height::new(&Scene::default())),
+            Box::new(Palette::new(256, &Scene::default())),
+            Box::new(Palette::new(4096, &Scene::default())),
         ]
     }
 
@@ -419,7 +582,7 @@ mod tests {
         let scene = Scene { size: 8, ..Scene::default() };
         for p in all() {
             let prep = p.prepare(&scene);
-            assert_eq!((prep.inputs.len(), prep.ideal.len()), (64, 64));
+            assert_eq!((prep.pixels().len(), prep.ideal.len()), (64, 64));
             for x in &prep.inputs {
                 for (v, port) in x.iter().zip(p.model().inputs) {
                     let (lo, hi) = port.range();

@@ -1,9 +1,12 @@
 //! A pipeline's per-pixel inputs through the three bit-exact paths: the model, the rust-hdl block and Verilator on
 //! the block's exported Verilog. They must agree bit for bit; the pipeline reads shade and colour off the outputs.
+//! A frame's inputs may begin with a prologue (`Prepared::prologue`: vectors that set up the block's state, a
+//! palette's colour table): every path runs it first and leaves its outputs out of the image.
 
 use rtl::stream::Runner;
 use rtl::StreamUnit;
 use std::path::Path;
+use crate::pipeline::Prepared;
 use std::time::Instant;
 use synth::cosim::{self, Simulator};
 use vectors::UnitModel;
@@ -36,28 +39,31 @@ fn from_outputs(m: &UnitModel, size: usize, outs: &[Vec<u64>], seconds: f64) -> 
     Image { size, outs: outs.iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect(), seconds }
 }
 
-pub fn model(m: &UnitModel, size: usize, inputs: &[Vec<i64>]) -> Image {
+/// The model over the frame (the prologue's time counted: it is the frame's work too).
+pub fn model(m: &UnitModel, p: &Prepared) -> Image {
     let t = Instant::now();
-    let outs = m.run(inputs); // vector by vector, or through the unit's state
-    Image { size, outs, seconds: t.elapsed().as_secs_f64() }
+    let mut outs = m.run(&p.inputs); // vector by vector, or through the unit's state
+    outs.drain(..p.prologue);
+    Image { size: p.size, outs, seconds: t.elapsed().as_secs_f64() }
 }
 
-/// rust-hdl, loop-driven; `tick` is called every 1,024 pixels.
-pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> Image {
+/// rust-hdl, loop-driven; `tick` is called every 1,024 vectors.
+pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image {
     let t = Instant::now();
     let mut r = Runner::<U>::new();
-    let slots = patterns(m, inputs);
+    let slots = patterns(m, &p.inputs);
     let got = r.run(slots.into_iter().enumerate().map(|(k, s)| {
         if k % 1024 == 0 {
             tick(k);
         }
         s
     }));
-    from_outputs(m, size, &got.outputs, t.elapsed().as_secs_f64())
+    from_outputs(m, p.size, &got.outputs[p.prologue..], t.elapsed().as_secs_f64())
 }
 
-fn from_frame(m: &UnitModel, size: usize, f: &cosim::Frame) -> Image {
-    let outs: Vec<Vec<u64>> = (0..f.len()).map(|k| (0..m.outputs.len()).map(|j| f.value(k, j)).collect()).collect();
+/// The frame's records from `skip` on as an image.
+fn from_frame(m: &UnitModel, size: usize, f: &cosim::Frame, skip: usize) -> Image {
+    let outs: Vec<Vec<u64>> = (skip..f.len()).map(|k| (0..m.outputs.len()).map(|j| f.value(k, j)).collect()).collect();
     from_outputs(m, size, &outs, 0.0)
 }
 
@@ -77,17 +83,17 @@ pub struct VerilatorRun {
 /// The bare loop's speed on the same build is measured in the same call. Each of the three is run `RUNS` times
 /// and its fastest run kept, so that none of them pays alone for a cold cache; the times count the runs (the
 /// inputs' encoding, the simulation, the outputs into the image), not the build.
-pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>], dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
+pub fn verilator<U: StreamUnit>(m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
     const RUNS: usize = 3;
     let built = cosim::build::<U>(Simulator::Verilator, dir)?;
-    let slots = patterns(m, inputs);
-    // one run timed from the slots to the image, the fastest of RUNS kept
-    let fastest = |run: &dyn Fn() -> Result<cosim::Frame, String>| -> Result<Image, String> {
+    let slots = patterns(m, &p.inputs);
+    // one run timed from the slots to the image, the fastest of RUNS kept; `skip` records are the prologue's
+    let fastest = |run: &dyn Fn() -> Result<cosim::Frame, String>, skip: usize| -> Result<Image, String> {
         let mut best: Option<Image> = None;
         for _ in 0..RUNS {
             let t = Instant::now();
             let f = run()?;
-            let mut i = from_frame(m, size, &f);
+            let mut i = from_frame(m, p.size, &f, skip);
             i.seconds = t.elapsed().as_secs_f64();
             if best.as_ref().map_or(true, |b| i.seconds < b.seconds) {
                 best = Some(i);
@@ -99,8 +105,8 @@ pub fn verilator<U: StreamUnit>(m: &UnitModel, size: usize, inputs: &[Vec<i64>],
     for _ in 0..RUNS {
         bare_cycles_per_second = bare_cycles_per_second.max(built.bare((slots.len() + U::LATENCY + 1) as u64)?);
     }
-    let single = fastest(&|| built.run_frame(&slots))?;
-    let image = fastest(&|| built.run_split(&slots, threads))?;
+    let single = fastest(&|| built.run_frame(&slots), p.prologue)?;
+    let image = fastest(&|| built.run_split(&slots, threads, p.prologue), 0)?;
     Ok(VerilatorRun { image, single, threads, bare_cycles_per_second })
 }
 

@@ -322,25 +322,29 @@ impl Built {
         self.run_slots(slots)
     }
 
-    /// The slots cut into `parts` runs at once, each on its own model in its own thread (the machine's cores),
-    /// joined in order. Only for units whose outputs depend on their inputs alone
-    /// (every unit so far: no state carries from one slot to the next), since each part starts from a fresh model.
-    pub fn run_split(&self, slots: &[Option<Vec<u64>>], parts: usize) -> Result<Frame, String> {
+    /// The slots after the first `prologue` cut into `parts` runs at once, each on its own model in its own thread
+    /// (the machine's cores), joined in order. Each part starts from a fresh model and runs the prologue first (the
+    /// slots that set up a unit's state, a palette's table say: the split is then sound for a unit whose outputs
+    /// depend on its inputs and that state); the prologue's outputs are left out of the frame, and its slots out of
+    /// the records' slot numbers. A unit whose later slots change its state cannot be split so.
+    pub fn run_split(&self, slots: &[Option<Vec<u64>>], parts: usize, prologue: usize) -> Result<Frame, String> {
         if self.sim != Simulator::Verilator {
             return Err("a frame in this process is Verilator's".into());
         }
-        let per = slots.len().div_ceil(parts.max(1)).max(1);
-        let chunks: Vec<&[Option<Vec<u64>>]> = slots.chunks(per).collect();
+        let (head, body) = slots.split_at(prologue.min(slots.len()));
+        let head_outputs = head.iter().filter(|s| s.is_some()).count();
+        let per = body.len().div_ceil(parts.max(1)).max(1);
+        let chunks: Vec<&[Option<Vec<u64>>]> = body.chunks(per).collect();
         let results: Vec<Result<Frame, String>> = std::thread::scope(|s| {
-            let hs: Vec<_> = chunks.iter().map(|ch| s.spawn(move || self.run_slots(ch))).collect();
+            let hs: Vec<_> = chunks.iter().map(|ch| s.spawn(move || self.run_slots(&[head, ch].concat()))).collect();
             hs.into_iter().map(|h| h.join().unwrap_or_else(|_| Err("a simulator thread panicked".into()))).collect()
         });
-        let mut all = Frame { n_out: self.n_out, records: Vec::with_capacity(slots.len() * (1 + self.n_out)) };
+        let mut all = Frame { n_out: self.n_out, records: Vec::with_capacity(body.len() * (1 + self.n_out)) };
         let mut offset = 0u64;
         for (ch, r) in chunks.iter().zip(results) {
             let f = r?;
-            for rec in f.records.chunks_exact(1 + self.n_out) {
-                all.records.push(rec[0] + offset);
+            for rec in f.records.chunks_exact(1 + self.n_out).skip(head_outputs) {
+                all.records.push(rec[0] - head.len() as u64 + offset);
                 all.records.extend_from_slice(&rec[1..]);
             }
             offset += ch.len() as u64;
