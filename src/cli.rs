@@ -93,7 +93,8 @@ enum Cmd {
         out: PathBuf,
     },
     /// Table 1 of Tarini et al. (2000) on this machine: the per-frame colour table's time for 256, 2048 and 16,384
-    /// normals under four lighting models, beside the paper's, with the rtl builder's and the errors
+    /// normals under four lighting models, beside the paper's, with the rtl builder's and the errors; the quantizer's
+    /// time at every s_N; Figure 3's pictures (16 … 2048 normals)
     PaletteTable {
         /// skip placing the table builder (its fmax gives the rtl column)
         #[arg(long)]
@@ -101,6 +102,9 @@ enum Cmd {
         /// working folder for the tools' files
         #[arg(long, default_value = "target/synth")]
         dir: PathBuf,
+        /// where Figure 3's pictures go
+        #[arg(long, default_value = "out/palette-table")]
+        out: PathBuf,
     },
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
@@ -300,7 +304,8 @@ pub fn main() -> Result<(), String> {
             let args = crate::quantize::Args { map: &map, size: size as usize, dither, green_down, relief, q, out: &out };
             crate::quantize::run(&args)?
         }
-        Cmd::PaletteTable { no_synth, dir } => {
+        Cmd::PaletteTable { no_synth, dir, out } => {
+            crate::palette_table::check_out(&out)?;
             let tools = synth::tools::missing(&["yosys"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
             let fmax = if no_synth || !tools {
                 if !no_synth {
@@ -312,7 +317,7 @@ pub fn main() -> Result<(), String> {
                 let d = dir.join("table_builder").join(part.name);
                 synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(&d, part, part.default_freq())?.fmax_mhz
             };
-            crate::palette_table::run(fmax)?
+            crate::palette_table::run(fmax, &out)?
         }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

@@ -3,7 +3,9 @@
 //! per-frame table under Lambert, Lambert + specular, chrome and environment: the paper's Pentium-300 milliseconds,
 //! this machine's (the bit-exact model of `table_builder` where the hardware builds the table, the f64 table where it
 //! does not), the rtl builder's clocks and microseconds at its fmax, and two columns the paper lacks: the quantization's
-//! angular error and the image error of the table against shading the unquantized normals the same way.
+//! angular error and the image error of the table against shading the unquantized normals the same way. Then the
+//! quantizer's own time at every s_N from 16 to 16,384, and the paper's Figure 3 sweep (16 … 2048 normals) as
+//! pictures of the map shaded through each palette, beside the unquantized one.
 
 use std::time::Instant;
 use vectors::palette::{plane_fit, quantize, table_builder, tables};
@@ -43,27 +45,56 @@ fn per_call(mut f: impl FnMut()) -> f64 {
         .fold(f64::MAX, f64::min)
 }
 
-pub fn run(fmax_mhz: Option<f64>) -> Result<(), String> {
+/// Every palette size the quantizer sweep times, 16 to 16,384; Figure 3's pictures are the first eight.
+const SWEEP: [usize; 11] = [16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192, 16_384];
+const FIGURE_3: usize = 8;
+
+/// The material of the pictures (RGBA), equation (1)'s o.
+const MATERIAL: [f64; 4] = [0.85, 0.7, 0.5, 1.0];
+
+/// The pictures' folder, made and checked before the minutes of work (synthesis included), refused in one line.
+pub fn check_out(out: &std::path::Path) -> Result<(), String> {
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let probe = out.join(".write-test");
+    std::fs::write(&probe, b"").map_err(|e| format!("cannot write into {}: {e}", out.display()))?;
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
+}
+
+pub fn run(fmax_mhz: Option<f64>, out: &std::path::Path) -> Result<(), String> {
     let normals = normal_map();
     let view = [0.0, 1.0, 0.0];
     let light = unit([0.5, 0.8, 0.3]);
     let half = unit([0, 1, 2].map(|c| light[c] + view[c]));
     let (lq, hq) = (table_builder::sq1_10(light), table_builder::sq1_10(half));
     let (conc, spec) = (96, [255, 240, 200]);
-    // the builder's entry from a palette normal as the palette stores it (S10, once per map): Lambert alone reads α,
-    // Lambert + specular the whole entry
-    let built = |n: [i64; 3]| table_builder::exact(n, lq, hq, conc, spec);
     let models = ["Lambert", "Lambert + specular", "chrome", "environment"];
     let f64_model = |m: usize| if m == 2 { tables::Shading::Chrome } else { tables::Shading::Environment };
-    let entry = |m: usize, n: [f64; 3], stored: [i64; 3]| -> [i64; 4] {
+    // an entry from a palette normal: `normed` is the builder's normaliser output (Sq1.10) of the normal as the
+    // palette stores it (S10); Lambert alone reads α, Lambert + specular the whole entry
+    let entry = |m: usize, n: [f64; 3], normed: [i64; 3]| -> [i64; 4] {
         match m {
-            0 => [0, 0, 0, vectors::dot3::exact(vectors::normalise::exact(stored), lq) >> 2], // the builder's α path alone
-            1 => built(stored),
+            0 => [0, 0, 0, vectors::dot3::exact(normed, lq) >> 2], // the builder's α path alone
+            1 => table_builder::exact_normalised(normed, lq, hq, conc, spec),
             _ => tables::entry(&f64_model(m), n, view).map(|c| (c * 255.0).round().clamp(0.0, 255.0) as i64),
         }
     };
+    let own = |m: usize, n: [f64; 3]| entry(m, n, vectors::normalise::exact(s10(n)));
+
+    // the quantizer at every size, timed
+    let mut sweep = vec![];
+    for &s_n in &SWEEP {
+        let t = Instant::now();
+        let q = quantize::quantize(&normals, s_n);
+        let secs = t.elapsed().as_secs_f64();
+        let angle = quantize::angular_error(&normals, &q.index, &q.palette);
+        sweep.push((s_n, q, secs, angle));
+    }
+
     println!("Table 1 of Tarini et al. (2000) on this machine: a 512 x 512 normal map (the demo's heights, plane fit q = 8)");
-    println!("per-frame table for s_N normals; paper: Pentium 300 MHz (its 16,384 row says 16348); model: one core here;");
+    println!("per-frame table for s_N normals; paper: Pentium 300 MHz (its 16,384 row says 16348); model: one core here, the");
+    println!("bit-exact table_builder with the palette's normals normalised once per map (the palette changes per map, not per");
+    println!("frame: the same normaliser output the builder computes), chrome and environment in f64 (no rtl);");
     println!("rtl: table_builder, one normal a clock (s_N + {} clocks) at {}", vectors_latency(), match fmax_mhz {
         Some(f) => format!("{f:.1} MHz (its ECP5 placement)"),
         None => "its fmax (not measured: --no-synth, or the tools missing)".into(),
@@ -73,25 +104,27 @@ pub fn run(fmax_mhz: Option<f64>) -> Result<(), String> {
         "lighting", "s_N", "paper ms", "model ms", "speed-up", "rtl µs", "angle mean/max °", "image LSB mean/max"
     );
     for (k, &s_n) in SIZES.iter().enumerate() {
+        let (_, q, _, angle) = sweep.iter().find(|s| s.0 == s_n).expect("the sweep holds Table 1's sizes");
         let t = Instant::now();
-        let q = quantize::quantize(&normals, s_n);
-        let quant_s = t.elapsed().as_secs_f64();
-        let angle = quantize::angular_error(&normals, &q.index, &q.palette);
-        let stored: Vec<[i64; 3]> = q.palette.iter().map(|&n| s10(n)).collect();
+        // the normaliser's outputs as a palette keeps them (Sq1.10 fits 16 bits), once per map
+        let normed: Vec<[i16; 3]> = q.palette.iter().map(|&n| vectors::normalise::exact(s10(n)).map(|c| c as i16)).collect();
+        let per_map = t.elapsed().as_secs_f64();
+        let wide = |nn: [i16; 3]| nn.map(i64::from);
         for (m, name) in models.iter().enumerate() {
-            // the table is rewritten in place every frame, as a palette's storage is
-            let mut buf = vec![[0i64; 4]; q.palette.len()];
-            let secs = per_call(|| {
-                for ((e, &n), &st) in buf.iter_mut().zip(&q.palette).zip(&stored) {
-                    *e = entry(m, n, st);
-                }
-                std::hint::black_box(&buf);
-            });
-            let table = buf;
+            // the table is rewritten in place every frame as the RAM holds it, a 32-bit RGBA word an entry
+            let mut buf = vec![[0u8; 4]; q.palette.len()];
+            let word = |e: [i64; 4]| e.map(|c| c as u8); // each U8 already
+            // each model's loop on its own, compiled for its closure (no match and no indirect call per entry)
+            let secs = match m {
+                0 => fill(&mut buf, |k| [0, 0, 0, (vectors::dot3::exact(wide(normed[k]), lq) >> 2) as u8]),
+                1 => fill(&mut buf, |k| word(table_builder::exact_normalised(wide(normed[k]), lq, hq, conc, spec))),
+                _ => fill(&mut buf, |k| word(entry(m, q.palette[k], wide(normed[k])))),
+            };
+            let table: Vec<[i64; 4]> = buf.iter().map(|e| e.map(i64::from)).collect();
             // the image: each texel's entry against its own normal shaded the same way
             let mut img = vectors::stats::ErrorStats::default();
             for (t, (n, &i)) in normals.iter().zip(&q.index).enumerate().step_by(7) {
-                let (a, b) = (table[i as usize], entry(m, *n, s10(*n)));
+                let (a, b) = (table[i as usize], own(m, *n));
                 img.add((0..4).map(|c| (a[c] - b[c]).abs()).max().unwrap_or(0) as f64, || format!("texel {t}"));
             }
             let paper = PAPER_MS[m][k];
@@ -107,10 +140,42 @@ pub fn run(fmax_mhz: Option<f64>) -> Result<(), String> {
                 format!("{:.3}/{:.3}", angle.mean(), angle.max.max(0.0)), format!("{:.3}/{:.0}", img.mean(), img.max.max(0.0))
             );
         }
-        println!("{:<20} {:>6} quantization itself: {:.0} ms ({} distinct normals in the map)", "", s_n, quant_s * 1e3, q.distinct);
+        println!("{:<20} {:>6} per map: the palette normalised in {:.3} ms", "", s_n, per_map * 1e3);
     }
     println!("(image: every 7th texel, the largest channel difference; Lambert compares α alone)");
+
+    println!("\nthe quantizer on the same map ({} distinct normals): median cut, then k-means on the sphere", sweep[0].1.distinct);
+    println!("{:>6} {:>10} {:>9} {:>18}", "s_N", "ms", "bits", "angle mean/max °");
+    for (s_n, q, secs, angle) in &sweep {
+        println!("{s_n:>6} {:>10.0} {:>9} {:>18}", secs * 1e3, q.index_bits(), format!("{:.3}/{:.3}", angle.mean(), angle.max.max(0.0)));
+    }
+
+    // Figure 3: the map shaded through its palette at 16 … 2048 normals, and unquantized; equation (1) blends
+    let shade = |e: [i64; 4]| -> [u8; 3] {
+        let c = tables::blend_exact_specular(MATERIAL, e.map(|x| x as f64 / 255.0));
+        [c[0], c[1], c[2]].map(|x| (x * 255.0).round().clamp(0.0, 255.0) as u8)
+    };
+    let picture = |name: String, rgb: &dyn Fn(usize) -> [u8; 3]| -> Result<String, String> {
+        let img = image::RgbImage::from_fn(MAP as u32, MAP as u32, |x, y| image::Rgb(rgb(y as usize * MAP + x as usize)));
+        sim::render::save_png(&out.join(&name), &img).map(|_| name)
+    };
+    let mut written = vec![picture("figure3_unquantized.png".into(), &|k| shade(own(1, normals[k])))?];
+    for (s_n, q, ..) in &sweep[..FIGURE_3] {
+        let table: Vec<[i64; 4]> = q.palette.iter().map(|&n| own(1, n)).collect();
+        written.push(picture(format!("figure3_{s_n}.png"), &|k| shade(table[q.index[k] as usize]))?);
+    }
+    println!("\nFigure 3 (Lambert + specular, equation (1)) in {}: {}", out.display(), written.join(", "));
     Ok(())
+}
+
+/// Seconds to fill the table once with `f` (entry k from palette normal k), as `per_call` measures.
+fn fill(buf: &mut [[u8; 4]], f: impl Fn(usize) -> [u8; 4]) -> f64 {
+    per_call(|| {
+        for (k, e) in buf.iter_mut().enumerate() {
+            *e = f(k);
+        }
+        std::hint::black_box(&*buf);
+    })
 }
 
 fn vectors_latency() -> usize {

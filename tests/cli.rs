@@ -311,8 +311,24 @@ fn quantize_refuses_a_bad_map_in_one_line_and_writes_nothing() {
 
 #[test]
 fn palette_table_prints_table_1_with_its_added_columns() {
-    let (code, out, err) = bumprtl(&["palette-table", "--no-synth"]);
+    let pics = scratch("palette-table");
+    let (code, out, err) = bumprtl(&["palette-table", "--no-synth", "--out", pics.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
+    // the quantizer at every size, its error falling as s_N grows; Figure 3's pictures, each a 512 x 512 PNG
+    let sweep: Vec<f64> = out
+        .lines()
+        .skip_while(|l| !l.starts_with("the quantizer"))
+        .filter_map(|l| l.split_whitespace().last()?.split('/').next()?.parse().ok())
+        .collect();
+    assert_eq!(sweep.len(), 11, "{out}");
+    assert!(sweep.windows(2).all(|w| w[1] < w[0]), "{sweep:?}");
+    for s_n in ["unquantized", "16", "32", "64", "128", "256", "512", "1024", "2048"] {
+        let img = image::open(pics.join(format!("figure3_{s_n}.png"))).unwrap();
+        assert_eq!((img.width(), img.height()), (512, 512));
+    }
+    let (code, _, err) = bumprtl(&["palette-table", "--no-synth", "--out", "/proc/no-such-folder"]);
+    assert_ne!(code, 0);
+    assert!(err.lines().count() == 1 && err.contains("/proc/no-such-folder"), "{err}");
     for model in ["Lambert ", "Lambert + specular", "chrome", "environment"] {
         let rows: Vec<&str> = out.lines().filter(|l| l.starts_with(model)).collect();
         assert_eq!(rows.len(), if model == "Lambert " { 6 } else { 3 }, "{model}: {out}");

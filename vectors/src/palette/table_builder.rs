@@ -22,7 +22,13 @@ crate::ports! {
 
 /// The entry (r, g, b, α) of a normal.
 pub fn exact(n: [i64; 3], l: [i64; 3], h: [i64; 3], conc: i64, spec: [i64; 3]) -> [i64; 4] {
-    let nn = normalise::exact(n);
+    exact_normalised(normalise::exact(n), l, h, conc, spec)
+}
+
+/// The entry from the normaliser's output `nn` (Sq1.10): what follows the normaliser, for software that keeps a
+/// palette's normalised normals from frame to frame (a palette changes per map, not per frame).
+#[inline]
+pub fn exact_normalised(nn: [i64; 3], l: [i64; 3], h: [i64; 3], conc: i64, spec: [i64; 3]) -> [i64; 4] {
     let x = dot3::exact(nn, l);
     let p = gloss::exact(conc, dot3::exact(nn, h));
     let c = spec.map(|s| (p * s + 512) >> 10); // U18 + 512 → >> 10: U8, rounded half up

@@ -14,6 +14,7 @@ crate::ports! {
     ],
 }
 
+#[inline]
 pub fn exact(n: [i64; 3], l: [i64; 3]) -> i64 {
     let d = n[0] * l[0] + n[1] * l[1] + n[2] * l[2]; // S25, Q2.20
     saturate(truncate(d, 10), 0, 1023) // floor to Q.10, then 0..1023

@@ -15,6 +15,7 @@ crate::ports! {
     ],
 }
 
+#[inline]
 pub fn exact(c: i64, x: i64) -> i64 {
     let k = c + 8; // U9, Q6.3
     let l = (1023 - truncate(k * (1023 - x), 3)).max(0); // U19 >> 3 (floor) → U16; 1023 − that, ≥ 0: U10
