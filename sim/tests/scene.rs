@@ -105,3 +105,15 @@ fn the_palette_path_gets_closer_to_its_ideal_with_more_normals() {
     }
     assert!(last.0 < 1.0, "s_N 4096: {:.3} LSB", last.0);
 }
+
+#[test]
+fn a_palette_of_one_normal_shades_the_frame_with_one_colour_in_the_model_and_in_rust_hdl() {
+    let s = Scene { size: 16, ..scene() };
+    let p = Palette::new(1, &s);
+    let prep = p.prepare(&s);
+    assert_eq!((prep.prologue, p.built().unwrap().codes.len()), (1, 1));
+    let model = sim::render::model(p.model(), &prep);
+    assert!(model.outs.iter().all(|o| *o == model.outs[0]), "one entry, one colour");
+    assert_ne!(model.outs[0], vec![0; 4], "the entry was built before the first pixel read it");
+    assert_eq!(p.rtl().rust_hdl(p.model(), &prep, &|_| {}).outs, model.outs);
+}
