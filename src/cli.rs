@@ -56,6 +56,19 @@ enum Cmd {
         #[arg(long)]
         freq: Option<f64>,
     },
+    /// Every signal of a unit's rtl block: its declared format and the range it takes over the unit's vectors in
+    /// rust-hdl (every input up to 2^20, else the hard cases and --count random vectors), bits needed and spare
+    Widths {
+        unit: String,
+        /// random vectors after the hard cases (units with more than 2^20 inputs)
+        #[arg(long, default_value_t = 1_000_000)]
+        count: usize,
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// also write the table as CSV
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
     /// Exact against ideal for every unit, and the encoders' angular error
     Accuracy {
         /// random hemisphere directions per encoder
@@ -265,6 +278,10 @@ pub fn main() -> Result<(), String> {
                 with_unit!(name.as_str(), U => sim::wave::write_vcd::<U>(u, &inputs, &out))?;
                 println!("{} ({} vectors)", out.display(), inputs.len());
             }
+        }
+        Cmd::Widths { unit: name, count, seed, csv } => {
+            let m = unit(&name)?;
+            with_unit!(name.as_str(), U => crate::widths::run::<U>(m, count, seed, csv.as_deref()))?;
         }
         Cmd::Synth { unit: name, target, dir, freq } => {
             unit(&name)?;

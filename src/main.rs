@@ -6,8 +6,16 @@ mod hardware;
 mod palette_table;
 mod quantize;
 mod report;
+mod widths;
 
 fn main() {
+    // a closed pipe (`bumprtl widths cart_pipeline | head`) ends the program quietly, as it does any Unix tool,
+    // instead of a panic in the next print
+    #[cfg(unix)]
+    // SAFETY: restoring the default action of a signal, before any thread starts
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     if let Err(e) = cli::main() {
         eprintln!("bumprtl: {e}");
         std::process::exit(1);

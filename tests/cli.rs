@@ -337,3 +337,26 @@ fn palette_table_prints_table_1_with_its_added_columns() {
     assert!(out.lines().any(|l| l.starts_with("Lambert + specular") && l.contains("16384") && l.contains("12.5")), "{out}");
     assert!(out.contains("angle mean/max") && out.contains("image LSB mean/max"));
 }
+
+#[test]
+fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
+    let d = scratch("widths");
+    let csv = d.join("dot3.csv");
+    let (code, out, err) = bumprtl(&["widths", "dot3", "--count", "3000", "--csv", csv.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("3000 random vectors") && out.contains("spare"), "{out}");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let row = |name: &str| rows.iter().find(|r| r[0] == name).unwrap_or_else(|| panic!("{name} missing:\n{text}")).clone();
+    // the sum of three products is signed (Sq4.20); the magnitudes before the multipliers reach 2048 (−2048 negated)
+    assert_eq!(&row("uut.s4_sum.q")[1..5], ["Sq4_20", "sQ4.20", "25", "1"]);
+    assert!(row("uut.s4_sum.q")[5].parse::<i64>().unwrap() < 0);
+    assert_eq!(row("uut.s1_nm$0.d")[6], "2048");
+    for r in &rows {
+        let (bits, needed): (usize, usize) = (r[3].parse().unwrap(), r[7].parse().unwrap());
+        assert!(needed <= bits, "{r:?}");
+    }
+    let (code, _, err) = bumprtl(&["widths", "no_such_unit"]);
+    assert_ne!(code, 0);
+    assert_eq!(err.lines().count(), 1, "{err}");
+}

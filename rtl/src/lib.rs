@@ -64,6 +64,11 @@ pub mod palette {
 
 pub mod stream;
 
+/// The rtl's source text, embedded at build time (`build.rs`): the width report reads declared types from it.
+pub mod source {
+    include!(concat!(env!("OUT_DIR"), "/sources.rs"));
+}
+
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
 pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};

@@ -171,9 +171,18 @@ impl<U: StreamUnit> Runner<U> {
 
     /// One clock: apply a slot with the clock low, raise it, and return the output vector if one is valid.
     pub fn step(&mut self, valid: bool, values: &[u64]) -> Option<Vec<u64>> {
+        self.step_probed(valid, values, None)
+    }
+
+    /// `step`, with `probe` shown every signal (as `uut.<field>…`) once the slot has settled with the clock low:
+    /// then every register's d holds what the edge will latch and every wire what this slot makes of it.
+    pub fn step_probed(&mut self, valid: bool, values: &[u64], probe: Option<&mut dyn rust_hdl::core::probe::Probe>) -> Option<Vec<u64>> {
         self.uut.set_inputs(valid, values);
         self.uut.set_clock(false);
         self.settle();
+        if let Some(p) = probe {
+            self.uut.accept("uut", p);
+        }
         self.trace(self.cycle * 10_000);
         self.uut.set_clock(true);
         self.settle();

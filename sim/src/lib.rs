@@ -10,3 +10,4 @@ pub mod scene;
 pub mod shortcomings;
 pub mod variants;
 pub mod wave;
+pub mod widths;
