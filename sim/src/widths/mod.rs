@@ -7,6 +7,8 @@
 //! substituted, down to its type alias. The values come from a rust-hdl probe that visits every signal once a clock,
 //! with the clock low and the slot settled (every register's d is then what the edge latches).
 
+pub mod bounds;
+
 use rtl::stream::Runner;
 use rtl::StreamUnit;
 use rust_hdl::core::atom::Atom;

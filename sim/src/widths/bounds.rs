@@ -1,0 +1,722 @@
+//! Datapath widths, proven: a sound bound on every signal of an rtl block over every input sequence, by interval
+//! analysis of the block's own hdl (the rust-hdl AST its `#[hdl_gen]` writes, the one the Verilog is printed from).
+//!
+//! A value is a set of bit patterns written as an interval [lo, hi] of integers of a width `bits`: the patterns are
+//! `v mod 2^bits` for v in it. Two's complement arithmetic is arithmetic mod 2^bits, so + − ! and negation are
+//! exact on such intervals whether the bits are read signed or unsigned, and so is `get_bits` (a floor division);
+//! the operations that read patterns unsigned (×, logical >>, comparisons, zero extension) split the interval where
+//! it crosses 2^bits. An interval as long as 2^bits is every pattern. Each block's statements are evaluated with
+//! every signal at the hull of the values it can take, `if` branches refining the tested signal (its top bit, or a
+//! comparison with a constant); a register's q takes its d's values and its initial zero; RAM reads take what is
+//! written and the initial contents; ROM outputs the hull of their tables. All blocks are swept until nothing
+//! grows: the least fixed point, which holds every value any input sequence within the ports' ranges can produce.
+
+use rust_hdl::core::ast::{
+    Verilog, VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogOp, VerilogOpUnary, VerilogStatement as S,
+};
+use rust_hdl::core::atom::{Atom, AtomKind};
+use rust_hdl::core::block::Block;
+use rust_hdl::core::probe::Probe;
+use std::collections::HashMap;
+
+/// A set of `bits`-wide patterns: `v mod 2^bits` for lo ≤ v ≤ hi.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct V {
+    pub lo: i128,
+    pub hi: i128,
+    pub bits: u32,
+    /// a literal of the source (its width is the other operand's)
+    lit: bool,
+}
+
+fn m(bits: u32) -> i128 {
+    1i128 << bits.min(100)
+}
+
+impl V {
+    pub fn new(lo: i128, hi: i128, bits: u32) -> V {
+        V { lo, hi, bits, lit: false }.norm()
+    }
+    pub fn full(bits: u32) -> V {
+        V { lo: 0, hi: m(bits) - 1, bits, lit: false }
+    }
+    fn exact(v: i128, bits: u32) -> V {
+        V::new(v, v, bits)
+    }
+    pub fn is_full(&self) -> bool {
+        self.hi - self.lo + 1 >= m(self.bits)
+    }
+    fn norm(self) -> V {
+        if self.hi - self.lo + 1 >= m(self.bits) { V { lit: false, ..V::full(self.bits) } } else { self }
+    }
+    fn with_bits(self, bits: u32) -> V {
+        V { bits, lit: false, ..self }.norm()
+    }
+    /// The patterns read unsigned, as one or two intervals in [0, 2^bits).
+    pub fn unsigned(&self) -> Vec<(i128, i128)> {
+        if self.is_full() {
+            return vec![(0, m(self.bits) - 1)];
+        }
+        let a = self.lo.rem_euclid(m(self.bits));
+        let len = self.hi - self.lo;
+        if a + len < m(self.bits) { vec![(a, a + len)] } else { vec![(a, m(self.bits) - 1), (0, a + len - m(self.bits))] }
+    }
+    /// The patterns read as two's complement, as one or two intervals in [−2^(bits−1), 2^(bits−1)).
+    pub fn signed(&self) -> Vec<(i128, i128)> {
+        let h = m(self.bits) / 2;
+        let mut p: Vec<(i128, i128)> = self
+            .unsigned()
+            .into_iter()
+            .flat_map(|(a, b)| {
+                if b < h { vec![(a, b)] } else if a >= h { vec![(a - m(self.bits), b - m(self.bits))] } else { vec![(h - m(self.bits), b - m(self.bits)), (a, h - 1)] }
+            })
+            .collect();
+        // pieces that touch are one run: [−6, −1] and [0, 4] are [−6, 4]
+        p.sort();
+        let mut out: Vec<(i128, i128)> = vec![];
+        for (a, b) in p {
+            match out.last_mut() {
+                Some(l) if a <= l.1 + 1 => l.1 = l.1.max(b),
+                _ => out.push((a, b)),
+            }
+        }
+        out
+    }
+    /// The range in one reading: (min, max) over the patterns, unsigned or two's complement.
+    pub fn range(&self, signed: bool) -> (i128, i128) {
+        let p = if signed { self.signed() } else { self.unsigned() };
+        (p.iter().map(|x| x.0).min().unwrap_or(0), p.iter().map(|x| x.1).max().unwrap_or(0))
+    }
+    /// The smallest interval of patterns holding both (the same width).
+    pub fn join(self, o: V) -> V {
+        let bits = self.bits.max(o.bits);
+        let (a, b) = (self.with_bits(bits), o.with_bits(bits));
+        if a.is_full() || b.is_full() {
+            return V::full(bits);
+        }
+        let period = m(bits);
+        let base = a.lo.rem_euclid(period);
+        let a = V { lo: base, hi: base + (a.hi - a.lo), ..a };
+        let bstart = b.lo.rem_euclid(period);
+        let blen = b.hi - b.lo;
+        // b placed a period lower, level, or higher: the shortest hull
+        let best = [-period, 0, period]
+            .iter()
+            .map(|&k| (a.lo.min(bstart + k), a.hi.max(bstart + k + blen)))
+            .min_by_key(|(lo, hi)| hi - lo)
+            .unwrap();
+        V::new(best.0, best.1, bits)
+    }
+    fn from_pieces(p: &[(i128, i128)], bits: u32) -> V {
+        let lo = p.iter().map(|x| x.0).min().unwrap_or(0);
+        let hi = p.iter().map(|x| x.1).max().unwrap_or(0);
+        V::new(lo, hi, bits)
+    }
+    /// Restricted to the patterns whose `signed`/unsigned reading lies in [lo, hi]; None when none does.
+    fn within(self, signed: bool, lo: i128, hi: i128) -> Option<V> {
+        let p: Vec<(i128, i128)> =
+            (if signed { self.signed() } else { self.unsigned() }).into_iter().filter_map(|(a, b)| (a.max(lo) <= b.min(hi)).then(|| (a.max(lo), b.min(hi)))).collect();
+        if p.is_empty() {
+            return None;
+        }
+        // two pieces in the signed reading may be one run in the unsigned one: join them as patterns
+        let mut it = p.into_iter().map(|(a, b)| V::new(a, b, self.bits));
+        let first = it.next()?;
+        Some(it.fold(first, V::join))
+    }
+}
+
+fn bitlen(x: i128) -> u32 {
+    128 - x.max(0).leading_zeros()
+}
+
+/// Binary operations on intervals, as rust-hdl computes them (the width of the operands; a literal takes the other's).
+fn binary(a: V, op: &VerilogOp, b: V) -> V {
+    let bits = match (a.lit, b.lit) {
+        (true, false) => b.bits,
+        (false, true) => a.bits,
+        _ => a.bits.max(b.bits),
+    };
+    let bool_of = |t: Option<bool>| match t {
+        Some(x) => V::exact(x as i128, 1),
+        None => V::new(0, 1, 1),
+    };
+    let (ua, ub) = (a.with_bits(bits).unsigned(), b.with_bits(bits).unsigned());
+    let (amin, amax) = (ua.iter().map(|x| x.0).min().unwrap(), ua.iter().map(|x| x.1).max().unwrap());
+    let (bmin, bmax) = (ub.iter().map(|x| x.0).min().unwrap(), ub.iter().map(|x| x.1).max().unwrap());
+    let cmp = |f: &dyn Fn(i128, i128) -> bool| -> Option<bool> {
+        // decided when every pair of pieces' ends agrees (the relations are monotone in each operand)
+        let mut seen = None;
+        for &(a0, a1) in &ua {
+            for &(b0, b1) in &ub {
+                for (x, y) in [(a0, b0), (a0, b1), (a1, b0), (a1, b1)] {
+                    let r = f(x, y);
+                    if seen.is_some_and(|s| s != r) {
+                        return None;
+                    }
+                    seen = Some(r);
+                }
+            }
+        }
+        seen
+    };
+    match op {
+        VerilogOp::Add => V::new(a.lo + b.lo, a.hi + b.hi, bits),
+        VerilogOp::Sub => V::new(a.lo - b.hi, a.hi - b.lo, bits),
+        VerilogOp::Mul => {
+            // Bits<16> × Bits<16> → Bits<32>, the patterns unsigned
+            let mut p = vec![];
+            for &(a0, a1) in &ua {
+                for &(b0, b1) in &ub {
+                    p.push((a0 * b0, a1 * b1));
+                }
+            }
+            V::from_pieces(&p, 2 * bits)
+        }
+        VerilogOp::BitAnd => V::new(0, amax.min(bmax), bits),
+        VerilogOp::BitOr => V::new(amin.max(bmin), ((1i128 << bitlen(amax.max(bmax))) - 1).min(amax + bmax), bits),
+        VerilogOp::BitXor => V::new(0, ((1i128 << bitlen(amax.max(bmax))) - 1).min(amax + bmax), bits),
+        VerilogOp::LogicalAnd | VerilogOp::LogicalOr => {
+            let (ta, tb) = ((amin > 0).then_some(true).or((amax == 0).then_some(false)), (bmin > 0).then_some(true).or((bmax == 0).then_some(false)));
+            bool_of(match op {
+                VerilogOp::LogicalAnd => match (ta, tb) {
+                    (Some(false), _) | (_, Some(false)) => Some(false),
+                    (Some(true), Some(true)) => Some(true),
+                    _ => None,
+                },
+                _ => match (ta, tb) {
+                    (Some(true), _) | (_, Some(true)) => Some(true),
+                    (Some(false), Some(false)) => Some(false),
+                    _ => None,
+                },
+            })
+        }
+        VerilogOp::Shl => match (b.lo == b.hi, b.lo) {
+            (true, k) if (0..64).contains(&k) => V::new(a.lo << k, a.hi << k, bits),
+            _ => V::full(bits),
+        },
+        VerilogOp::Shr => match (b.lo == b.hi, b.lo) {
+            (true, k) if (0..128).contains(&k) => V::from_pieces(&ua.iter().map(|(x, y)| (x >> k, y >> k)).collect::<Vec<_>>(), bits),
+            _ => V::new(0, amax, bits),
+        },
+        VerilogOp::Eq => bool_of(if amin == amax && bmin == bmax && ua.len() == 1 && ub.len() == 1 { Some(amin == bmin) } else if amax < bmin || bmax < amin { Some(false) } else { None }),
+        VerilogOp::Ne => bool_of(if amin == amax && bmin == bmax && ua.len() == 1 && ub.len() == 1 { Some(amin != bmin) } else if amax < bmin || bmax < amin { Some(true) } else { None }),
+        VerilogOp::Lt => bool_of(cmp(&|x, y| x < y)),
+        VerilogOp::Le => bool_of(cmp(&|x, y| x <= y)),
+        VerilogOp::Gt => bool_of(cmp(&|x, y| x > y)),
+        VerilogOp::Ge => bool_of(cmp(&|x, y| x >= y)),
+    }
+}
+
+/// A literal as rust-hdl prints it: `12'h7ff`, `5'b10011`.
+fn literal(text: &str) -> Option<(i128, u32)> {
+    let (bits, rest) = text.split_once('\'')?;
+    let bits: u32 = bits.parse().ok()?;
+    let v = match rest.as_bytes().first()? {
+        b'h' => i128::from_str_radix(&rest[1..], 16).ok()?,
+        b'b' => i128::from_str_radix(&rest[1..], 2).ok()?,
+        b'd' => rest[1..].parse().ok()?,
+        _ => return None,
+    };
+    Some((v, bits))
+}
+
+/// What a module is, to the analysis.
+enum Code {
+    Comb(VerilogBlock),
+    Dff,
+    Rom(Vec<i128>, bool),
+    Ram(Vec<i128>),
+    Other,
+}
+
+struct Module {
+    path: String,
+    code: Code,
+}
+
+/// Walks the block tree: every module's code, every signal's width, the constants' values.
+#[derive(Default)]
+struct Collect {
+    path: Vec<String>,
+    modules: Vec<Module>,
+    widths: HashMap<String, u32>,
+    consts: HashMap<String, V>,
+}
+
+impl Probe for Collect {
+    fn visit_start_scope(&mut self, name: &str, node: &dyn Block) {
+        self.path.push(name.to_string());
+        let code = match node.hdl() {
+            Verilog::Combinatorial(b) => Code::Comb(b),
+            Verilog::Custom(t) if t.contains("q <= d") => Code::Dff,
+            Verilog::Custom(t) if t.contains("case (address)") => {
+                let vals: Vec<i128> = t.lines().filter_map(|l| l.split_once("data = ")).filter(|(k, _)| !k.contains("default")).filter_map(|(_, v)| literal(v.trim_end_matches(';').trim()).map(|x| x.0)).collect();
+                let cases = vals.len();
+                let addr_bits = t.lines().filter_map(|l| l.trim().split_once(':')).filter_map(|(k, _)| literal(k.trim()).map(|x| x.1)).next().unwrap_or(0);
+                Code::Rom(vals, cases as i128 == m(addr_bits))
+            }
+            Verilog::Custom(t) if t.contains("read_data <= mem") => {
+                Code::Ram(t.lines().filter_map(|l| l.split_once("] = ")).filter_map(|(_, v)| literal(v.trim_end_matches(';').trim()).map(|x| x.0)).collect())
+            }
+            _ => Code::Other,
+        };
+        self.modules.push(Module { path: self.path.join("."), code });
+    }
+    fn visit_end_scope(&mut self, _name: &str, _node: &dyn Block) {
+        self.path.pop();
+    }
+    fn visit_start_namespace(&mut self, name: &str, _node: &dyn Block) {
+        self.path.push(name.to_string());
+    }
+    fn visit_end_namespace(&mut self, _name: &str, _node: &dyn Block) {
+        self.path.pop();
+    }
+    fn visit_atom(&mut self, name: &str, a: &dyn Atom) {
+        let full = format!("{}.{name}", self.path.join("."));
+        self.widths.insert(full.clone(), a.bits() as u32);
+        if a.kind() == AtomKind::Constant {
+            if let Some((v, _)) = literal(&a.verilog().to_string()) {
+                self.consts.insert(full, V::exact(v, a.bits() as u32));
+            }
+        }
+    }
+}
+
+/// An array index as the hdl writes it (`4*i+1`, `i - 1`): sums of products of numbers and loop variables.
+fn index_value(text: &str, loops: &[(String, i128)]) -> Option<i128> {
+    let spaced = text.replace('-', " - ").replace('+', " + ").replace('*', " * ");
+    let (mut total, mut term, mut sign) = (0i128, 1i128, 1i128);
+    let mut expect_value = true;
+    for tok in spaced.split_whitespace() {
+        match (tok, expect_value) {
+            ("+" | "-", false) => {
+                total += sign * term;
+                (term, sign, expect_value) = (1, if tok == "-" { -1 } else { 1 }, true);
+            }
+            ("*", false) => expect_value = true,
+            (t, true) => {
+                let v = t.parse::<i128>().ok().or_else(|| loops.iter().rev().find(|(n, _)| n == t).map(|x| x.1))?;
+                term *= v;
+                expect_value = false;
+            }
+            _ => return None,
+        }
+    }
+    (!expect_value).then_some(total + sign * term)
+}
+
+/// A module's local signal name as the hdl writes it (`s1_nm[i]$d$next`, loop indices bound) → the probe's name
+/// under `path` (`uut.dot.s1_nm$0.d`).
+fn full_name(path: &str, local: &str, loops: &[(String, i128)]) -> String {
+    let local = local.strip_suffix("$next").unwrap_or(local);
+    // array indices: `[0]`, `[i]`, `[i-1]`: sums and differences of loop variables and numbers
+    let mut s = String::with_capacity(local.len());
+    let mut rest = local;
+    while let Some(open) = rest.find('[') {
+        s.push_str(&rest[..open]);
+        let Some(close) = rest[open..].find(']') else { break };
+        let index = &rest[open + 1..open + close];
+        if let Some(total) = index_value(index, loops) {
+            s.push_str(&format!("${total}"));
+        } else {
+            s.push_str(&rest[open..open + close + 1]);
+        }
+        rest = &rest[open + close + 1..];
+    }
+    s.push_str(rest);
+    let mut out = String::from(path);
+    for (i, seg) in s.split('$').enumerate() {
+        let numeric = !seg.is_empty() && seg.bytes().all(|c| c.is_ascii_digit());
+        out.push(if i > 0 && numeric { '$' } else { '.' });
+        out.push_str(seg);
+    }
+    out
+}
+
+/// The analysis' state: every signal's values so far.
+struct State<'a> {
+    vals: HashMap<String, V>,
+    widths: &'a HashMap<String, u32>,
+    changed: bool,
+}
+
+impl State<'_> {
+    fn grow(&mut self, name: &str, v: V) {
+        let bits = self.widths.get(name).copied().unwrap_or(v.bits);
+        let v = if v.lit || v.bits >= bits { v.with_bits(bits) } else { V::from_pieces(&v.unsigned(), bits) };
+        let next = match self.vals.get(name) {
+            Some(old) => old.join(v),
+            None => v,
+        };
+        if self.vals.get(name) != Some(&next) {
+            self.vals.insert(name.to_string(), next);
+            self.changed = true;
+        }
+    }
+}
+
+/// One evaluation of a module's statements; `refine` holds a branch's narrower view of tested signals, `writes`
+/// the values assigned on this path (the last assignment wins).
+struct Eval<'s, 'a> {
+    st: &'s State<'a>,
+    path: &'s str,
+    loops: Vec<(String, i128)>,
+    refine: HashMap<String, V>,
+}
+
+impl Eval<'_, '_> {
+    fn read(&self, local: &str) -> Option<V> {
+        if let Some((_, k)) = self.loops.iter().find(|(v, _)| v == local) {
+            return Some(V { lit: true, ..V::exact(*k, 32) });
+        }
+        let n = full_name(self.path, local, &self.loops);
+        self.refine.get(&n).or_else(|| self.st.vals.get(&n)).copied()
+    }
+
+    fn expr(&self, e: &E) -> Option<V> {
+        Some(match e {
+            E::Signal(s) => self.read(s)?,
+            E::Literal(l) => {
+                let (v, bits) = literal(&l.to_string())?;
+                V { lit: true, ..V::exact(v, bits) }
+            }
+            E::Paren(x) | E::Signed(x) | E::Unsigned(x) => self.expr(x)?,
+            E::Cast(x, w) => {
+                let v = self.expr(x)?;
+                let w = *w as u32;
+                if w >= v.bits { V::from_pieces(&v.unsigned(), w) } else { v.with_bits(w) }
+            }
+            E::Slice(x, w, off) => {
+                let (v, k) = (self.expr(x)?, self.expr(off)?);
+                if k.lo != k.hi {
+                    return Some(V::full(*w as u32));
+                }
+                let (w, k) = (*w as u32, k.lo as u32);
+                if w + k <= v.bits {
+                    // the patterns' bits k.. are floor(v / 2^k) mod 2^w, whichever reading
+                    V::new(v.lo.div_euclid(1 << k), v.hi.div_euclid(1 << k), w)
+                } else {
+                    V::from_pieces(&v.unsigned().iter().map(|(a, b)| (a >> k, b >> k)).collect::<Vec<_>>(), w)
+                }
+            }
+            E::Index(x, i) => {
+                let (v, i) = (self.expr(x)?, self.expr(i)?);
+                if i.lo != i.hi || v.is_full() {
+                    return Some(V::new(0, 1, 1));
+                }
+                let (a, b) = (v.lo.div_euclid(1 << i.lo), v.hi.div_euclid(1 << i.lo));
+                if a == b { V::exact(a.rem_euclid(2), 1) } else { V::new(0, 1, 1) }
+            }
+            E::Binary(a, op, b) => binary(self.expr(a)?, op, self.expr(b)?),
+            E::Unary(op, x) => {
+                let v = self.expr(x)?;
+                match op {
+                    VerilogOpUnary::Not => V::new(-v.hi - 1, -v.lo - 1, v.bits),
+                    VerilogOpUnary::Neg => V::new(-v.hi, -v.lo, v.bits),
+                    VerilogOpUnary::Any => {
+                        let u = v.unsigned();
+                        if u == [(0, 0)] {
+                            V::exact(0, 1)
+                        } else if u.iter().all(|p| p.0 > 0) {
+                            V::exact(1, 1)
+                        } else {
+                            V::new(0, 1, 1)
+                        }
+                    }
+                    VerilogOpUnary::All => {
+                        let u = v.unsigned();
+                        let top = m(v.bits) - 1;
+                        if u == [(top, top)] {
+                            V::exact(1, 1)
+                        } else if u.iter().all(|p| p.1 < top) {
+                            V::exact(0, 1)
+                        } else {
+                            V::new(0, 1, 1)
+                        }
+                    }
+                    VerilogOpUnary::Xor => V::new(0, 1, 1),
+                }
+            }
+            E::IndexReplace(x, ..) => V::full(self.expr(x)?.bits),
+        })
+    }
+
+    /// The tested signal narrowed on each side of `test`, where it is a top-bit test or a comparison with a
+    /// constant: (name, then, otherwise).
+    fn split(&self, test: &E) -> Option<(String, Option<V>, Option<V>)> {
+        let unparen = |e: &E| -> E {
+            let mut e = e.clone();
+            while let E::Paren(x) = e {
+                e = *x;
+            }
+            e
+        };
+        match unparen(test) {
+            E::Index(x, i) => {
+                let E::Signal(s) = unparen(&x) else { return None };
+                let (v, i) = (self.read(&s)?, self.expr(&i)?);
+                (i.lo == i.hi && i.lo == v.bits as i128 - 1).then_some(())?;
+                let h = m(v.bits) / 2;
+                Some((full_name(self.path, &s, &self.loops), v.within(true, -h, -1), v.within(true, 0, h - 1)))
+            }
+            E::Binary(a, op, b) => {
+                let (E::Signal(s), c) = (unparen(&a), self.expr(&b)?) else { return None };
+                (c.lo == c.hi).then_some(())?;
+                let v = self.read(&s)?;
+                let (c, top) = (c.lo, m(v.bits) - 1);
+                let (t, f) = match op {
+                    VerilogOp::Gt => ((c + 1, top), (0, c)),
+                    VerilogOp::Ge => ((c, top), (0, c - 1)),
+                    VerilogOp::Lt => ((0, c - 1), (c, top)),
+                    VerilogOp::Le => ((0, c), (c + 1, top)),
+                    _ => return None,
+                };
+                Some((full_name(self.path, &s, &self.loops), v.within(false, t.0, t.1), v.within(false, f.0, f.1)))
+            }
+            _ => None,
+        }
+    }
+
+    fn block(&mut self, b: &VerilogBlock, writes: &mut HashMap<String, V>) {
+        for s in b {
+            self.stmt(s, writes);
+        }
+    }
+
+    fn branch(&mut self, refine: Option<(String, V)>, then: &dyn Fn(&mut Self, &mut HashMap<String, V>), base: &HashMap<String, V>) -> HashMap<String, V> {
+        let saved = self.refine.clone();
+        if let Some((n, v)) = refine {
+            self.refine.insert(n, v);
+        }
+        let mut w = base.clone();
+        then(self, &mut w);
+        self.refine = saved;
+        w
+    }
+
+    fn stmt(&mut self, s: &S, writes: &mut HashMap<String, V>) {
+        match s {
+            S::Assignment(target, value) => {
+                let E::Signal(t) = target else { return };
+                if let Some(v) = self.expr(value) {
+                    writes.insert(full_name(self.path, t, &self.loops), v);
+                }
+            }
+            S::SliceAssignment { base, .. } => {
+                if let E::Signal(t) = base {
+                    let n = full_name(self.path, t, &self.loops);
+                    let bits = self.st.widths.get(&n).copied().unwrap_or(1);
+                    writes.insert(n, V::full(bits));
+                }
+            }
+            S::If(c) => {
+                let t = self.expr(&c.test);
+                let (go_then, go_else) = match t.map(|v| v.unsigned()) {
+                    Some(u) if u == [(1, 1)] => (true, false),
+                    Some(u) if u == [(0, 0)] => (false, true),
+                    Some(_) => (true, true),
+                    None => (false, false), // the test is not yet defined: nothing flows this sweep
+                };
+                let split = self.split(&c.test);
+                let (rt, re) = match &split {
+                    Some((n, t, e)) => (t.map(|v| (n.clone(), v)), e.map(|v| (n.clone(), v))),
+                    None => (None, None),
+                };
+                // a side the refinement shows empty is not taken
+                let go_then = go_then && !matches!(&split, Some((_, None, _)));
+                let go_else = go_else && !matches!(&split, Some((_, _, None)));
+                let base = writes.clone();
+                let mut outs = vec![];
+                if go_then {
+                    outs.push(self.branch(rt, &|e, w| e.block(&c.then, w), &base));
+                }
+                if go_else {
+                    let other = |e: &mut Self, w: &mut HashMap<String, V>| match &c.otherwise {
+                        VerilogBlockOrConditional::Block(b) => e.block(b, w),
+                        VerilogBlockOrConditional::Conditional(s) => e.stmt(s, w),
+                        VerilogBlockOrConditional::None => {}
+                    };
+                    outs.push(self.branch(re, &other, &base));
+                }
+                self.merge(writes, &base, outs);
+            }
+            S::Match(mt) => {
+                let base = writes.clone();
+                let outs: Vec<HashMap<String, V>> = mt.cases.iter().map(|c| self.branch(None, &|e, w| e.block(&c.block, w), &base)).collect();
+                self.merge(writes, &base, outs);
+            }
+            S::Loop(l) => {
+                let (from, to) = (literal(&l.from.to_string()).map(|x| x.0).unwrap_or(0), literal(&l.to.to_string()).map(|x| x.0).unwrap_or(0));
+                for k in from..to {
+                    self.loops.push((l.index.clone(), k));
+                    self.block(&l.block, writes);
+                    self.loops.pop();
+                }
+            }
+            S::Macro(b) => self.block(b, writes),
+            S::Comment(_) | S::Link(_) => {}
+        }
+    }
+
+    /// The writes after the branches: a signal written on every branch takes their join; one written on some
+    /// only also keeps what it held before (the path's earlier write, or its value so far).
+    fn merge(&self, writes: &mut HashMap<String, V>, base: &HashMap<String, V>, outs: Vec<HashMap<String, V>>) {
+        if outs.is_empty() {
+            return;
+        }
+        let mut names: Vec<&String> = outs.iter().flat_map(|o| o.keys()).collect();
+        names.sort();
+        names.dedup();
+        let mut merged = base.clone();
+        for n in names {
+            let mut v: Option<V> = None;
+            for o in &outs {
+                let x = o.get(n).copied().or_else(|| base.get(n).copied()).or_else(|| self.st.vals.get(n).copied());
+                v = match (v, x) {
+                    (Some(a), Some(b)) => Some(a.join(b)),
+                    (a, b) => a.or(b),
+                };
+            }
+            if let Some(v) = v {
+                merged.insert(n.clone(), v);
+            }
+        }
+        *writes = merged;
+    }
+}
+
+/// The proven values of every signal of `block` (by the probe's names, `uut.…`), its inputs ranging over
+/// `inputs` (port name → (min, max, signed)); the number of sweeps to the fixed point.
+pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)]) -> (HashMap<String, V>, usize) {
+    let mut c = Collect::default();
+    block.accept("uut", &mut c);
+    let mut st = State { vals: HashMap::new(), widths: &c.widths, changed: false };
+    for (name, lo, hi) in inputs {
+        let n = format!("uut.{name}");
+        let bits = c.widths.get(&n).copied().unwrap_or(64);
+        st.vals.insert(n, V::new(*lo as i128, *hi as i128, bits));
+    }
+    st.vals.insert("uut.valid_in".into(), V::new(0, 1, 1));
+    for (n, v) in &c.consts {
+        st.vals.insert(n.clone(), *v);
+    }
+    const SWEEPS: usize = 400;
+    let mut sweeps = 0;
+    loop {
+        sweeps += 1;
+        st.changed = false;
+        let before = (sweeps >= SWEEPS).then(|| st.vals.clone());
+        for md in &c.modules {
+            let p = md.path.as_str();
+            match &md.code {
+                Code::Comb(b) => {
+                    let mut writes = HashMap::new();
+                    {
+                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new() };
+                        e.block(b, &mut writes);
+                    }
+                    for (n, v) in writes {
+                        if !n.ends_with("clock") {
+                            st.grow(&n, v);
+                        }
+                    }
+                }
+                Code::Dff => {
+                    let (d, q) = (format!("{p}.d"), format!("{p}.q"));
+                    let bits = c.widths.get(&q).copied().unwrap_or(1);
+                    st.grow(&q, V::exact(0, bits));
+                    if let Some(v) = st.vals.get(&d).copied() {
+                        st.grow(&q, v);
+                    }
+                }
+                Code::Rom(vals, full) => {
+                    let n = format!("{p}.data");
+                    let bits = c.widths.get(&n).copied().unwrap_or(1);
+                    let mut v = vals.iter().fold(None, |acc: Option<V>, &x| Some(acc.map_or(V::exact(x, bits), |a| a.join(V::exact(x, bits)))));
+                    if !full {
+                        v = Some(v.map_or(V::exact(0, bits), |a| a.join(V::exact(0, bits))));
+                    }
+                    if let Some(v) = v {
+                        st.grow(&n, v);
+                    }
+                }
+                Code::Ram(init) => {
+                    let n = format!("{p}.read_data");
+                    let bits = c.widths.get(&n).copied().unwrap_or(1);
+                    st.grow(&n, V::exact(0, bits)); // the simulator's unwritten words read zero
+                    for &x in init {
+                        st.grow(&n, V::exact(x, bits));
+                    }
+                    if let Some(v) = st.vals.get(&format!("{p}.write_data")).copied() {
+                        st.grow(&n, v);
+                    }
+                }
+                Code::Other => {}
+            }
+        }
+        if !st.changed {
+            break;
+        }
+        if let Some(before) = before {
+            // past a feed-forward pipeline's depth many times over, something still grows (a counter, an
+            // accumulator, a loop through a register): whatever grew this sweep takes every pattern (widening)
+            let grew: Vec<String> = st.vals.iter().filter(|(n, v)| before.get(*n) != Some(*v)).map(|(n, _)| n.clone()).collect();
+            for n in grew {
+                let bits = st.vals[&n].bits;
+                st.vals.insert(n, V::full(bits));
+            }
+            if sweeps >= 4 * SWEEPS {
+                break;
+            }
+        }
+    }
+    (st.vals, sweeps)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn intervals_of_patterns_read_both_ways() {
+        let v = V::new(-5, 5, 8);
+        assert_eq!(v.range(true), (-5, 5));
+        assert_eq!(v.range(false), (0, 255));
+        assert_eq!(v.unsigned(), [(251, 255), (0, 5)]);
+        assert_eq!(V::new(250, 260, 8).signed(), [(-6, 4)]);
+        assert!(V::new(0, 256, 8).is_full());
+        assert_eq!(V::new(-3, -1, 8).join(V::new(0, 2, 8)).range(true), (-3, 2));
+        assert_eq!(V::new(253, 255, 8).join(V::new(0, 2, 8)).range(true), (-3, 2));
+    }
+
+    #[test]
+    fn operations_bound_what_the_simulator_computes() {
+        let (a, b) = (V::new(-2048, 2047, 12), V::new(3, 3, 12));
+        assert_eq!(binary(a, &VerilogOp::Add, b).range(true), (-2048, 2047)); // it can wrap: every pattern
+        assert_eq!(binary(V::new(-2000, 2000, 12), &VerilogOp::Add, b).range(true), (-1997, 2003));
+        let mag = V::new(0, 2048, 16);
+        assert_eq!(binary(mag, &VerilogOp::Mul, mag).range(false), (0, 2048 * 2048));
+        assert_eq!(binary(V::new(-4, 4, 8), &VerilogOp::Shr, V { lit: true, ..V::exact(1, 32) }).range(false), (0, 127));
+        assert_eq!(binary(V::new(0, 1023, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(), [(0, 0)]);
+        assert_eq!(binary(V::new(0, 1024, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(), [(0, 1)]);
+    }
+
+    #[test]
+    fn hdl_names_become_the_probe_s() {
+        let l = [("i".to_string(), 2)];
+        assert_eq!(full_name("uut.d", "line[i-1]$q", &l), "uut.d.line$1.q");
+        assert_eq!(full_name("uut", "s1_nm[i]$d$next", &l), "uut.s1_nm$2.d");
+        assert_eq!(full_name("uut", "unit$0$out", &[]), "uut.unit$0.out");
+        assert_eq!(full_name("uut", "line[0]$q", &[]), "uut.line$0.q");
+        assert_eq!(full_name("uut", "s1_t[4 * i + 3]$q", &l), "uut.s1_t$11.q");
+        assert_eq!(full_name("uut", "s1_t[4*i+1]$q", &l), "uut.s1_t$9.q");
+    }
+
+    #[test]
+    fn the_literals_read_as_rust_hdl_prints_them() {
+        assert_eq!(literal("12'h7ff"), Some((2047, 12)));
+        assert_eq!(literal("5'b10011"), Some((19, 5)));
+        assert_eq!(literal("32'h0"), Some((0, 32)));
+    }
+}
