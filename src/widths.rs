@@ -5,7 +5,7 @@
 
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl::StreamUnit;
-use sim::widths::{bits_needed, seen_ticking, Formats};
+use sim::widths::{bits_needed, bounds, seen_ticking, Formats};
 use vectors::UnitModel;
 
 /// One signal's row.
@@ -18,6 +18,11 @@ pub struct Row {
     pub min: i64,
     pub max: i64,
     pub needed: usize,
+    /// the proven range in the same reading (every input sequence), the bits it needs
+    pub proven: (i128, i128),
+    pub proven_needed: usize,
+    /// the step that writes it may wrap: the exact hull of what it computes, which the declared range does not hold
+    pub wrap: Option<(i128, i128)>,
 }
 
 impl Row {
@@ -27,6 +32,10 @@ impl Row {
     /// two or more bits at the top never used by the data seen
     pub fn unused_flag(&self) -> bool {
         self.spare() >= 2
+    }
+    /// spare bits at the top over every input
+    pub fn proven_spare(&self) -> usize {
+        self.bits.saturating_sub(self.proven_needed)
     }
 }
 
@@ -45,21 +54,41 @@ pub fn measure<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64) -> Result<
     let ranges = seen_ticking::<U>(m, &inputs, &|k| bar.set_position(k as u64));
     bar.finish_and_clear();
     let f = Formats::of::<U>();
+    let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
+    let signed = |n: &str| f.format(n).is_some_and(|x| x.signed);
+    let proof = bounds::prove(&U::build(), &ports, &signed);
+    let proven = &proof.values;
     let mut rows = vec![];
     for s in &ranges.signals {
         let Some(fmt) = f.format(&s.name) else { continue }; // clocks: no value to range
         let (min, max) = if fmt.signed { (s.smin, s.smax) } else { (s.umin as i64, s.umax as i64) };
-        rows.push(Row { needed: bits_needed(fmt.signed, min, max), name: s.name.clone(), q: fmt.q(), format: fmt.name, bits: fmt.bits, signed: fmt.signed, min, max });
+        let p = proven.get(&s.name).copied().unwrap_or(bounds::V::full(fmt.bits as u32));
+        let pr = p.range(fmt.signed);
+        rows.push(Row {
+            needed: bits_needed(fmt.signed, min, max),
+            proven_needed: bits_needed(fmt.signed, pr.0 as i64, pr.1 as i64),
+            proven: pr,
+            wrap: proof.wraps.get(&s.name).copied(),
+            name: s.name.clone(),
+            q: fmt.q(),
+            format: fmt.name,
+            bits: fmt.bits,
+            signed: fmt.signed,
+            min,
+            max,
+        });
     }
     Ok((rows, inputs.len(), what, ranges.clocks))
 }
 
 pub fn csv(rows: &[Row]) -> String {
-    let mut t = String::from("signal,format,q,bits,signed,seen_min,seen_max,bits_needed,spare,unused_flag\n");
+    let mut t = String::from("signal,format,q,bits,signed,seen_min,seen_max,bits_needed,spare,unused_flag,proven_min,proven_max,proven_bits_needed,proven_spare,may_wrap,exact_min,exact_max\n");
     for r in rows {
         t.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{}\n",
-            r.name, r.format.replace(',', ";"), r.q, r.bits, r.signed as u8, r.min, r.max, r.needed, r.spare(), r.unused_flag() as u8
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            r.name, r.format.replace(',', ";"), r.q, r.bits, r.signed as u8, r.min, r.max, r.needed, r.spare(), r.unused_flag() as u8,
+            r.proven.0, r.proven.1, r.proven_needed, r.proven_spare(), r.wrap.is_some() as u8,
+            r.wrap.map(|w| w.0.to_string()).unwrap_or_default(), r.wrap.map(|w| w.1.to_string()).unwrap_or_default()
         ));
     }
     t
@@ -73,18 +102,37 @@ pub fn run<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64, csv_out: Optio
         synth::export::write_atomic(p, csv(&rows).as_bytes())?;
     }
     println!("widths of `{}`: {what}; {clocks} clocks in rust-hdl, every signal probed ({:.0} vectors/s)", m.name, n as f64 / secs);
-    println!("ranges seen in simulation: bits needed by the data, spare bits at the top; ! marks two or more unused");
+    println!("seen: the range over those vectors in simulation; proven: over every input sequence (interval analysis of");
+    println!("the block's hdl); needs / spare: bits that range needs, and the declared bits it leaves at the top;");
+    println!("! two or more bits never used by the data seen; W the step writing it may wrap (its exact result, each operand");
+    println!("read in its declared format, can leave the declared range: listed below)");
     let w = rows.iter().map(|r| r.name.len()).max().unwrap_or(6).max(6);
-    println!("{:<w$} {:>10} {:>9} {:>5} {:>24} {:>6} {:>6}", "signal", "format", "Q", "bits", "seen min .. max", "needs", "spare");
+    println!(
+        "{:<w$} {:>10} {:>9} {:>5} {:>24} {:>5} {:>5} {:>28} {:>5} {:>5}",
+        "signal", "format", "Q", "bits", "seen min .. max", "needs", "spare", "proven min .. max", "needs", "spare"
+    );
     for r in &rows {
         println!(
-            "{:<w$} {:>10} {:>9} {:>5} {:>24} {:>6} {:>6} {}",
-            r.name, r.format, r.q, r.bits, format!("{} .. {}", r.min, r.max), r.needed, r.spare(), if r.unused_flag() { "!" } else { "" }
+            "{:<w$} {:>10} {:>9} {:>5} {:>24} {:>5} {:>5} {:>28} {:>5} {:>5} {}{}",
+            r.name, r.format, r.q, r.bits, format!("{} .. {}", r.min, r.max), r.needed, r.spare(),
+            format!("{} .. {}", r.proven.0, r.proven.1), r.proven_needed, r.proven_spare(),
+            if r.unused_flag() { "!" } else { "" }, if r.wrap.is_some() { "W" } else { "" }
         );
     }
     let flagged = rows.iter().filter(|r| r.unused_flag()).count();
+    let wraps: Vec<&Row> = rows.iter().filter(|r| r.wrap.is_some()).collect();
     let spare: usize = rows.iter().map(Row::spare).sum();
-    println!("{} signals, {spare} spare bits in all, {flagged} with two or more unused", rows.len());
+    let proven_spare: usize = rows.iter().map(Row::proven_spare).sum();
+    println!(
+        "{} signals: {spare} spare bits seen, {proven_spare} proven; {flagged} with two or more unused (!), {} steps that may wrap (W)",
+        rows.len(),
+        wraps.len()
+    );
+    for r in &wraps {
+        let (a, b) = r.wrap.unwrap_or_default();
+        let (lo, hi) = if r.signed { (-(1i128 << (r.bits - 1)), (1i128 << (r.bits - 1)) - 1) } else { (0, (1i128 << r.bits) - 1) };
+        println!("  W {}: computes {a} .. {b}, {} holds {lo} .. {hi}", r.name, r.q);
+    }
     if let Some(p) = csv_out {
         println!("wrote {}", p.display());
     }

@@ -352,6 +352,12 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     assert_eq!(&row("uut.s4_sum.q")[1..5], ["Sq4_20", "sQ4.20", "25", "1"]);
     assert!(row("uut.s4_sum.q")[5].parse::<i64>().unwrap() < 0);
     assert_eq!(row("uut.s1_nm$0.d")[6], "2048");
+    // proven over every input: |n|·|l| ≤ 2048 · 2048, the sum of three within ±3 · 2^22; no wrap in the sum, while
+    // the floor of a negative sum into the unsigned w_q wraps (the clamp after it reads the sign first)
+    assert_eq!(&row("uut.s2_p$0.q")[10..12], ["0", "4194304"]);
+    assert_eq!(&row("uut.s4_sum.q")[10..12], ["-12582912", "12582912"]);
+    assert_eq!(row("uut.s4_sum.d")[14], "0");
+    assert_eq!(&row("uut.w_q")[14..17], ["1", "-12288", "12288"]);
     for r in &rows {
         let (bits, needed): (usize, usize) = (r[3].parse().unwrap(), r[7].parse().unwrap());
         assert!(needed <= bits, "{r:?}");

@@ -20,7 +20,8 @@ fn check<U: rtl::StreamUnit>(name: &'static str, m: &vectors::UnitModel) -> (&'s
     let ranges = seen::<U>(m, &inputs);
     let f = Formats::of::<U>();
     let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
-    let (proven, _) = bounds::prove(&U::build(), &ports);
+    let signed = |n: &str| f.format(n).is_some_and(|x| x.signed);
+    let proven = bounds::prove(&U::build(), &ports, &signed).values;
     let mut bad = vec![];
     for s in &ranges.signals {
         if s.name.ends_with("clock") || s.name.ends_with("_clock") {

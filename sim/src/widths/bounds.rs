@@ -338,6 +338,11 @@ fn full_name(path: &str, local: &str, loops: &[(String, i128)]) -> String {
 struct State<'a> {
     vals: HashMap<String, V>,
     widths: &'a HashMap<String, u32>,
+    /// how each signal's patterns are read (its declared format): two's complement or unsigned
+    signed: &'a dyn Fn(&str) -> bool,
+    /// the assignments whose exact result, read in its operands' formats, may leave the target's range: the
+    /// exact hull of what they compute
+    wraps: HashMap<String, (i128, i128)>,
     changed: bool,
 }
 
@@ -363,6 +368,7 @@ struct Eval<'s, 'a> {
     path: &'s str,
     loops: Vec<(String, i128)>,
     refine: HashMap<String, V>,
+    wraps: Vec<(String, (i128, i128))>,
 }
 
 impl Eval<'_, '_> {
@@ -372,6 +378,79 @@ impl Eval<'_, '_> {
         }
         let n = full_name(self.path, local, &self.loops);
         self.refine.get(&n).or_else(|| self.st.vals.get(&n)).copied()
+    }
+
+    /// The exact value of an expression over integers, each signal read in its declared format, nothing
+    /// wrapped: what the arithmetic means, to hold against the width it is stored in.
+    fn exact(&self, e: &E) -> Option<(i128, i128)> {
+        let view = |v: V, signed: bool| -> (i128, i128) { v.range(signed) };
+        Some(match e {
+            E::Signal(s) => {
+                let v = self.read(s)?;
+                if v.lit {
+                    (v.lo, v.hi)
+                } else {
+                    view(v, (self.st.signed)(&full_name(self.path, s, &self.loops)))
+                }
+            }
+            E::Literal(_) => {
+                let v = self.expr(e)?;
+                (v.lo, v.hi)
+            }
+            E::Paren(x) | E::Signed(x) | E::Unsigned(x) => self.exact(x)?,
+            E::Cast(x, w) => {
+                let v = self.expr(x)?;
+                if *w as u32 >= v.bits {
+                    // zero extension: the patterns read unsigned
+                    view(v, false)
+                } else {
+                    self.exact(x)? // a narrowing cast keeps the value; the target's range judges it
+                }
+            }
+            E::Slice(x, _, off) => {
+                let (a, b) = self.exact(x)?;
+                let k = self.expr(off)?;
+                if k.lo != k.hi {
+                    return None;
+                }
+                (a.div_euclid(1 << k.lo), b.div_euclid(1 << k.lo))
+            }
+            E::Binary(a, op, b) => {
+                let (x, y) = (self.exact(a)?, self.exact(b)?);
+                match op {
+                    VerilogOp::Add => (x.0 + y.0, x.1 + y.1),
+                    VerilogOp::Sub => (x.0 - y.1, x.1 - y.0),
+                    VerilogOp::Mul => {
+                        let p = [x.0 * y.0, x.0 * y.1, x.1 * y.0, x.1 * y.1];
+                        (*p.iter().min().unwrap(), *p.iter().max().unwrap())
+                    }
+                    VerilogOp::Shl if y.0 == y.1 && (0..64).contains(&y.0) => (x.0 << y.0, x.1 << y.0),
+                    VerilogOp::Shr if y.0 == y.1 && (0..128).contains(&y.0) => (x.0 >> y.0, x.1 >> y.0),
+                    // the bitwise operations and the tests: their pattern result is their value
+                    _ => {
+                        let v = self.expr(e)?;
+                        view(v, false)
+                    }
+                }
+            }
+            E::Unary(VerilogOpUnary::Not, x) => {
+                let v = self.expr(x)?;
+                let signed = match &**x {
+                    E::Signal(s) => (self.st.signed)(&full_name(self.path, s, &self.loops)),
+                    _ => false,
+                };
+                let (a, b) = self.exact(x)?;
+                if signed { (-b - 1, -a - 1) } else { (m(v.bits) - 1 - b, m(v.bits) - 1 - a) }
+            }
+            E::Unary(VerilogOpUnary::Neg, x) => {
+                let (a, b) = self.exact(x)?;
+                (-b, -a)
+            }
+            _ => {
+                let v = self.expr(e)?;
+                view(v, false)
+            }
+        })
     }
 
     fn expr(&self, e: &E) -> Option<V> {
@@ -499,8 +578,16 @@ impl Eval<'_, '_> {
         match s {
             S::Assignment(target, value) => {
                 let E::Signal(t) = target else { return };
+                let n = full_name(self.path, t, &self.loops);
                 if let Some(v) = self.expr(value) {
-                    writes.insert(full_name(self.path, t, &self.loops), v);
+                    // the exact value against the target's range in its format: outside, the step may wrap
+                    if let (Some((a, b)), Some(&bits)) = (self.exact(value), self.st.widths.get(&n)) {
+                        let (lo, hi) = if (self.st.signed)(&n) { (-m(bits) / 2, m(bits) / 2 - 1) } else { (0, m(bits) - 1) };
+                        if (a < lo || b > hi) && !n.ends_with("clock") {
+                            self.wraps.push((n.clone(), (a, b)));
+                        }
+                    }
+                    writes.insert(n, v);
                 }
             }
             S::SliceAssignment { base, .. } => {
@@ -586,12 +673,23 @@ impl Eval<'_, '_> {
     }
 }
 
-/// The proven values of every signal of `block` (by the probe's names, `uut.…`), its inputs ranging over
-/// `inputs` (port name → (min, max, signed)); the number of sweeps to the fixed point.
-pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)]) -> (HashMap<String, V>, usize) {
+/// What the analysis proves of a block.
+pub struct Proof {
+    /// every signal's possible patterns, by the probe's names (`uut.…`)
+    pub values: HashMap<String, V>,
+    /// the assignments that may wrap: the signal, and the exact hull of the values its step computes, read in
+    /// the operands' declared formats, beside which the target's range is too small
+    pub wraps: HashMap<String, (i128, i128)>,
+    /// sweeps to the fixed point
+    pub sweeps: usize,
+}
+
+/// The proof for `block`, its inputs ranging over `inputs` (port name, min, max), each signal read signed where
+/// `signed` says its declared format is.
+pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&str) -> bool) -> Proof {
     let mut c = Collect::default();
     block.accept("uut", &mut c);
-    let mut st = State { vals: HashMap::new(), widths: &c.widths, changed: false };
+    let mut st = State { vals: HashMap::new(), widths: &c.widths, signed, wraps: HashMap::new(), changed: false };
     for (name, lo, hi) in inputs {
         let n = format!("uut.{name}");
         let bits = c.widths.get(&n).copied().unwrap_or(64);
@@ -612,9 +710,14 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)]) -> (HashMap<String,
             match &md.code {
                 Code::Comb(b) => {
                     let mut writes = HashMap::new();
-                    {
-                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new() };
+                    let wraps = {
+                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new(), wraps: vec![] };
                         e.block(b, &mut writes);
+                        e.wraps
+                    };
+                    for (n, (a, b)) in wraps {
+                        let w = st.wraps.entry(n).or_insert((a, b));
+                        *w = (w.0.min(a), w.1.max(b));
                     }
                     for (n, v) in writes {
                         if !n.ends_with("clock") {
@@ -671,7 +774,7 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)]) -> (HashMap<String,
             }
         }
     }
-    (st.vals, sweeps)
+    Proof { values: st.vals, wraps: st.wraps, sweeps }
 }
 
 #[cfg(test)]
