@@ -68,7 +68,7 @@ pub fn measure<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64) -> Result<
             needed: bits_needed(fmt.signed, min, max),
             proven_needed: bits_needed(fmt.signed, pr.0 as i64, pr.1 as i64),
             proven: pr,
-            wrap: proof.wraps.get(&s.name).copied(),
+            wrap: proof.wraps.iter().filter(|((_, n), _)| *n == s.name).map(|(_, w)| *w).reduce(|a, b| (a.0.min(b.0), a.1.max(b.1))),
             name: s.name.clone(),
             q: fmt.q(),
             format: fmt.name,

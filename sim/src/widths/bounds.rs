@@ -340,9 +340,9 @@ struct State<'a> {
     widths: &'a HashMap<String, u32>,
     /// how each signal's patterns are read (its declared format): two's complement or unsigned
     signed: &'a dyn Fn(&str) -> bool,
-    /// the assignments whose exact result, read in its operands' formats, may leave the target's range: the
-    /// exact hull of what they compute
-    wraps: HashMap<String, (i128, i128)>,
+    /// the assignments whose exact result, read in its operands' formats, may leave the target's range, by
+    /// (the assigning block's path, the signal): the exact hull of what they compute
+    wraps: HashMap<(String, String), (i128, i128)>,
     changed: bool,
 }
 
@@ -368,7 +368,7 @@ struct Eval<'s, 'a> {
     path: &'s str,
     loops: Vec<(String, i128)>,
     refine: HashMap<String, V>,
-    wraps: Vec<(String, (i128, i128))>,
+    wraps: Vec<((String, String), (i128, i128))>,
 }
 
 impl Eval<'_, '_> {
@@ -584,7 +584,7 @@ impl Eval<'_, '_> {
                     if let (Some((a, b)), Some(&bits)) = (self.exact(value), self.st.widths.get(&n)) {
                         let (lo, hi) = if (self.st.signed)(&n) { (-m(bits) / 2, m(bits) / 2 - 1) } else { (0, m(bits) - 1) };
                         if (a < lo || b > hi) && !n.ends_with("clock") {
-                            self.wraps.push((n.clone(), (a, b)));
+                            self.wraps.push(((self.path.to_string(), n.clone()), (a, b)));
                         }
                     }
                     writes.insert(n, v);
@@ -677,9 +677,10 @@ impl Eval<'_, '_> {
 pub struct Proof {
     /// every signal's possible patterns, by the probe's names (`uut.…`)
     pub values: HashMap<String, V>,
-    /// the assignments that may wrap: the signal, and the exact hull of the values its step computes, read in
-    /// the operands' declared formats, beside which the target's range is too small
-    pub wraps: HashMap<String, (i128, i128)>,
+    /// the assignments that may wrap, by (the path of the block whose statement it is, the signal): the exact
+    /// hull of the values the step computes, its operands read in their declared formats, which the target's
+    /// declared range does not hold
+    pub wraps: HashMap<(String, String), (i128, i128)>,
     /// sweeps to the fixed point
     pub sweeps: usize,
 }

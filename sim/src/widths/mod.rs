@@ -499,6 +499,58 @@ impl Formats {
         Formats { decls, aliases, top }
     }
 
+    /// The type of the block at `path` ("uut.unit$0"), by the name its struct has in the source.
+    pub fn block_at(&self, path: &str) -> Option<String> {
+        let mut ty = self.top.clone();
+        for seg in path.split('.').skip(1) {
+            let Ty::Path(name, args) = &ty else { return None };
+            let d = self.decls.get(name)?;
+            let env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
+            let mut parts = seg.split('$');
+            let (_, ft) = d.fields.iter().find(|(n, _)| n == parts.next().unwrap_or(""))?;
+            let mut t = ft.subst(&env);
+            for _ in parts {
+                let Ty::Array(inner, _) = t else { return None };
+                t = *inner;
+            }
+            ty = t;
+        }
+        match ty {
+            Ty::Path(n, _) => Some(n),
+            _ => None,
+        }
+    }
+
+    /// The block that declares the signal `path` and its name there, array indices dropped: for
+    /// "uut.unit$0.s2_d0.d", ("Bilinear", "s2_d0.d"). The library's registers and memories are not owners; the
+    /// block holding one is.
+    pub fn owner(&self, path: &str) -> Option<(String, String)> {
+        let mut segs = path.split('.');
+        segs.next()?;
+        let segs: Vec<&str> = segs.collect();
+        let mut ty = self.top.clone();
+        let mut owner = (String::new(), 0usize);
+        for (k, seg) in segs.iter().enumerate() {
+            let Ty::Path(name, args) = &ty else { return None };
+            if !matches!(name.as_str(), "DFF" | "RAM" | "ROM") {
+                owner = (name.clone(), k);
+            }
+            let d = self.decls.get(name)?;
+            let env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
+            let mut parts = seg.split('$');
+            let field = parts.next()?;
+            let (_, ft) = d.fields.iter().find(|(n, _)| n == field)?;
+            let mut t = ft.subst(&env);
+            for _ in parts {
+                let Ty::Array(inner, _) = t else { return None };
+                t = *inner;
+            }
+            ty = t;
+        }
+        let local: Vec<&str> = segs[owner.1..].iter().map(|s| s.split('$').next().unwrap_or(s)).collect();
+        Some((owner.0, local.join(".")))
+    }
+
     /// The declared format of the signal `path` ("uut.norm.s3_l.q"), or None where the source does not say.
     pub fn format(&self, path: &str) -> Option<Format> {
         let mut segs = path.split('.');
@@ -689,5 +741,11 @@ mod tests {
         assert_eq!(q("uut.builder.l_dly$1.line$3.d"), Some(("Sq1_10".into(), 12, true)));
         assert_eq!(q("uut.builder.conc"), Some(("U8".into(), 8, false)));
         assert_eq!(q("uut.clock"), None);
+        assert_eq!(f.owner("uut.builder.diffuse.s3_t$2.q"), Some(("Dot3".into(), "s3_t.q".into())));
+        assert_eq!(f.owner("uut.builder.l_dly$1.line$3.d"), Some(("Delay".into(), "line.d".into())));
+        assert_eq!(f.owner("uut.lookup.ram.read_data"), Some(("PaletteLookup".into(), "ram.read_data".into())));
+        assert_eq!(f.owner("uut.idx"), Some(("PalettePipeline".into(), "idx".into())));
+        assert_eq!(f.block_at("uut.builder.diffuse").as_deref(), Some("Dot3"));
+        assert_eq!(f.block_at("uut").as_deref(), Some("PalettePipeline"));
     }
 }
