@@ -507,7 +507,8 @@ impl Formats {
             let d = self.decls.get(name)?;
             let env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
             let mut parts = seg.split('$');
-            let (_, ft) = d.fields.iter().find(|(n, _)| n == parts.next().unwrap_or(""))?;
+            let field = parts.next()?;
+            let (_, ft) = d.fields.iter().find(|(n, _)| n == field)?;
             let mut t = ft.subst(&env);
             for _ in parts {
                 let Ty::Array(inner, _) = t else { return None };
