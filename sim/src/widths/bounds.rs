@@ -361,6 +361,10 @@ impl State<'_> {
     }
 }
 
+/// A value written on a path, and the exact hull of what its step computes (its operands read in their declared
+/// formats), where known.
+type Write = (V, Option<(i128, i128)>, Option<std::rc::Rc<(E, Vec<(String, i128)>)>>);
+
 /// One evaluation of a module's statements; `refine` holds a branch's narrower view of tested signals, `writes`
 /// the values assigned on this path (the last assignment wins).
 struct Eval<'s, 'a> {
@@ -368,7 +372,6 @@ struct Eval<'s, 'a> {
     path: &'s str,
     loops: Vec<(String, i128)>,
     refine: HashMap<String, V>,
-    wraps: Vec<((String, String), (i128, i128))>,
 }
 
 impl Eval<'_, '_> {
@@ -557,44 +560,50 @@ impl Eval<'_, '_> {
         }
     }
 
-    fn block(&mut self, b: &VerilogBlock, writes: &mut HashMap<String, V>) {
+    fn block(&mut self, b: &VerilogBlock, writes: &mut HashMap<String, Write>) {
         for s in b {
             self.stmt(s, writes);
         }
     }
 
-    fn branch(&mut self, refine: Option<(String, V)>, then: &dyn Fn(&mut Self, &mut HashMap<String, V>), base: &HashMap<String, V>) -> HashMap<String, V> {
+    fn branch(&mut self, refine: Option<(String, V)>, then: &dyn Fn(&mut Self, &mut HashMap<String, Write>), base: &HashMap<String, Write>) -> HashMap<String, Write> {
         let saved = self.refine.clone();
+        let mut w = base.clone();
         if let Some((n, v)) = refine {
             self.refine.insert(n, v);
+            // what the path wrote before the test, recomputed knowing the test's side (`x = v; if v < 0 { x = −v }`
+            // writes a non-negative x on both sides)
+            let loops = std::mem::take(&mut self.loops);
+            for (_, x) in w.iter_mut() {
+                if let Some(e) = x.2.clone() {
+                    self.loops = e.1.clone();
+                    if let Some(v) = self.expr(&e.0) {
+                        *x = (v, self.exact(&e.0), x.2.clone());
+                    }
+                }
+            }
+            self.loops = loops;
         }
-        let mut w = base.clone();
         then(self, &mut w);
         self.refine = saved;
         w
     }
 
-    fn stmt(&mut self, s: &S, writes: &mut HashMap<String, V>) {
+    fn stmt(&mut self, s: &S, writes: &mut HashMap<String, Write>) {
         match s {
             S::Assignment(target, value) => {
                 let E::Signal(t) = target else { return };
                 let n = full_name(self.path, t, &self.loops);
                 if let Some(v) = self.expr(value) {
-                    // the exact value against the target's range in its format: outside, the step may wrap
-                    if let (Some((a, b)), Some(&bits)) = (self.exact(value), self.st.widths.get(&n)) {
-                        let (lo, hi) = if (self.st.signed)(&n) { (-m(bits) / 2, m(bits) / 2 - 1) } else { (0, m(bits) - 1) };
-                        if (a < lo || b > hi) && !n.ends_with("clock") {
-                            self.wraps.push(((self.path.to_string(), n.clone()), (a, b)));
-                        }
-                    }
-                    writes.insert(n, v);
+                    // the exact value rides with the write: a later assignment on the same path replaces both
+                    writes.insert(n, (v, self.exact(value), Some(std::rc::Rc::new((value.clone(), self.loops.clone())))));
                 }
             }
             S::SliceAssignment { base, .. } => {
                 if let E::Signal(t) = base {
                     let n = full_name(self.path, t, &self.loops);
                     let bits = self.st.widths.get(&n).copied().unwrap_or(1);
-                    writes.insert(n, V::full(bits));
+                    writes.insert(n, (V::full(bits), None, None));
                 }
             }
             S::If(c) => {
@@ -619,7 +628,7 @@ impl Eval<'_, '_> {
                     outs.push(self.branch(rt, &|e, w| e.block(&c.then, w), &base));
                 }
                 if go_else {
-                    let other = |e: &mut Self, w: &mut HashMap<String, V>| match &c.otherwise {
+                    let other = |e: &mut Self, w: &mut HashMap<String, Write>| match &c.otherwise {
                         VerilogBlockOrConditional::Block(b) => e.block(b, w),
                         VerilogBlockOrConditional::Conditional(s) => e.stmt(s, w),
                         VerilogBlockOrConditional::None => {}
@@ -630,7 +639,7 @@ impl Eval<'_, '_> {
             }
             S::Match(mt) => {
                 let base = writes.clone();
-                let outs: Vec<HashMap<String, V>> = mt.cases.iter().map(|c| self.branch(None, &|e, w| e.block(&c.block, w), &base)).collect();
+                let outs: Vec<HashMap<String, Write>> = mt.cases.iter().map(|c| self.branch(None, &|e, w| e.block(&c.block, w), &base)).collect();
                 self.merge(writes, &base, outs);
             }
             S::Loop(l) => {
@@ -648,7 +657,7 @@ impl Eval<'_, '_> {
 
     /// The writes after the branches: a signal written on every branch takes their join; one written on some
     /// only also keeps what it held before (the path's earlier write, or its value so far).
-    fn merge(&self, writes: &mut HashMap<String, V>, base: &HashMap<String, V>, outs: Vec<HashMap<String, V>>) {
+    fn merge(&self, writes: &mut HashMap<String, Write>, base: &HashMap<String, Write>, outs: Vec<HashMap<String, Write>>) {
         if outs.is_empty() {
             return;
         }
@@ -657,16 +666,20 @@ impl Eval<'_, '_> {
         names.dedup();
         let mut merged = base.clone();
         for n in names {
-            let mut v: Option<V> = None;
+            let (mut v, mut ex): (Option<V>, Option<(i128, i128)>) = (None, None);
             for o in &outs {
-                let x = o.get(n).copied().or_else(|| base.get(n).copied()).or_else(|| self.st.vals.get(n).copied());
-                v = match (v, x) {
-                    (Some(a), Some(b)) => Some(a.join(b)),
-                    (a, b) => a.or(b),
-                };
+                // not written on this branch: what the path wrote before, or the signal's value (which fits)
+                let x = o.get(n).cloned().or_else(|| base.get(n).cloned()).or_else(|| self.st.vals.get(n).map(|v| (*v, None, None)));
+                if let Some((xv, xe, _)) = x {
+                    v = Some(v.map_or(xv, |a| a.join(xv)));
+                    ex = match (ex, xe) {
+                        (Some(a), Some(b)) => Some((a.0.min(b.0), a.1.max(b.1))),
+                        (a, b) => a.or(b),
+                    };
+                }
             }
             if let Some(v) = v {
-                merged.insert(n.clone(), v);
+                merged.insert(n.clone(), (v, ex, None));
             }
         }
         *writes = merged;
@@ -711,19 +724,23 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
             match &md.code {
                 Code::Comb(b) => {
                     let mut writes = HashMap::new();
-                    let wraps = {
-                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new(), wraps: vec![] };
+                    {
+                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new() };
                         e.block(b, &mut writes);
-                        e.wraps
-                    };
-                    for (n, (a, b)) in wraps {
-                        let w = st.wraps.entry(n).or_insert((a, b));
-                        *w = (w.0.min(a), w.1.max(b));
                     }
-                    for (n, v) in writes {
-                        if !n.ends_with("clock") {
-                            st.grow(&n, v);
+                    for (n, (v, exact, _)) in writes {
+                        if n.ends_with("clock") {
+                            continue;
                         }
+                        // the final write's exact value against the target's range in its declared format
+                        if let (Some((a, b)), Some(&bits)) = (exact, c.widths.get(&n)) {
+                            let (lo, hi) = if (st.signed)(&n) { (-m(bits) / 2, m(bits) / 2 - 1) } else { (0, m(bits) - 1) };
+                            if a < lo || b > hi {
+                                let w = st.wraps.entry((p.to_string(), n.clone())).or_insert((a, b));
+                                *w = (w.0.min(a), w.1.max(b));
+                            }
+                        }
+                        st.grow(&n, v);
                     }
                 }
                 Code::Dff => {
