@@ -5,7 +5,7 @@
 //! the placer can put it beside the DSP: the long route lands on a register-to-register path.
 
 use crate::delay::Delay;
-use crate::q::{S8, Sq11_8, Sq7_2};
+use crate::q::{SBits, S8, S9, Sq11_8, Sq7_2};
 use crate::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
@@ -25,8 +25,8 @@ pub struct LightLane {
     pub w2: Signal<In, Bits<16>>,
     pub light: Signal<Out, Sq7_2>,
     // stage 1: the differences (S9) and l0·256 (S20)
-    s1_d1: DFF<Bits<9>>,
-    s1_d2: DFF<Bits<9>>,
+    s1_d1: DFF<S9>,
+    s1_d2: DFF<S9>,
     s1_base: DFF<Sq11_8>,
     // stages 2–4: |d|·w ≤ 255·511 < 2^17, the base beside
     mul1: SmMul<9>, // S9: |d| ≤ 255 leaves SmMul as 8 bits, so the DSP's operand is 8 bits wide
@@ -40,12 +40,12 @@ pub struct LightLane {
     s6_acc: DFF<Sq11_8>,
     // stage 7: floor to Sq7.2, saturate to S10
     s7_out: DFF<Sq7_2>,
-    w_e0: Signal<Local, Bits<9>>, // l0 sign-extended to S9
-    w_e1: Signal<Local, Bits<9>>,
-    w_e2: Signal<Local, Bits<9>>,
+    w_e0: Signal<Local, S9>, // l0 sign-extended to S9
+    w_e1: Signal<Local, S9>,
+    w_e2: Signal<Local, S9>,
     w_e20: Signal<Local, Sq11_8>, // l0 sign-extended to 20 bits
     w_p1: Signal<Local, Sq11_8>,  // |d1|·w1 (U17 in 20 bits)
-    w_q: Signal<Local, Bits<14>>, // acc >> 6 (floor): S14
+    w_q: Signal<Local, SBits<14>>, // acc >> 6 (floor): S14
     w_hi: Signal<Local, Bits<5>>, // its bits 13..9: all equal when it fits S10
 }
 

@@ -18,6 +18,9 @@ use rust_hdl::prelude::Bits;
 pub type U8 = Bits<8>;
 pub type U16 = Bits<16>;
 pub type S8 = Bits<8>;
+pub type S9 = Bits<9>;
+/// A two's complement integer of a width a block takes as a parameter (`SmMul<N>`'s operand).
+pub type SBits<const N: usize> = Bits<N>;
 pub type S11 = Bits<11>;
 
 /// The bump vector's components (INT9: −255..255).
@@ -56,6 +59,6 @@ mod tests {
         assert_eq!(Uq0_10::BITS, 10);
         assert_eq!(Uq6_3::BITS, 6 + 3);
         assert_eq!(Uq1_12::BITS, 1 + 12);
-        assert_eq!((U8::BITS, U16::BITS, S8::BITS, S11::BITS), (8, 16, 8, 11));
+        assert_eq!((U8::BITS, U16::BITS, S8::BITS, S9::BITS, S11::BITS), (8, 16, 8, 9, 11));
     }
 }

@@ -10,6 +10,7 @@
 //! `x` is two's complement in `N` bits (`N` ≤ 32). Its magnitude must fit 16 bits: the caller states why, and
 //! `magnitude_fits_16_bits` in the tests checks the edge. Truncation to 16 bits of a magnitude that fits is exact.
 
+use crate::q::SBits;
 use rust_hdl::prelude::*;
 
 /// Clock edges from x and w to the product.
@@ -19,7 +20,7 @@ pub const LATENCY: usize = 3;
 pub struct SmMul<const N: usize> {
     pub clock: Signal<In, Clock>,
     /// Two's complement, N bits.
-    pub x: Signal<In, Bits<N>>,
+    pub x: Signal<In, SBits<N>>,
     /// Unsigned weight.
     pub w: Signal<In, Bits<16>>,
     /// |x|·w, LATENCY clocks later (U32).

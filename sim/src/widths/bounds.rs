@@ -130,6 +130,21 @@ fn bitlen(x: i128) -> u32 {
     128 - x.max(0).leading_zeros()
 }
 
+/// Where one operand is one constant c and every value of the other lies below c's lowest set bit: (the other's
+/// pieces, c). Then x | c = x ^ c = x + c.
+fn disjoint<'a>(a: &'a [(i128, i128)], b: &'a [(i128, i128)]) -> Option<(&'a [(i128, i128)], i128)> {
+    let one = |p: &[(i128, i128)]| (p.len() == 1 && p[0].0 == p[0].1 && p[0].0 > 0).then(|| p[0].0);
+    for (x, c) in [(a, one(b)), (b, one(a))] {
+        if let Some(c) = c {
+            let low = c & -c;
+            if x.iter().all(|p| p.1 < low) {
+                return Some((x, c));
+            }
+        }
+    }
+    None
+}
+
 /// Binary operations on intervals, as rust-hdl computes them (the width of the operands; a literal takes the other's).
 fn binary(a: V, op: &VerilogOp, b: V) -> V {
     let bits = match (a.lit, b.lit) {
@@ -172,6 +187,12 @@ fn binary(a: V, op: &VerilogOp, b: V) -> V {
                 }
             }
             V::from_pieces(&p, 2 * bits)
+        }
+        // a constant whose set bits all lie above the other operand's: | and ^ add it, & with its complement's
+        // low mask keeps the operand (sign extension by `x | 0x100`, a field put beside another)
+        VerilogOp::BitOr | VerilogOp::BitXor if disjoint(&ua, &ub).is_some() => {
+            let (x, c) = disjoint(&ua, &ub).unwrap();
+            V::from_pieces(&x.iter().map(|(a, b)| (a + c, b + c)).collect::<Vec<_>>(), bits)
         }
         VerilogOp::BitAnd => V::new(0, amax.min(bmax), bits),
         VerilogOp::BitOr => V::new(amin.max(bmin), ((1i128 << bitlen(amax.max(bmax))) - 1).min(amax + bmax), bits),
@@ -372,6 +393,9 @@ struct Eval<'s, 'a> {
     path: &'s str,
     loops: Vec<(String, i128)>,
     refine: HashMap<String, V>,
+    /// what this path has written so far (the last write wins); a block's own local and output signals read
+    /// their write on the path, as rust-hdl's `val()` of a `Local` or `Out` signal returns its `next`
+    cur: HashMap<String, Write>,
 }
 
 impl Eval<'_, '_> {
@@ -380,7 +404,17 @@ impl Eval<'_, '_> {
             return Some(V { lit: true, ..V::exact(*k, 32) });
         }
         let n = full_name(self.path, local, &self.loops);
-        self.refine.get(&n).or_else(|| self.st.vals.get(&n)).copied()
+        if let Some(v) = self.refine.get(&n) {
+            return Some(*v);
+        }
+        // a field of this block itself (not a child's port): its write on this path, if any
+        let own = n.strip_prefix(self.path).is_some_and(|r| !r[1..].contains('.'));
+        if own {
+            if let Some(w) = self.cur.get(&n) {
+                return Some(w.0);
+            }
+        }
+        self.st.vals.get(&n).copied()
     }
 
     /// The exact value of an expression over integers, each signal read in its declared format, nothing
@@ -535,6 +569,15 @@ impl Eval<'_, '_> {
             e
         };
         match unparen(test) {
+            // (x & sign_bit).any(): the top bit alone
+            E::Unary(VerilogOpUnary::Any, inner) => {
+                let E::Binary(x, VerilogOp::BitAnd, c) = unparen(&inner) else { return None };
+                let (E::Signal(s), c) = (unparen(&x), self.expr(&c)?) else { return None };
+                let v = self.read(&s)?;
+                (c.lo == c.hi && c.lo == m(v.bits) / 2).then_some(())?;
+                let h = m(v.bits) / 2;
+                Some((full_name(self.path, &s, &self.loops), v.within(true, -h, -1), v.within(true, 0, h - 1)))
+            }
             E::Index(x, i) => {
                 let E::Signal(s) = unparen(&x) else { return None };
                 let (v, i) = (self.read(&s)?, self.expr(&i)?);
@@ -560,13 +603,13 @@ impl Eval<'_, '_> {
         }
     }
 
-    fn block(&mut self, b: &VerilogBlock, writes: &mut HashMap<String, Write>) {
+    fn block(&mut self, b: &VerilogBlock) {
         for s in b {
-            self.stmt(s, writes);
+            self.stmt(s);
         }
     }
 
-    fn branch(&mut self, refine: Option<(String, V)>, then: &dyn Fn(&mut Self, &mut HashMap<String, Write>), base: &HashMap<String, Write>) -> HashMap<String, Write> {
+    fn branch(&mut self, refine: Option<(String, V)>, then: &dyn Fn(&mut Self), base: &HashMap<String, Write>) -> HashMap<String, Write> {
         let saved = self.refine.clone();
         let mut w = base.clone();
         if let Some((n, v)) = refine {
@@ -578,32 +621,39 @@ impl Eval<'_, '_> {
                 if let Some(e) = x.2.clone() {
                     self.loops = e.1.clone();
                     if let Some(v) = self.expr(&e.0) {
-                        *x = (v, self.exact(&e.0), x.2.clone());
+                        let bitwise = matches!(&e.0, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
+                        *x = (v, if bitwise { None } else { self.exact(&e.0) }, x.2.clone());
                     }
                 }
             }
             self.loops = loops;
         }
-        then(self, &mut w);
+        let outer = std::mem::replace(&mut self.cur, w);
+        then(self);
         self.refine = saved;
-        w
+        std::mem::replace(&mut self.cur, outer)
     }
 
-    fn stmt(&mut self, s: &S, writes: &mut HashMap<String, Write>) {
+    fn stmt(&mut self, s: &S) {
         match s {
             S::Assignment(target, value) => {
                 let E::Signal(t) = target else { return };
                 let n = full_name(self.path, t, &self.loops);
                 if let Some(v) = self.expr(value) {
-                    // the exact value rides with the write: a later assignment on the same path replaces both
-                    writes.insert(n, (v, self.exact(value), Some(std::rc::Rc::new((value.clone(), self.loops.clone())))));
+                    // the exact value rides with the write: a later assignment on the same path replaces both. A
+                    // bitwise step (a sign extension `x | 0x100`, fields put side by side) is no arithmetic to
+                    // overflow: its patterns are the value, read in the target's format
+                    let bitwise = matches!(value, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
+                    let exact = if bitwise { None } else { self.exact(value) };
+                    let w = (v, exact, Some(std::rc::Rc::new((value.clone(), self.loops.clone()))));
+                    self.cur.insert(n, w);
                 }
             }
             S::SliceAssignment { base, .. } => {
                 if let E::Signal(t) = base {
                     let n = full_name(self.path, t, &self.loops);
                     let bits = self.st.widths.get(&n).copied().unwrap_or(1);
-                    writes.insert(n, (V::full(bits), None, None));
+                    self.cur.insert(n, (V::full(bits), None, None));
                 }
             }
             S::If(c) => {
@@ -622,42 +672,42 @@ impl Eval<'_, '_> {
                 // a side the refinement shows empty is not taken
                 let go_then = go_then && !matches!(&split, Some((_, None, _)));
                 let go_else = go_else && !matches!(&split, Some((_, _, None)));
-                let base = writes.clone();
+                let base = self.cur.clone();
                 let mut outs = vec![];
                 if go_then {
-                    outs.push(self.branch(rt, &|e, w| e.block(&c.then, w), &base));
+                    outs.push(self.branch(rt, &|e| e.block(&c.then), &base));
                 }
                 if go_else {
-                    let other = |e: &mut Self, w: &mut HashMap<String, Write>| match &c.otherwise {
-                        VerilogBlockOrConditional::Block(b) => e.block(b, w),
-                        VerilogBlockOrConditional::Conditional(s) => e.stmt(s, w),
+                    let other = |e: &mut Self| match &c.otherwise {
+                        VerilogBlockOrConditional::Block(b) => e.block(b),
+                        VerilogBlockOrConditional::Conditional(s) => e.stmt(s),
                         VerilogBlockOrConditional::None => {}
                     };
                     outs.push(self.branch(re, &other, &base));
                 }
-                self.merge(writes, &base, outs);
+                self.merge(&base, outs);
             }
             S::Match(mt) => {
-                let base = writes.clone();
-                let outs: Vec<HashMap<String, Write>> = mt.cases.iter().map(|c| self.branch(None, &|e, w| e.block(&c.block, w), &base)).collect();
-                self.merge(writes, &base, outs);
+                let base = self.cur.clone();
+                let outs: Vec<HashMap<String, Write>> = mt.cases.iter().map(|c| self.branch(None, &|e| e.block(&c.block), &base)).collect();
+                self.merge(&base, outs);
             }
             S::Loop(l) => {
                 let (from, to) = (literal(&l.from.to_string()).map(|x| x.0).unwrap_or(0), literal(&l.to.to_string()).map(|x| x.0).unwrap_or(0));
                 for k in from..to {
                     self.loops.push((l.index.clone(), k));
-                    self.block(&l.block, writes);
+                    self.block(&l.block);
                     self.loops.pop();
                 }
             }
-            S::Macro(b) => self.block(b, writes),
+            S::Macro(b) => self.block(b),
             S::Comment(_) | S::Link(_) => {}
         }
     }
 
     /// The writes after the branches: a signal written on every branch takes their join; one written on some
     /// only also keeps what it held before (the path's earlier write, or its value so far).
-    fn merge(&self, writes: &mut HashMap<String, Write>, base: &HashMap<String, Write>, outs: Vec<HashMap<String, Write>>) {
+    fn merge(&mut self, base: &HashMap<String, Write>, outs: Vec<HashMap<String, Write>>) {
         if outs.is_empty() {
             return;
         }
@@ -682,7 +732,7 @@ impl Eval<'_, '_> {
                 merged.insert(n.clone(), (v, ex, None));
             }
         }
-        *writes = merged;
+        self.cur = merged;
     }
 }
 
@@ -723,11 +773,11 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
             let p = md.path.as_str();
             match &md.code {
                 Code::Comb(b) => {
-                    let mut writes = HashMap::new();
-                    {
-                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new() };
-                        e.block(b, &mut writes);
-                    }
+                    let writes = {
+                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new(), cur: HashMap::new() };
+                        e.block(b);
+                        e.cur
+                    };
                     for (n, (v, exact, _)) in writes {
                         if n.ends_with("clock") {
                             continue;
@@ -819,6 +869,9 @@ mod tests {
         let mag = V::new(0, 2048, 16);
         assert_eq!(binary(mag, &VerilogOp::Mul, mag).range(false), (0, 2048 * 2048));
         assert_eq!(binary(V::new(-4, 4, 8), &VerilogOp::Shr, V { lit: true, ..V::exact(1, 32) }).range(false), (0, 127));
+        // sign extension of a negative S8 into 9 bits: −128..−1 exactly
+        assert_eq!(binary(V::new(128, 255, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(true), (-128, -1));
+        assert_eq!(binary(V::new(0, 256, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(false), (256, 511));
         assert_eq!(binary(V::new(0, 1023, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(), [(0, 0)]);
         assert_eq!(binary(V::new(0, 1024, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(), [(0, 1)]);
     }

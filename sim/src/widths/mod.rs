@@ -480,6 +480,11 @@ fn leaf_format(t: &Ty, aliases: &HashMap<String, Ty>) -> Option<Format> {
             },
             _ => None,
         },
+        // a two's complement integer of a parameter's width
+        Ty::Path(n, a) if n == "SBits" && a.len() == 1 => match &a[0] {
+            Ty::Expr(w) => Some(Format { name: format!("SBits<{w}>"), signed: true, bits: w.parse().ok()?, frac: 0 }),
+            _ => None,
+        },
         Ty::Path(n, a) if a.is_empty() => Format::of(n, aliases, 0),
         _ => None,
     }
