@@ -368,9 +368,14 @@ struct State<'a> {
 }
 
 impl State<'_> {
-    fn grow(&mut self, name: &str, v: V) {
+    /// A value as the signal `name` holds it: at its width (a literal takes it; a narrower value is zero-extended).
+    fn fit(&self, name: &str, v: V) -> V {
         let bits = self.widths.get(name).copied().unwrap_or(v.bits);
-        let v = if v.lit || v.bits >= bits { v.with_bits(bits) } else { V::from_pieces(&v.unsigned(), bits) };
+        if v.lit || v.bits >= bits { v.with_bits(bits) } else { V::from_pieces(&v.unsigned(), bits) }
+    }
+
+    fn grow(&mut self, name: &str, v: V) {
+        let v = self.fit(name, v);
         let next = match self.vals.get(name) {
             Some(old) => old.join(v),
             None => v,
@@ -411,7 +416,7 @@ impl Eval<'_, '_> {
         let own = n.strip_prefix(self.path).is_some_and(|r| !r[1..].contains('.'));
         if own {
             if let Some(w) = self.cur.get(&n) {
-                return Some(w.0);
+                return Some(self.st.fit(&n, w.0));
             }
         }
         self.st.vals.get(&n).copied()
