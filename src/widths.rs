@@ -102,6 +102,10 @@ pub fn run<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64, csv_out: Optio
         synth::export::write_atomic(p, csv(&rows).as_bytes())?;
     }
     println!("widths of `{}`: {what}; {clocks} clocks in rust-hdl, every signal probed ({:.0} vectors/s)", m.name, n as f64 / secs);
+    if m.exhaustive.is_some() && m.stream.is_none() {
+        // a unit without state, every input applied: each signal took every value it can take
+        println!("proven by exhaustion: every input applied to a unit without state, so the seen ranges are the exact ones");
+    }
     println!("seen: the range over those vectors in simulation; proven: over every input sequence (interval analysis of");
     println!("the block's hdl); needs / spare: bits that range needs, and the declared bits it leaves at the top;");
     println!("! two or more bits never used by the data seen; W the step writing it may wrap (its exact result, each operand");

@@ -362,6 +362,11 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
         let (bits, needed): (usize, usize) = (r[3].parse().unwrap(), r[7].parse().unwrap());
         assert!(needed <= bits, "{r:?}");
     }
+    // a unit of 2^18 inputs without state: every input applied, the ranges exact
+    let (code, out, err) = bumprtl(&["widths", "gloss"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("every input (262144)") && out.contains("proven by exhaustion"), "{out}");
+    assert!(!bumprtl(&["widths", "dot3", "--count", "10"]).1.contains("proven by exhaustion"));
     let (code, _, err) = bumprtl(&["widths", "no_such_unit"]);
     assert_ne!(code, 0);
     assert_eq!(err.lines().count(), 1, "{err}");
