@@ -18,7 +18,7 @@
 //! widths, and yosys removes the constant upper bits.
 
 use crate::delay::Delay;
-use crate::q::U8;
+use crate::q::{SBits, U8};
 use crate::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
@@ -54,8 +54,8 @@ pub struct BilinearUnit<const W: usize, const F: usize, const D: usize = 0> {
     s1_b0: DFF<Bits<32>>,
     s1_b1: DFF<Bits<32>>,
     // stage 2: t10 − t00, t11 − t01 (S(W), two's complement in 16 bits; |d| ≤ 2^W − 1 fits SmMul's 16)
-    s2_d0: DFF<Bits<16>>,
-    s2_d1: DFF<Bits<16>>,
+    s2_d0: DFF<SBits<16>>,
+    s2_d1: DFF<SBits<16>>,
     s2_b0: DFF<Bits<32>>,
     s2_b1: DFF<Bits<32>>,
     // stages 3–5: |d|·u ≤ (2^W − 1)(2^F − 1) < 2^(W+F), with the bases carried beside the multipliers
@@ -69,7 +69,7 @@ pub struct BilinearUnit<const W: usize, const F: usize, const D: usize = 0> {
     s6_a: DFF<Bits<32>>,
     s6_b: DFF<Bits<32>>,
     // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's 16)
-    s7_e: DFF<Bits<32>>,
+    s7_e: DFF<SBits<32>>,
     s7_a: DFF<Bits<32>>,
     // stages 8–10: |b − a|·v < 2^(W+2F), a carried
     mul2: SmMul<32>,
