@@ -504,11 +504,12 @@ impl Formats {
         Formats { decls, aliases, top }
     }
 
-    /// The type of the block at `path` ("uut.unit$0"), by the name its struct has in the source.
-    pub fn block_at(&self, path: &str) -> Option<String> {
-        let mut ty = self.top.clone();
+    /// The types along a signal's path: the top block's, then each field's (its generics bound to the enclosing
+    /// block's arguments, array elements for `name$k`), the last the signal's own (`Signal<In, Sq1_10>`).
+    fn types_along(&self, path: &str) -> Option<Vec<Ty>> {
+        let mut types = vec![self.top.clone()];
         for seg in path.split('.').skip(1) {
-            let Ty::Path(name, args) = &ty else { return None };
+            let Ty::Path(name, args) = types.last()? else { return None };
             let d = self.decls.get(name)?;
             let env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
             let mut parts = seg.split('$');
@@ -519,9 +520,14 @@ impl Formats {
                 let Ty::Array(inner, _) = t else { return None };
                 t = *inner;
             }
-            ty = t;
+            types.push(t);
         }
-        match ty {
+        Some(types)
+    }
+
+    /// The type of the block at `path` ("uut.unit$0"), by the name its struct has in the source.
+    pub fn block_at(&self, path: &str) -> Option<String> {
+        match self.types_along(path)?.pop()? {
             Ty::Path(n, _) => Some(n),
             _ => None,
         }
@@ -531,58 +537,24 @@ impl Formats {
     /// "uut.unit$0.s2_d0.d", ("Bilinear", "s2_d0.d"). The library's registers and memories are not owners; the
     /// block holding one is.
     pub fn owner(&self, path: &str) -> Option<(String, String)> {
-        let mut segs = path.split('.');
-        segs.next()?;
-        let segs: Vec<&str> = segs.collect();
-        let mut ty = self.top.clone();
-        let mut owner = (String::new(), 0usize);
-        for (k, seg) in segs.iter().enumerate() {
-            let Ty::Path(name, args) = &ty else { return None };
-            if !matches!(name.as_str(), "DFF" | "RAM" | "ROM") {
-                owner = (name.clone(), k);
-            }
-            let d = self.decls.get(name)?;
-            let env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
-            let mut parts = seg.split('$');
-            let field = parts.next()?;
-            let (_, ft) = d.fields.iter().find(|(n, _)| n == field)?;
-            let mut t = ft.subst(&env);
-            for _ in parts {
-                let Ty::Array(inner, _) = t else { return None };
-                t = *inner;
-            }
-            ty = t;
-        }
-        let local: Vec<&str> = segs[owner.1..].iter().map(|s| s.split('$').next().unwrap_or(s)).collect();
-        Some((owner.0, local.join(".")))
+        let types = self.types_along(path)?;
+        let segs: Vec<&str> = path.split('.').skip(1).collect();
+        // the last block on the path (not the signal itself) that is not a library register or memory
+        let (k, name) = types[..types.len() - 1].iter().enumerate().rev().find_map(|(k, t)| match t {
+            Ty::Path(n, _) if !matches!(n.as_str(), "DFF" | "RAM" | "ROM") => Some((k, n.clone())),
+            _ => None,
+        })?;
+        let local: Vec<&str> = segs[k..].iter().map(|s| s.split('$').next().unwrap_or(s)).collect();
+        Some((name, local.join(".")))
     }
 
     /// The declared format of the signal `path` ("uut.norm.s3_l.q"), or None where the source does not say.
     pub fn format(&self, path: &str) -> Option<Format> {
-        let mut segs = path.split('.');
-        segs.next()?; // the top scope ("uut")
-        let mut ty = self.top.clone();
-        for seg in segs {
-            // into the struct `ty` names, its generics bound to the arguments
-            let Ty::Path(name, args) = &ty else { return None };
-            let d = self.decls.get(name)?;
-            let env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
-            let mut parts = seg.split('$');
-            let field = parts.next()?;
-            let (_, ft) = d.fields.iter().find(|(n, _)| n == field)?;
-            let mut t = ft.subst(&env);
-            for _ in parts {
-                let Ty::Array(inner, _) = t else { return None };
-                t = *inner;
-            }
-            // a signal or constant is the leaf; anything else is a block to descend into
-            ty = match &t {
-                Ty::Path(n, a) if n == "Signal" && a.len() == 2 => return leaf_format(&a[1], &self.aliases),
-                Ty::Path(n, a) if n == "Constant" && a.len() == 1 => return leaf_format(&a[0], &self.aliases),
-                _ => t,
-            };
+        match self.types_along(path)?.pop()? {
+            Ty::Path(n, a) if n == "Signal" && a.len() == 2 => leaf_format(&a[1], &self.aliases),
+            Ty::Path(n, a) if n == "Constant" && a.len() == 1 => leaf_format(&a[0], &self.aliases),
+            _ => None,
         }
-        None
     }
 }
 
