@@ -6,7 +6,7 @@
 //! the three magnitudes + 2^(s−1); >> s; the signs.
 
 use crate::delay::Delay;
-use crate::q::U8;
+use crate::q::{SBits, U8};
 use crate::sm_mul::{self, SmMulWide};
 use rust_hdl::prelude::*;
 
@@ -16,8 +16,8 @@ crate::stream_block! {
     #[derive(Default)]
     pub struct HeightNormal: unit("height_normal", LATENCY) {
         in {
-            t1: Bits<21>,
-            t2: Bits<21>,
+            t1: SBits<21>,
+            t2: SBits<21>,
             scale: U8,
         }
         out {
@@ -27,8 +27,8 @@ crate::stream_block! {
         }
         // stage 1: 7k = 8k − k (U11 in 16); the tangents
         s1_k7: DFF<Bits<16>>,
-        s1_t1: DFF<Bits<21>>,
-        s1_t2: DFF<Bits<21>>,
+        s1_t1: DFF<SBits<21>>,
+        s1_t2: DFF<SBits<21>>,
         // stages 2–5: 7k·|t| < 1785·2^20 < 2^31 (U31 in 32), with t's sign
         mul1: SmMulWide<21>,
         mul2: SmMulWide<21>,

@@ -5,7 +5,7 @@
 //! magnitudes reach 21 bits); the sums; the floor.
 
 use crate::delay::Delay;
-use crate::q::U8;
+use crate::q::{SBits, U8};
 use crate::sm_mul::{self, SmMulWide};
 use rust_hdl::prelude::*;
 
@@ -23,34 +23,34 @@ crate::stream_block! {
             vblend: U8,
         }
         out {
-            t1: Bits<21>,
-            t2: Bits<21>,
+            t1: SBits<21>,
+            t2: SBits<21>,
         }
         // stage 1: differences of the results at 12 fraction bits (S21, two's complement in 32 bits); the factors
-        s1_d1: DFF<Bits<32>>,
-        s1_d2: DFF<Bits<32>>,
-        s1_e1: DFF<Bits<32>>,
-        s1_e2: DFF<Bits<32>>,
+        s1_d1: DFF<SBits<32>>,
+        s1_d2: DFF<SBits<32>>,
+        s1_e1: DFF<SBits<32>>,
+        s1_e2: DFF<SBits<32>>,
         s1_u: DFF<Bits<16>>,
         s1_v: DFF<Bits<16>>,
         // stage 2: d2 − d1 and e2 − e1 (S22), d1·256 and e1·256 (S29), all in 32 bits
-        s2_dd: DFF<Bits<32>>,
-        s2_ee: DFF<Bits<32>>,
-        s2_b1: DFF<Bits<32>>,
-        s2_b2: DFF<Bits<32>>,
+        s2_dd: DFF<SBits<32>>,
+        s2_ee: DFF<SBits<32>>,
+        s2_b1: DFF<SBits<32>>,
+        s2_b2: DFF<SBits<32>>,
         s2_u: DFF<Bits<16>>,
         s2_v: DFF<Bits<16>>,
         // stages 3–6: |d2 − d1|·V and |e2 − e1|·U < 2^21·2^8 (U29), the bases beside
         mul1: SmMulWide<32>,
         mul2: SmMulWide<32>,
-        b1: Delay<Bits<32>, { sm_mul::WIDE_LATENCY }>,
-        b2: Delay<Bits<32>, { sm_mul::WIDE_LATENCY }>,
+        b1: Delay<SBits<32>, { sm_mul::WIDE_LATENCY }>,
+        b2: Delay<SBits<32>, { sm_mul::WIDE_LATENCY }>,
         // stage 7: d1·256 ± |d2 − d1|·V (S30 in 32), the same for e
-        s7_t1: DFF<Bits<32>>,
-        s7_t2: DFF<Bits<32>>,
+        s7_t1: DFF<SBits<32>>,
+        s7_t2: DFF<SBits<32>>,
         // stage 8: >> 8, floor: S21
-        s8_t1: DFF<Bits<21>>,
-        s8_t2: DFF<Bits<21>>,
+        s8_t1: DFF<SBits<21>>,
+        s8_t2: DFF<SBits<21>>,
         valid: Delay<Bit, LATENCY>,
         w_r: Signal<Local, Bits<32>>,
         w_g: Signal<Local, Bits<32>>,

@@ -97,7 +97,7 @@ pub const WIDE_LATENCY: usize = 4;
 pub struct SmMulWide<const N: usize> {
     pub clock: Signal<In, Clock>,
     /// Two's complement, N bits (N ≤ 33).
-    pub x: Signal<In, Bits<N>>,
+    pub x: Signal<In, SBits<N>>,
     /// Unsigned weight.
     pub w: Signal<In, Bits<16>>,
     /// |x|·w, WIDE_LATENCY clocks later (U32).
