@@ -15,7 +15,7 @@
 //! each of the nine heights picked from the four words.
 
 use crate::delay::Delay;
-use crate::q::U8;
+use crate::q::{SBits, U8};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 5;
@@ -48,8 +48,8 @@ crate::stream_block! {
         /// the four banks, (X mod 2) + 2·(Y mod 2): 64 × 64 words of four heights, address (Y >> 1)·64 + (X >> 1)
         pub bank: [RAM<Bits<32>, 12>; 4],
         // stage 0: the three columns and rows (S10), each axis's last texel (U8 in 10) and border mode
-        s0_x: [DFF<Bits<10>>; 3],
-        s0_y: [DFF<Bits<10>>; 3],
+        s0_x: [DFF<SBits<10>>; 3],
+        s0_y: [DFF<SBits<10>>; 3],
         s0_um: DFF<Bits<10>>,
         s0_vm: DFF<Bits<10>>,
         s0_uwrap: DFF<Bit>,
@@ -80,13 +80,13 @@ crate::stream_block! {
         w_upow: Signal<Local, Bits<10>>,
         w_um: Signal<Local, Bits<10>>,
         w_ic: Signal<Local, Bits<10>>,
-        w_x: [Signal<Local, Bits<10>>; 3],
+        w_x: [Signal<Local, SBits<10>>; 3],
         w_xm: [Signal<Local, Bits<10>>; 3],
         w_vl: Signal<Local, Bits<10>>,
         w_vpow: Signal<Local, Bits<10>>,
         w_vm: Signal<Local, Bits<10>>,
         w_jc: Signal<Local, Bits<10>>,
-        w_y: [Signal<Local, Bits<10>>; 3],
+        w_y: [Signal<Local, SBits<10>>; 3],
         w_ym: [Signal<Local, Bits<10>>; 3],
         // stage 1: each parity's word column and row (U6, widened to the bank address), the write's address
         w_cx0: Signal<Local, Bits<12>>,

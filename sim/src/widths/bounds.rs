@@ -214,10 +214,13 @@ fn binary(a: V, op: &VerilogOp, b: V) -> V {
         }
         VerilogOp::Shl => match (b.lo == b.hi, b.lo) {
             (true, k) if (0..64).contains(&k) => V::new(a.lo << k, a.hi << k, bits),
+            // a shift by an amount in [k0, k1]: the patterns read unsigned, while the largest stays inside the width
+            _ if ub.len() == 1 && bmax < 64 && amax << bmax < m(bits) => V::new(amin << bmin, amax << bmax, bits),
             _ => V::full(bits),
         },
         VerilogOp::Shr => match (b.lo == b.hi, b.lo) {
             (true, k) if (0..128).contains(&k) => V::from_pieces(&ua.iter().map(|(x, y)| (x >> k, y >> k)).collect::<Vec<_>>(), bits),
+            _ if ub.len() == 1 && bmax < 128 => V::new(amin >> bmax, amax >> bmin, bits),
             _ => V::new(0, amax, bits),
         },
         VerilogOp::Eq => bool_of(if amin == amax && bmin == bmax && ua.len() == 1 && ub.len() == 1 { Some(amin == bmin) } else if amax < bmin || bmax < amin { Some(false) } else { None }),
@@ -590,16 +593,18 @@ impl Eval<'_, '_> {
                 let h = m(v.bits) / 2;
                 Some((full_name(self.path, &s, &self.loops), v.within(true, -h, -1), v.within(true, 0, h - 1)))
             }
+            // a compare of a signal with a constant or another signal (unsigned, as rust-hdl compares): on each side
+            // the signal lies on that side of the other's extreme
             E::Binary(a, op, b) => {
                 let (E::Signal(s), c) = (unparen(&a), self.expr(&b)?) else { return None };
-                (c.lo == c.hi).then_some(())?;
                 let v = self.read(&s)?;
-                let (c, top) = (c.lo, m(v.bits) - 1);
+                let (lo, hi) = c.with_bits(v.bits).range(false);
+                let top = m(v.bits) - 1;
                 let (t, f) = match op {
-                    VerilogOp::Gt => ((c + 1, top), (0, c)),
-                    VerilogOp::Ge => ((c, top), (0, c - 1)),
-                    VerilogOp::Lt => ((0, c - 1), (c, top)),
-                    VerilogOp::Le => ((0, c), (c + 1, top)),
+                    VerilogOp::Gt => ((lo + 1, top), (0, hi)),
+                    VerilogOp::Ge => ((lo, top), (0, hi - 1)),
+                    VerilogOp::Lt => ((0, hi - 1), (lo, top)),
+                    VerilogOp::Le => ((0, hi), (lo + 1, top)),
                     _ => return None,
                 };
                 Some((full_name(self.path, &s, &self.loops), v.within(false, t.0, t.1), v.within(false, f.0, f.1)))
@@ -874,6 +879,10 @@ mod tests {
         let mag = V::new(0, 2048, 16);
         assert_eq!(binary(mag, &VerilogOp::Mul, mag).range(false), (0, 2048 * 2048));
         assert_eq!(binary(V::new(-4, 4, 8), &VerilogOp::Shr, V { lit: true, ..V::exact(1, 32) }).range(false), (0, 127));
+        // a shift by a variable amount: 1 << (0..7) is 1..128; 1000 >> (1..3) is 125..500
+        assert_eq!(binary(V::new(1, 1, 32), &VerilogOp::Shl, V::new(0, 7, 5)).range(false), (1, 128));
+        assert_eq!(binary(V::new(1000, 1000, 16), &VerilogOp::Shr, V::new(1, 3, 4)).range(false), (125, 500));
+        assert!(binary(V::new(1, 3, 8), &VerilogOp::Shl, V::new(0, 7, 3)).is_full());
         // sign extension of a negative S8 into 9 bits: −128..−1 exactly
         assert_eq!(binary(V::new(128, 255, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(true), (-128, -1));
         assert_eq!(binary(V::new(0, 256, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(false), (256, 511));
