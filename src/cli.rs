@@ -194,6 +194,15 @@ macro_rules! define_with_unit {
 }
 vectors::unit_table!(define_with_unit, $);
 
+/// A command's output folder, made and tried with a file before any work, refused in one line.
+pub fn writable_folder(out: &std::path::Path) -> Result<(), String> {
+    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
+    let probe = out.join(".write-test");
+    std::fs::write(&probe, b"").map_err(|e| format!("cannot write into {}: {e}", out.display()))?;
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
+}
+
 pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
     if vectors::unit::SOFTWARE_ONLY.contains(&name) {
         return Err(format!("`{name}` is software only (no rtl block, no vectors): its errors are in `bumprtl accuracy`"));
@@ -322,7 +331,7 @@ pub fn main() -> Result<(), String> {
             crate::quantize::run(&args)?
         }
         Cmd::PaletteTable { no_synth, dir, out } => {
-            crate::palette_table::check_out(&out)?;
+            writable_folder(&out)?; // before the minutes of work, synthesis included
             let tools = synth::tools::missing(&["yosys"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
             let fmax = if no_synth || !tools {
                 if !no_synth {

@@ -103,10 +103,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         let side = loaded.map.side;
         scene = Scene { tex: side, relief: relief.unwrap_or(side as f64 / 16.0), map: Some(std::sync::Arc::new(loaded.map)), ..scene };
     }
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let probe = out.join(".write-test");
-    std::fs::write(&probe, b"").map_err(|e| format!("cannot write into {}: {e}", out.display()))?;
-    let _ = std::fs::remove_file(&probe);
+    crate::cli::writable_folder(out)?;
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
     let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };

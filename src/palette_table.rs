@@ -52,15 +52,6 @@ const FIGURE_3: usize = 8;
 /// The material of the pictures (RGBA), equation (1)'s o.
 const MATERIAL: [f64; 4] = [0.85, 0.7, 0.5, 1.0];
 
-/// The pictures' folder, made and checked before the minutes of work (synthesis included), refused in one line.
-pub fn check_out(out: &std::path::Path) -> Result<(), String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let probe = out.join(".write-test");
-    std::fs::write(&probe, b"").map_err(|e| format!("cannot write into {}: {e}", out.display()))?;
-    let _ = std::fs::remove_file(&probe);
-    Ok(())
-}
-
 pub fn run(fmax_mhz: Option<f64>, out: &std::path::Path) -> Result<(), String> {
     let normals = normal_map();
     let view = [0.0, 1.0, 0.0];

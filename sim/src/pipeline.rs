@@ -546,7 +546,7 @@ impl Pipeline for Palette {
         builds.chain(first).cloned().collect()
     }
     fn bits_per_texel(&self) -> u32 {
-        (usize::BITS - (self.s_n.max(2) - 1).leading_zeros()).max(1)
+        vectors::palette::quantize::index_bits(self.s_n)
     }
 }
 

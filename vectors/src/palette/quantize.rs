@@ -19,6 +19,11 @@ fn unit(v: [f64; 3]) -> [f64; 3] {
     if dot(v, v) > 0.0 { crate::stats::unit(v) } else { [0.0, 1.0, 0.0] }
 }
 
+/// Bits an index into `n` palette entries takes: ⌈log2 n⌉, at least 1.
+pub fn index_bits(n: usize) -> u32 {
+    (usize::BITS - (n.max(2) - 1).leading_zeros()).max(1)
+}
+
 /// A quantized normal map.
 #[derive(Clone, Debug)]
 pub struct Quantized {
@@ -33,7 +38,7 @@ pub struct Quantized {
 impl Quantized {
     /// Bits an index takes: ⌈log2 s_N⌉ of the palette as built (at least 1).
     pub fn index_bits(&self) -> u32 {
-        (usize::BITS - (self.palette.len().max(2) - 1).leading_zeros()).max(1)
+        index_bits(self.palette.len())
     }
 }
 
