@@ -109,7 +109,7 @@ enum Cmd {
     /// normals under four lighting models, beside the paper's, with the rtl builder's and the errors; the quantizer's
     /// time at every s_N; Figure 3's pictures (16 … 2048 normals)
     PaletteTable {
-        /// skip placing the table builder (its fmax gives the rtl column)
+        /// skip placing the table builders (their fmax gives the rtl columns)
         #[arg(long)]
         no_synth: bool,
         /// working folder for the tools' files
@@ -332,16 +332,19 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::PaletteTable { no_synth, dir, out } => {
             writable_folder(&out)?; // before the minutes of work, synthesis included
-            let tools = synth::tools::missing(&["yosys"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
+            let tools = synth::tools::missing(&["yosys", "nextpnr-ice40"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
             let fmax = if no_synth || !tools {
                 if !no_synth {
-                    println!("the rtl column needs yosys and nextpnr-ecp5 (`bash .ci/run` installs them)");
+                    println!("the rtl columns need yosys, nextpnr-ice40 and nextpnr-ecp5 (`bash .ci/run` installs them)");
                 }
-                None
+                crate::palette_table::Fmax::default()
             } else {
-                let part = synth::fpga::ECP5_25F;
-                let d = dir.join("table_builder").join(part.name);
-                synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(&d, part, part.default_freq())?.fmax_mhz
+                let (ecp5, up5k) = (synth::fpga::ECP5_25F, synth::fpga::UP5K);
+                let d = dir.join("table_builder").join(ecp5.name);
+                let one = synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(&d, ecp5, ecp5.default_freq())?;
+                let d = dir.join("palette_pipeline_shared").join(up5k.name);
+                let shared = synth::fpga::synth_and_place_cached::<rtl::palette_pipeline_shared::PalettePipelineShared>(&d, up5k, up5k.default_freq())?;
+                crate::palette_table::Fmax { builder_mhz: one.fmax_mhz, shared_mhz: shared.fmax_mhz }
             };
             crate::palette_table::run(fmax, &out)?
         }

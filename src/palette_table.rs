@@ -2,7 +2,8 @@
 //! 16,384 normals quantized from one 512 × 512 normal map (the demo's procedural heights, §4.1's plane fit), the
 //! per-frame table under Lambert, Lambert + specular, chrome and environment: the paper's Pentium-300 milliseconds,
 //! this machine's (the bit-exact model of `table_builder` where the hardware builds the table, the f64 table where it
-//! does not), the rtl builder's clocks and microseconds at its fmax, and two columns the paper lacks: the quantization's
+//! does not), the rtl builders' clocks and microseconds at their fmax (`table_builder` on the ECP5, one normal a
+//! clock; the UP5K's shared builder, one every two clocks, where its RAM holds the tables), and two columns the paper lacks: the quantization's
 //! angular error and the image error of the table against shading the unquantized normals the same way. Then the
 //! quantizer's own time at every s_N from 16 to 16,384, and the paper's Figure 3 sweep (16 … 2048 normals) as
 //! pictures of the map shaded through each palette, beside the unquantized one.
@@ -52,7 +53,19 @@ const FIGURE_3: usize = 8;
 /// The material of the pictures (RGBA), equation (1)'s o.
 const MATERIAL: [f64; 4] = [0.85, 0.7, 0.5, 1.0];
 
-pub fn run(fmax_mhz: Option<f64>, out: &std::path::Path) -> Result<(), String> {
+/// The builders' placed fmax, MHz, when measured: `table_builder` on the ECP5-25F, `palette_pipeline_shared` (its
+/// shared builder inside) on the UP5K.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Fmax {
+    pub builder_mhz: Option<f64>,
+    pub shared_mhz: Option<f64>,
+}
+
+/// The largest palette `palette_pipeline_shared` holds: its 8-bit index (two tables of 256 words in 4 of the UP5K's
+/// 30 block RAMs; 2 × 2,048 words would need 32).
+const SHARED_MAX: usize = 256;
+
+pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
     let normals = normal_map();
     let view = [0.0, 1.0, 0.0];
     let light = unit([0.5, 0.8, 0.3]);
@@ -86,13 +99,19 @@ pub fn run(fmax_mhz: Option<f64>, out: &std::path::Path) -> Result<(), String> {
     println!("per-frame table for s_N normals; paper: Pentium 300 MHz (its 16,384 row says 16348); model: one core here, the");
     println!("bit-exact table_builder with the palette's normals normalised once per map (the palette changes per map, not per");
     println!("frame: the same normaliser output the builder computes), chrome and environment in f64 (no rtl);");
-    println!("rtl: table_builder, one normal a clock (s_N + {} clocks) at {}", vectors_latency(), match fmax_mhz {
-        Some(f) => format!("{f:.1} MHz (its ECP5 placement)"),
+    let at = |f: Option<f64>, place: &str| match f {
+        Some(f) => format!("{f:.1} MHz (its {place} placement)"),
         None => "its fmax (not measured: --no-synth, or the tools missing)".into(),
-    });
+    };
+    println!("rtl µs: table_builder, one normal a clock (s_N + {} clocks) at {}", vectors_latency(), at(fmax.builder_mhz, "ECP5-25F"));
     println!(
-        "{:<20} {:>6} {:>9} {:>11} {:>10} {:>9} {:>16} {:>18}",
-        "lighting", "s_N", "paper ms", "model ms", "speed-up", "rtl µs", "angle mean/max °", "image LSB mean/max"
+        "UP5K µs: palette_pipeline_shared's builder, one normal every two clocks (2·s_N + {} clocks) at {}; s_N ≤ {SHARED_MAX}",
+        rtl::table_builder_shared::LATENCY,
+        at(fmax.shared_mhz, "UP5K")
+    );
+    println!(
+        "{:<20} {:>6} {:>9} {:>11} {:>10} {:>9} {:>9} {:>16} {:>18}",
+        "lighting", "s_N", "paper ms", "model ms", "speed-up", "rtl µs", "UP5K µs", "angle mean/max °", "image LSB mean/max"
     );
     for (k, &s_n) in SIZES.iter().enumerate() {
         let (_, q, _, angle) = sweep.iter().find(|s| s.0 == s_n).expect("the sweep holds Table 1's sizes");
@@ -119,15 +138,21 @@ pub fn run(fmax_mhz: Option<f64>, out: &std::path::Path) -> Result<(), String> {
                 img.add((0..4).map(|c| (a[c] - b[c]).abs()).max().unwrap_or(0) as f64, || format!("texel {t}"));
             }
             let paper = PAPER_MS[m][k];
-            let rtl = match (m, fmax_mhz) {
+            let rtl = match (m, fmax.builder_mhz) {
                 (0 | 1, Some(f)) => format!("{:.1}", (s_n + vectors_latency()) as f64 / f),
+                (0 | 1, None) => "-".into(),
+                _ => "no rtl".into(),
+            };
+            let up5k = match (m, fmax.shared_mhz) {
+                (0 | 1, _) if s_n > SHARED_MAX => "no RAM".into(),
+                (0 | 1, Some(f)) => format!("{:.1}", (2 * s_n + rtl::table_builder_shared::LATENCY) as f64 / f),
                 (0 | 1, None) => "-".into(),
                 _ => "no rtl".into(),
             };
             let speedup = if paper > 0.0 { format!("{:.0}x", paper / (secs * 1e3)) } else { "(0.0)".into() };
             println!(
-                "{:<20} {:>6} {:>9.1} {:>11.4} {:>10} {:>9} {:>16} {:>18}",
-                name, s_n, paper, secs * 1e3, speedup, rtl,
+                "{:<20} {:>6} {:>9.1} {:>11.4} {:>10} {:>9} {:>9} {:>16} {:>18}",
+                name, s_n, paper, secs * 1e3, speedup, rtl, up5k,
                 format!("{:.3}/{:.3}", angle.mean(), angle.max.max(0.0)), format!("{:.3}/{:.0}", img.mean(), img.max.max(0.0))
             );
         }

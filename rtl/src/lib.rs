@@ -59,7 +59,9 @@ pub mod height {
 pub mod palette {
     pub mod palette_lookup;
     pub mod palette_pipeline;
+    pub mod palette_pipeline_shared;
     pub mod table_builder;
+    pub mod table_builder_shared;
 }
 
 pub mod stream;
@@ -74,5 +76,5 @@ pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter
 pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
-pub use palette::{palette_lookup, palette_pipeline, table_builder};
+pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder, table_builder_shared};
 pub use stream::StreamUnit;

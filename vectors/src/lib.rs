@@ -51,6 +51,7 @@ pub mod height {
 pub mod palette {
     pub mod palette_lookup;
     pub mod palette_pipeline;
+    pub mod palette_pipeline_shared;
     pub mod plane_fit;
     pub mod quantize;
     pub mod table_builder;
@@ -66,5 +67,5 @@ pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipelin
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
 pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, texture_filter};
-pub use palette::{palette_lookup, palette_pipeline, table_builder};
+pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
 pub use unit::{Port, UnitModel, UNITS};

@@ -215,6 +215,7 @@ macro_rules! unit_table {
                 palette_pipeline_12: $crate::palette_pipeline::MODEL_12, rtl::palette_pipeline::PalettePipeline<12, 13>, [
                     ("diffuse$valid_out", "as in table_builder"),
                 ];
+                palette_pipeline_shared: $crate::palette_pipeline_shared::MODEL, rtl::palette_pipeline_shared::PalettePipelineShared, [];
                 sincos: $crate::sincos::MODEL, rtl::sincos::SinCosUnit, [];
                 cos_sign: $crate::cos_sign::MODEL, rtl::cos_sign::CosSignUnit, [];
                 polar_shade: $crate::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>, [];
