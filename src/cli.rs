@@ -203,6 +203,22 @@ pub fn writable_folder(out: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
+/// A file can be written at `path`: its folder exists and takes a file (tried with one, removed), and it is not a
+/// folder itself.
+pub fn writable_file(path: &std::path::Path) -> Result<(), String> {
+    if path.is_dir() {
+        return Err(format!("{} is a folder; name a file", path.display()));
+    }
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => std::path::Path::new("."),
+    };
+    let probe = dir.join(format!(".{}.write-test", std::process::id()));
+    std::fs::write(&probe, b"").map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
+}
+
 pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
     if vectors::unit::SOFTWARE_ONLY.contains(&name) {
         return Err(format!("`{name}` is software only (no rtl block, no vectors): its errors are in `bumprtl accuracy`"));
@@ -290,6 +306,9 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::Widths { unit: name, count, seed, csv } => {
             let m = unit(&name)?;
+            if let Some(c) = &csv {
+                writable_file(c)?; // before the minutes of simulation
+            }
             with_unit!(name.as_str(), U => crate::widths::run::<U>(m, count, seed, csv.as_deref()))?;
         }
         Cmd::Synth { unit: name, target, dir, freq } => {

@@ -352,12 +352,13 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     assert_eq!(&row("uut.s4_sum.q")[1..5], ["Sq4_20", "sQ4.20", "25", "1"]);
     assert!(row("uut.s4_sum.q")[5].parse::<i64>().unwrap() < 0);
     assert_eq!(row("uut.s1_nm$0.d")[6], "2048");
-    // proven over every input: |n|·|l| ≤ 2048 · 2048, the sum of three within ±3 · 2^22; no wrap in the sum, while
-    // the floor of a negative sum into the unsigned w_q wraps (the clamp after it reads the sign first)
+    // proven over every input: |n|·|l| ≤ 2048 · 2048, the sum of three within ±3 · 2^22, its floor / 1024 within
+    // ±12,288 in the S15 w_q: nothing in dot3 can wrap
     assert_eq!(&row("uut.s2_p$0.q")[10..12], ["0", "4194304"]);
     assert_eq!(&row("uut.s4_sum.q")[10..12], ["-12582912", "12582912"]);
-    assert_eq!(row("uut.s4_sum.d")[14], "0");
-    assert_eq!(&row("uut.w_q")[14..17], ["1", "-12288", "12288"]);
+    assert_eq!(&row("uut.w_q")[10..12], ["-12288", "12288"]);
+    assert!(rows.iter().all(|r| r[14] == "0"), "{text}");
+    assert!(out.contains("0 risks (W), 0 wraps on purpose (w), 0 argued (a)") && out.contains("0 of 3008 differ"), "{out}");
     for r in &rows {
         let (bits, needed): (usize, usize) = (r[3].parse().unwrap(), r[7].parse().unwrap());
         assert!(needed <= bits, "{r:?}");
@@ -366,7 +367,17 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     let (code, out, err) = bumprtl(&["widths", "gloss"]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("every input (262144)") && out.contains("proven by exhaustion"), "{out}");
+    // gloss's L − Q ≥ 0 (Q = ⌊L²/1024⌋ ≤ L) is beyond intervals: argued, with every input behind it
+    assert!(out.contains("0 risks (W)") && out.contains("  a uut.s5_d.d: computes -1022 .. 1023"), "{out}");
+    assert!(out.contains("argued: L − Q with Q") && out.contains("every input applied, rtl = model on all 262144"), "{out}");
     assert!(!bumprtl(&["widths", "dot3", "--count", "10"]).1.contains("proven by exhaustion"));
+    // a --csv that cannot be written is refused before the simulation, in one line, and nothing is left
+    let (code, _, err) = bumprtl(&["widths", "dot3", "--csv", "/proc/no-such-folder/w.csv"]);
+    assert_ne!(code, 0);
+    assert!(err.lines().count() == 1 && err.contains("/proc/no-such-folder/w.csv"), "{err}");
+    let (code, _, err) = bumprtl(&["widths", "dot3", "--csv", d.to_str().unwrap()]);
+    assert_ne!(code, 0);
+    assert!(err.contains("is a folder"), "{err}");
     let (code, _, err) = bumprtl(&["widths", "no_such_unit"]);
     assert_ne!(code, 0);
     assert_eq!(err.lines().count(), 1, "{err}");

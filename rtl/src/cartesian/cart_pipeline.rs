@@ -28,7 +28,7 @@ macro_rules! cart_pipeline {
     ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident) => {
 pub mod $m {
 use super::*;
-use crate::q::{S8, U8};
+use crate::q::{S8, Sq7_2, Sq9_0, U8};
 
 /// Cycles from the pipeline's input to each unit's input (seed decode: 15, 8, 32, 43, 48).
 pub const AT_NORMALISE: usize = crate::bilinear::LATENCY + crate::$dec_mod::LATENCY;
@@ -85,12 +85,12 @@ crate::stream_block! {
         pub light_norm: Normalise,
         pub dot: Dot3,
         pub gloss: Gloss,
-        light_dly: [Delay<Bits<10>, LIGHT_DELAY>; 3],
+        light_dly: [Delay<Sq7_2, LIGHT_DELAY>; 3],
         conc_dly: RamDelay<8, 6, AT_GLOSS>,
         pub blend: DelayedBlend<6, AT_BLEND>,
         p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
-        bump_x10: Signal<Local, Bits<10>>,
-        bump_z10: Signal<Local, Bits<10>>,
+        bump_x10: Signal<Local, Sq9_0>,
+        bump_z10: Signal<Local, Sq9_0>,
     }
 }
 

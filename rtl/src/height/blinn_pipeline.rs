@@ -9,7 +9,7 @@ use crate::bilinear::{self, BilinearUnit};
 use crate::delay::Delay;
 use crate::height_normal::{self, HeightNormal};
 use crate::normalise::{self, Normalise};
-use crate::q::{Sq1_10, U8};
+use crate::q::{SBits, Sq1_10, U8};
 use rust_hdl::prelude::*;
 
 /// Clocks from the input to the normal unit's.
@@ -43,16 +43,16 @@ crate::stream_block! {
         s1_v: DFF<Bits<9>>,
         pub unit: [BilinearUnit<8, 9, 1>; 3], // red, green, blue
         // G − R and B − R shifted down by 6, floor (S20 in 21)
-        s2_t1: DFF<Bits<21>>,
-        s2_t2: DFF<Bits<21>>,
+        s2_t1: DFF<SBits<21>>,
+        s2_t2: DFF<SBits<21>>,
         pub normal: HeightNormal,
         pub norm: Normalise,
         valid: Delay<Bit, AT_NORMAL>,
         scale_dly: Delay<U8, AT_NORMAL>,
         w_u: Signal<Local, Bits<9>>,
         w_v: Signal<Local, Bits<9>>,
-        w_d1: Signal<Local, Bits<32>>,
-        w_d2: Signal<Local, Bits<32>>,
+        w_d1: Signal<Local, SBits<32>>,
+        w_d2: Signal<Local, SBits<32>>,
     }
 }
 

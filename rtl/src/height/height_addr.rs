@@ -4,7 +4,7 @@
 //! Latency 2: the shifted coordinate and the axis's span; the wrap or the clamp, and the split.
 
 use crate::delay::Delay;
-use crate::q::U8;
+use crate::q::{SBits, U8};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 2;
@@ -24,7 +24,7 @@ crate::stream_block! {
         }
         // stage 1: c = coord − ½ texel, or coord (S17, two's complement in 18 bits); the span's last coordinate
         // (U17) and the clamp's top (U17)
-        s1_c: DFF<Bits<18>>,
+        s1_c: DFF<SBits<18>>,
         s1_mask: DFF<Bits<18>>,
         s1_top: DFF<Bits<18>>,
         s1_wrap: DFF<Bit>,

@@ -6,7 +6,7 @@
 //! the three magnitudes + 2^(s−1); >> s; the signs.
 
 use crate::delay::Delay;
-use crate::q::{SBits, U8};
+use crate::q::{SBits, Sq9_0, U8};
 use crate::sm_mul::{self, SmMulWide};
 use rust_hdl::prelude::*;
 
@@ -21,9 +21,9 @@ crate::stream_block! {
             scale: U8,
         }
         out {
-            n_x: Bits<10>,
-            n_y: Bits<10>,
-            n_z: Bits<10>,
+            n_x: Sq9_0,
+            n_y: Sq9_0,
+            n_z: Sq9_0,
         }
         // stage 1: 7k = 8k − k (U11 in 16); the tangents
         s1_k7: DFF<Bits<16>>,
@@ -71,9 +71,9 @@ crate::stream_block! {
         s10_n1: DFF<Bit>,
         s10_n2: DFF<Bit>,
         // stage 11: the signs: S10
-        s11_x: DFF<Bits<10>>,
-        s11_y: DFF<Bits<10>>,
-        s11_z: DFF<Bits<10>>,
+        s11_x: DFF<Sq9_0>,
+        s11_y: DFF<Sq9_0>,
+        s11_z: DFF<Sq9_0>,
         valid: Delay<Bit, LATENCY>,
         w_k: Signal<Local, Bits<16>>,
         w_k8: Signal<Local, Bits<16>>,

@@ -4,7 +4,7 @@
 
 use crate::delay::Delay;
 use rust_hdl::prelude::*;
-use crate::q::{Sq1_10, Sq4_20};
+use crate::q::{SBits, Sq1_10, Sq4_20};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 6;
@@ -43,7 +43,7 @@ crate::stream_block! {
         w_p: [Signal<Local, Bits<32>>; 3],
         w_t: [Signal<Local, Sq4_20>; 3],
         w_partial: Signal<Local, Sq4_20>,
-        w_q: Signal<Local, Bits<15>>,
+        w_q: Signal<Local, SBits<15>>, // Σ >> 10, floor: S15 (read only where Σ ≥ 0)
     }
 }
 

@@ -245,6 +245,15 @@ fn literal(text: &str) -> Option<(i128, u32)> {
     Some((v, bits))
 }
 
+/// A literal's value, if the expression is one.
+fn literal_value(e: &E) -> Option<i128> {
+    match e {
+        E::Literal(l) => literal(&l.to_string()).map(|x| x.0),
+        E::Paren(x) => literal_value(x),
+        _ => None,
+    }
+}
+
 /// What a module is, to the analysis.
 enum Code {
     Comb(VerilogBlock),
@@ -459,6 +468,12 @@ impl Eval<'_, '_> {
                     return None;
                 }
                 (a.div_euclid(1 << k.lo), b.div_euclid(1 << k.lo))
+            }
+            // `!x + 1`, two's complement negation written out: −x, whatever x's format (its patterns are −x's)
+            E::Binary(a, VerilogOp::Add, b) if matches!(&**a, E::Unary(VerilogOpUnary::Not, _)) && literal_value(b) == Some(1) => {
+                let E::Unary(_, x) = &**a else { unreachable!() };
+                let (lo, hi) = self.exact(x)?;
+                (-hi, -lo)
             }
             E::Binary(a, op, b) => {
                 let (x, y) = (self.exact(a)?, self.exact(b)?);

@@ -8,6 +8,7 @@
 //! with the clock low and the slot settled (every register's d is then what the edge latches).
 
 pub mod bounds;
+pub mod wraps;
 
 use rtl::stream::Runner;
 use rtl::StreamUnit;
@@ -586,6 +587,8 @@ pub struct Ranges {
     pub signals: Vec<Seen>,
     /// clocks probed
     pub clocks: u64,
+    /// what left the unit, in order (bit patterns)
+    pub outputs: Vec<Vec<u64>>,
     path: Vec<String>,
     next: usize,
 }
@@ -649,13 +652,58 @@ pub fn seen_ticking<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>], tick: &dy
             tick(k.min(inputs.len()));
         }
         ranges.next = 0;
-        match &s {
+        let out = match &s {
             Some(v) => r.step_probed(true, v, Some(&mut ranges)),
             None => r.step_probed(false, &zeros, Some(&mut ranges)),
         };
+        ranges.outputs.extend(out);
         ranges.clocks += 1;
     }
     ranges
+}
+
+/// How many vectors' outputs differ from the model's (a stream unit's model runs over the whole stream), and how
+/// many outputs are missing: the evidence behind the steps `wraps` argues for, since the model does not wrap.
+pub fn mismatches(m: &UnitModel, inputs: &[Vec<i64>], outputs: &[Vec<u64>]) -> usize {
+    let want = m.run(inputs);
+    let differ = want
+        .iter()
+        .zip(outputs)
+        .filter(|(w, o)| {
+            let have: Vec<i64> = o.iter().zip(m.outputs).map(|(&p, port)| vectors::fixed::from_pattern(p, port.bits, port.signed)).collect();
+            have != **w
+        })
+        .count();
+    differ + want.len().abs_diff(outputs.len())
+}
+
+/// A step the proof finds may leave its target's declared range: the signal it writes (VCD name), the block that
+/// owns the step and the signal's name there, what the step computes, and its entry in `wraps` if it is listed.
+pub struct Site {
+    pub name: String,
+    pub owner: String,
+    pub local: String,
+    pub exact: (i128, i128),
+    pub listed: Option<&'static wraps::Waived>,
+}
+
+/// Every such step of a block, from its proof.
+pub fn sites(f: &Formats, proof: &bounds::Proof) -> Vec<Site> {
+    let mut out: Vec<Site> = proof
+        .wraps
+        .iter()
+        .map(|((module, name), &exact)| {
+            // the step belongs to the block whose statement it is: a parent writing a child's port owns that write
+            let owner = f.block_at(module).unwrap_or_else(|| String::from("?"));
+            let rest = name.strip_prefix(&format!("{module}.")).unwrap_or(name);
+            let local: Vec<&str> = rest.split('.').map(|s| s.split('$').next().unwrap_or(s)).collect();
+            let local = local.join(".");
+            let listed = wraps::find(&owner, &local);
+            Site { name: name.clone(), owner, local, exact, listed }
+        })
+        .collect();
+    out.sort_by(|a, b| a.name.cmp(&b.name));
+    out
 }
 
 #[cfg(test)]

@@ -1,0 +1,154 @@
+//! The steps of the rtl whose exact result the interval proof cannot keep inside the declared format, each listed
+//! with what it is and why it is right: the width report's `W` sites that are not risks. A test holds every such
+//! site of every unit to this list, and every entry to a site that exists, so a new step that may wrap fails it
+//! until someone writes down why it does not (or fixes it).
+//!
+//! Three kinds:
+//! - a **split** keeps some bits of a wider word on purpose: a byte of a packed word, the low bits whose top is
+//!   tested beside them;
+//! - a **modular** step is arithmetic modulo 2^n on purpose: a ring's pointers, the polar R − Q around the circle;
+//! - a **bound** cannot leave its format, for a reason intervals do not carry: two operands that share a factor (a
+//!   weighted mean), a shift chosen from the data, a saturate's test on the top bits, the one texel value a test
+//!   sets aside, or a register's reset zero that only a bubble sees. The argument is written here; the evidence
+//!   beside it is the unit's rtl equal to its model, which computes in 64-bit integers without wrapping, on every
+//!   vector the width report runs (and on every input where the unit's inputs can be enumerated).
+
+/// What kind of step it is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    Split,
+    Modular,
+    Bound,
+}
+
+impl Kind {
+    /// The report's flag: `w` wraps on purpose (split or modular), `a` argued in range.
+    pub fn flag(self) -> char {
+        match self {
+            Kind::Split | Kind::Modular => 'w',
+            Kind::Bound => 'a',
+        }
+    }
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Split => "split",
+            Kind::Modular => "modular",
+            Kind::Bound => "bound",
+        }
+    }
+}
+
+/// A listed step: the block that declares the signal, the signal there (array indices dropped, `.d` for a
+/// register's input), its kind and why.
+pub struct Waived {
+    pub block: &'static str,
+    pub signal: &'static str,
+    pub kind: Kind,
+    pub why: &'static str,
+}
+
+/// The entry for a step, if it is listed.
+pub fn find(block: &str, signal: &str) -> Option<&'static Waived> {
+    WAIVED.iter().find(|w| w.block == block && w.signal == signal)
+}
+
+const fn w(block: &'static str, signal: &'static str, kind: Kind, why: &'static str) -> Waived {
+    Waived { block, signal, kind, why }
+}
+
+use Kind::{Bound, Modular, Split};
+
+const BILINEAR_MEAN: &str = "t·2^F ± |t' − t|·u with u < 2^F is the weighted mean t·(2^F − u) + t'·u of two UW values: \
+    0 .. (2^W − 1)·2^F; intervals see the sign and the magnitude of t' − t apart";
+const BILINEAR_WIDE: &str = "a bilinear unit's exact result is a weighted mean of weighted means of UW texels: below \
+    2^(W + 2F − D) ≤ 2^25";
+
+pub const WAIVED: &[Waived] = &[
+    // shared blocks
+    w("BilinearUnit", "s6_a.d", Bound, BILINEAR_MEAN),
+    w("BilinearUnit", "s6_b.d", Bound, BILINEAR_MEAN),
+    w("BilinearUnit", "s7_e.d", Bound, "b' − a' of two weighted means each below 2^(W + F − D): |b' − a'| < 2^(W + F − D)"),
+    w("BilinearUnit", "w_a", Bound, "a'·2^F with a' < 2^(W + F − D) (a weighted mean): below 2^(W + 2F − D) ≤ 2^25"),
+    w("BilinearUnit", "w_wide", Bound, "a'·2^F ± |b' − a'|·v is the weighted mean of a' and b' times 2^F: 0 .. 2^(W + 2F − D)"),
+    w("BilinearUnit", "w_r", Bound, "the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
+    w("BilinearUnit", "s11_out.d", Bound, "the rounded weighted mean of UW values shifted down by 2F − D is at most 2^W − 1"),
+    w("Blend", "w_sum", Bound, "α·s + (255 − α)·d ≤ 255·255 = 65,025: the two products share α"),
+    w("Blend", "s3_t.d", Bound, "w_sum + 128 ≤ 65,153"),
+    w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),
+    w("DelayedBlend", "blend.src_r", Split, "a byte of the six colours packed in one RAM word"),
+    w("DelayedBlend", "blend.src_g", Split, "a byte of the packed colours"),
+    w("DelayedBlend", "blend.src_b", Split, "a byte of the packed colours"),
+    w("DelayedBlend", "blend.dst_r", Split, "a byte of the packed colours"),
+    w("DelayedBlend", "blend.dst_g", Split, "a byte of the packed colours"),
+    w("Gloss", "m3_lo", Split, "the low 10 bits of m >> 3, read only where m >> 3 ≤ 1023 (tested beside it; else L = 0)"),
+    w("Gloss", "s5_d.d", Bound, "L − Q with Q = ⌊L·L / 1024⌋ ≤ L for L ≤ 1023: never negative"),
+    w("Gloss", "s8_p.d", Bound, "L − ⌈C·(L − Q) / 256⌉ ≥ L − (L − Q) = Q ≥ 0 for C ≤ 255"),
+    w("RamDelay", "wp.d", Modular, "the ring's write pointer counts modulo 2^A"),
+    w("RamDelay", "ram.read_address", Modular, "wp − (N − 1) modulo 2^A, the ring's read pointer (wp + 2^A − N + 1)"),
+    w("SmMul", "s1_m.d", Bound, "|x| of an N-bit x kept in 16 bits: every caller's |x| is below 2^16 (a texel difference, |b' − a'|)"),
+    w("SmMulWide", "s1_lo.d", Split, "the low half of |x|, multiplied apart from the high half"),
+    w("SmMulWide", "w_hi16", Bound, "hi·w·2^16 ≤ |x|·w < 2^32 for every caller: height_normal's 7k·|t| < 1785·2^20, \
+        tangent's |d2 − d1|·V < 2^29"),
+    w("SmMulWide", "s4_p.d", Bound, "lo·w + hi·w·2^16 = |x|·w < 2^32: the caller's bound"),
+    // Cartesian
+    w("CartDecode", "lo_x", Split, "the low 7 bits of the texel: T − 128 where bit 7 (tested beside them) is set"),
+    w("CartDecode", "lo_z", Split, "as lo_x"),
+    w("CartDecode", "s2_sum.d", Bound, "each magnitude is 127 − T or T − 127 with T = 255 set aside (it gives 127): ≤ 127 each, \
+        the sum ≤ 254; intervals do not carry the T = 255 test into T − 127"),
+    w("CartDecode", "s3_mx.d", Bound, "127 + (ax − az) ∈ 0..254 and 2·ax ≤ 254, for ax, az ≤ 127 (as s2_sum)"),
+    w("CartDecode", "s3_mz.d", Bound, "as s3_mx"),
+    w("CartDecode", "twice_sum", Bound, "2·sum is read only where the sum is below 128 (bit 7 clear): ≤ 254"),
+    w("CartDecodeHemiOct", "s3_y.d", Bound, "|x| + |z| = max(|2U − 255|, |2V − 255|) ≤ 255 for every texel (x = U + V − 255, \
+        z = U − V), so 255 − |x| − |z| ≥ 0"),
+    w("LightLane", "w_hi", Split, "the top 5 bits of the S14, a test only"),
+    w("LightLane", "s7_out.d", Bound, "a saturate: the low 10 bits are taken only where bits 13..9 are all equal, which makes \
+        them the value; else ±511 / −512"),
+    // height maps
+    w("HeightAddr", "s2_blend.d", Split, "the fraction: the low 8 bits of the coordinate"),
+    w("HeightFetch", "w_um", Bound, "2^log2 − 1 for log2 ≤ 7 (bit 3 clear; else 255): 0..127"),
+    w("HeightFetch", "w_vm", Bound, "as w_um"),
+    w("HeightFetch", "s1_x.d", Bound, "x AND (2^s − 1) with 2^s − 1 ≤ 255 (wrap mode), or a clamp to 0..2^s − 1: U8"),
+    w("HeightFetch", "s1_y.d", Bound, "as s1_x"),
+    w("HeightFetch", "s4_out.d", Split, "one height of the fetched word, selected by a shift"),
+    w("HeightNormal", "s1_k7.d", Bound, "8k − k = 7k ≥ 0: the same k on both sides"),
+    w("HeightNormal", "w_sm1", Bound, "s − 1 with s ∈ 11..23 (chosen at stage 7); only the register's reset zero, before the \
+        first vector reaches the stage, gives −1, and what it makes is never valid"),
+    w("HeightNormal", "s9_a1.d", Bound, "a magnitude < 2^31 plus 2^(s − 1) ≤ 2^22: below 2^32"),
+    w("HeightNormal", "s9_a2.d", Bound, "as s9_a1"),
+    w("HeightNormal", "s9_ay.d", Bound, "as s9_a1"),
+    w("HeightNormal", "s10_q1.d", Bound, "rounded at the shift s chosen from the largest of the three magnitudes: ≤ 511 by \
+        that choice; intervals cannot tie s to the magnitude"),
+    w("HeightNormal", "s10_q2.d", Bound, "as s10_q1"),
+    w("HeightNormal", "s10_qy.d", Bound, "as s10_q1"),
+    w("HeightNormal", "s11_x.d", Bound, "±q with q ≤ 511 (s10_q1): S10"),
+    w("HeightNormal", "s11_y.d", Bound, "q ≤ 511 (s10_qy): S10"),
+    w("HeightNormal", "s11_z.d", Bound, "as s11_x"),
+    w("HeightPipeline", "back.red", Bound, BILINEAR_WIDE),
+    w("HeightPipeline", "back.green", Bound, BILINEAR_WIDE),
+    w("HeightPipeline", "back.blue", Bound, BILINEAR_WIDE),
+    w("HeightPipeline", "back.alpha", Bound, BILINEAR_WIDE),
+    w("TextureFilter", "back.red", Bound, BILINEAR_WIDE),
+    w("TextureFilter", "back.green", Bound, BILINEAR_WIDE),
+    w("TextureFilter", "back.blue", Bound, BILINEAR_WIDE),
+    w("TextureFilter", "back.alpha", Bound, BILINEAR_WIDE),
+    w("TextureFilter", "out_r", Split, "a byte of the filtered RGBA word"),
+    w("TextureFilter", "out_g", Split, "a byte of the filtered RGBA word"),
+    w("TextureFilter", "out_b", Split, "a byte of the filtered RGBA word"),
+    w("Tangent", "s8_t1.d", Bound, "bits 8..28 of a convex combination of S21 values times 2^8: back in S21"),
+    w("Tangent", "s8_t2.d", Bound, "as s8_t1"),
+    w("BlinnPipeline", "w_d1", Bound, "G − R of two bilinear results, each below 2^25 (a weighted mean): S26"),
+    w("BlinnPipeline", "w_d2", Bound, "B − R, as w_d1"),
+    w("BlinnPipeline", "s2_t1.d", Bound, "(G − R) >> 6 of an S26: S20 in 21"),
+    w("BlinnPipeline", "s2_t2.d", Bound, "as s2_t1"),
+    // palettes
+    w("PaletteLookup", "out_r", Split, "a byte of the 32-bit table entry"),
+    w("PaletteLookup", "out_g", Split, "a byte of the 32-bit table entry"),
+    w("PaletteLookup", "out_b", Split, "a byte of the 32-bit table entry"),
+    // polar
+    w("PolarShade", "w_d", Modular, "R − Q modulo 256: the angle difference goes round the circle (the seed's subtractor [16])"),
+    w("PolarShade", "s10_shade.d", Bound, "a clamp [28]: the low 8 bits only where the sign (bit 10) and bits 9..8 are clear"),
+    w("Power", "s4_f.d", Split, "g's fraction, bits 6..13 (its integer part, bits 14.., is taken beside it)"),
+    w("Power", "s6_w.d", Bound, "E >> (n + 6) with E ≤ 32,640 (the exp table's largest) and n + 6 ≥ 6: ≤ 510; only the \
+        shift register's reset zero, seen by bubbles, gives more"),
+    w("Power", "w_w1", Bound, "(E >> (n + 6)) + 1 ≤ 511 (s6_w)"),
+];
