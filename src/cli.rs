@@ -68,6 +68,17 @@ enum Cmd {
         /// also write the table as CSV
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// instead of the signals: sweep the unit's width parameters (normalise, sincos, bilinear), print error
+        /// against cost with its Pareto set, and mark the cheapest setting whose max error is within this budget
+        /// (Sq1.10 LSB of the worst component for normalise, 8-bit LSB for sincos and bilinear)
+        #[arg(long, value_parser = budget)]
+        budget: Option<f64>,
+        /// with --budget: the part whose cells yosys counts (its family): up5k, ecp5-25f, ecp5-45f or ecp5-85f
+        #[arg(long, default_value = "up5k")]
+        target: String,
+        /// with --budget: working folder for yosys's files
+        #[arg(long, default_value = "target/synth/widths")]
+        dir: PathBuf,
     },
     /// Exact against ideal for every unit, and the encoders' angular error
     Accuracy {
@@ -157,6 +168,15 @@ fn relief(s: &str) -> Result<f64, String> {
         Ok(r)
     } else {
         Err(format!("{s} texels: the relief must be above 0 and at most 64"))
+    }
+}
+
+fn budget(s: &str) -> Result<f64, String> {
+    let b: f64 = s.parse().map_err(|_| format!("`{s}` is not a number"))?;
+    if b.is_finite() && b >= 0.0 {
+        Ok(b)
+    } else {
+        Err(format!("{s}: an error budget is a finite number, 0 or more"))
     }
 }
 
@@ -304,7 +324,11 @@ pub fn main() -> Result<(), String> {
                 println!("{} ({} vectors)", out.display(), inputs.len());
             }
         }
-        Cmd::Widths { unit: name, count, seed, csv } => {
+        Cmd::Widths { unit: name, budget: Some(b), target, dir, .. } => {
+            unit(&name)?;
+            crate::widths::budget(&name, b, synth::fpga::part(&target)?, &dir)?
+        }
+        Cmd::Widths { unit: name, count, seed, csv, .. } => {
             let m = unit(&name)?;
             if let Some(c) = &csv {
                 writable_file(c)?; // before the minutes of simulation

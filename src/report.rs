@@ -51,7 +51,7 @@ pub fn accuracy(directions: usize, samples: usize) {
     }
 }
 
-type SynthFn = fn(&std::path::Path, synth::fpga::Family) -> Result<synth::fpga::Cells, String>;
+pub type SynthFn = fn(&std::path::Path, synth::fpga::Family) -> Result<synth::fpga::Cells, String>;
 
 macro_rules! sincos_blocks {
     ($(($tb:literal, $w:literal)),* $(,)?) => {
@@ -66,7 +66,7 @@ macro_rules! cos_sign_blocks {
 }
 
 /// The rtl block of every size of each LUT-size table, from the same list as the model's `LUT_SIZES`.
-const SINCOS_BLOCKS: &[(u32, u32, SynthFn)] = vectors::sincos_lut_sizes!(sincos_blocks);
+pub const SINCOS_BLOCKS: &[(u32, u32, SynthFn)] = vectors::sincos_lut_sizes!(sincos_blocks);
 const COS_SIGN_BLOCKS: &[(u32, u32, SynthFn)] = vectors::cos_sign_lut_sizes!(cos_sign_blocks);
 
 /// The LUT-size tables of the sine/cosine unit [10] and the cosine unit with sign [18]: entries and width against

@@ -185,3 +185,166 @@ pub fn run<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64, csv_out: Optio
     }
     Ok(())
 }
+
+/// One setting of a unit's width parameters in the budget sweep: what it is, whether it is the unit's own, its error
+/// against the ideal (mean, max, in the sweep's unit; and a second measure where the unit has one), its cost.
+pub struct Point {
+    pub setting: String,
+    pub own: bool,
+    pub mean: f64,
+    pub max: f64,
+    pub also: Option<String>,
+    pub cells: synth::fpga::Cells,
+}
+
+impl Point {
+    /// Every figure at most the other's (error and every resource) and one below it.
+    fn dominates(&self, o: &Point) -> bool {
+        let (a, b) = (&self.cells, &o.cells);
+        let le = self.max <= o.max && self.mean <= o.mean && a.lut4 <= b.lut4 && a.ff <= b.ff && a.dsp <= b.dsp && a.bram <= b.bram;
+        let lt = self.max < o.max || self.mean < o.mean || a.lut4 < b.lut4 || a.ff < b.ff || a.dsp < b.dsp || a.bram < b.bram;
+        le && lt
+    }
+    /// Scarce blocks first: DSP, block RAM, then LUT4 and FF.
+    fn cost(&self) -> (u64, u64, u64, u64) {
+        (self.cells.dsp, self.cells.bram, self.cells.lut4, self.cells.ff)
+    }
+}
+
+macro_rules! normalise_blocks {
+    ($($t:literal),* $(,)?) => {
+        &[$(($t, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t>> as crate::report::SynthFn)),*]
+    };
+}
+
+macro_rules! bilinear_blocks {
+    ($(($f:literal, $d:literal)),* $(,)?) => {
+        &[$(($f, $d, synth::fpga::synth_unit::<rtl::bilinear::Bilinear<$f, $d>> as crate::report::SynthFn)),*]
+    };
+}
+
+const NORMALISE_BLOCKS: &[(u32, crate::report::SynthFn)] = vectors::normalise_table_sizes!(normalise_blocks);
+const BILINEAR_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::bilinear_sizes!(bilinear_blocks);
+
+/// The units with width parameters the sweep knows, and the unit of their budget. The normaliser's is the worst
+/// component's error (Sq1.10 LSB), not the angle: its table sets the length of the result, hardly its direction
+/// (a scale error of 1/√m moves every component alike), and N·L reads the length; the angle is printed beside.
+pub const SWEPT: &[(&str, &str)] = &[("normalise", "Sq1.10 LSB"), ("sincos", "8-bit LSB"), ("bilinear", "8-bit LSB")];
+
+/// Every setting of the unit's width parameters: its error from the model (random vectors, or every input where
+/// the unit has few) and its cost from yosys for `family`, each synthesised in its own folder under `dir`.
+pub fn sweep(unit: &str, family: synth::fpga::Family, dir: &std::path::Path, say: &dyn Fn(&str)) -> Result<Vec<Point>, String> {
+    const SAMPLES: usize = 200_000;
+    let cost = |f: crate::report::SynthFn, name: String| {
+        say(&name);
+        f(&dir.join(&name), family)
+    };
+    let mut points = vec![];
+    match unit {
+        "normalise" => {
+            for &(t, f) in NORMALISE_BLOCKS {
+                let (lsb, deg) = vectors::normalise::error(t, 0, SAMPLES, 3);
+                points.push(Point {
+                    setting: format!("table 2^{t} entries, 0 Newton steps"),
+                    own: t == vectors::normalise::TABLE_BITS,
+                    mean: lsb.mean(),
+                    max: lsb.max,
+                    also: Some(format!("{:.4}/{:.4} degrees", deg.mean(), deg.max)),
+                    cells: cost(f, format!("normalise_t{t}"))?,
+                });
+            }
+        }
+        "sincos" => {
+            for &(tb, w, f) in crate::report::SINCOS_BLOCKS {
+                let e = vectors::sincos::size_error(tb, w);
+                points.push(Point {
+                    setting: format!("{} entries of {w} bits", 1u32 << tb),
+                    own: (tb, w) == (vectors::sincos::TABLE_BITS, vectors::sincos::WIDTH),
+                    mean: e.mean_lsb8,
+                    max: e.max_lsb8,
+                    also: None,
+                    cells: cost(f, format!("sincos_t{tb}w{w}"))?,
+                });
+            }
+        }
+        "bilinear" => {
+            for &(fb, d, f) in BILINEAR_BLOCKS {
+                let e = vectors::bilinear::error_sized(fb, d, SAMPLES / 4, 3);
+                points.push(Point {
+                    setting: format!("{fb} blend bits, {d} dropped"),
+                    own: (fb, d) == (vectors::bilinear::F, 0),
+                    mean: e.mean(),
+                    max: e.max,
+                    also: None,
+                    cells: cost(f, format!("bilinear_f{fb}d{d}"))?,
+                });
+            }
+        }
+        _ => {
+            let names: Vec<&str> = SWEPT.iter().map(|s| s.0).collect();
+            return Err(format!("--budget: `{unit}` has no width parameters to sweep; the units that do: {}", names.join(", ")));
+        }
+    }
+    Ok(points)
+}
+
+/// The indices of the Pareto set (no other point as good in every figure and better in one), and of the cheapest
+/// point whose max error is within `budget`.
+pub fn pareto(points: &[Point], budget: f64) -> (Vec<usize>, Option<usize>) {
+    let front: Vec<usize> = (0..points.len()).filter(|&k| !points.iter().any(|q| q.dominates(&points[k]))).collect();
+    let cheapest = (0..points.len()).filter(|&k| points[k].max <= budget).min_by_key(|&k| points[k].cost());
+    (front, cheapest)
+}
+
+/// `bumprtl widths <unit> --budget X`: the sweep's table, its Pareto set, and the cheapest setting within X.
+pub fn budget(unit: &str, budget: f64, part: synth::fpga::Part, dir: &std::path::Path) -> Result<(), String> {
+    let (_, what) = SWEPT.iter().find(|s| s.0 == unit).copied().unwrap_or((unit, "?"));
+    let missing = synth::tools::missing(&["yosys"]);
+    if !missing.is_empty() {
+        return Err(format!("--budget costs each setting with yosys, which is missing (`bash .ci/run` installs it)"));
+    }
+    let t = std::time::Instant::now();
+    let points = sweep(unit, part.family, dir, &|name| eprintln!("yosys: {name} for {}", part.title))?;
+    let (front, cheapest) = pareto(&points, budget);
+    println!("width sweep of `{unit}`: error against the ideal in {what} (mean / max), cost from yosys for {} ({:.0} s)", part.title, t.elapsed().as_secs_f64());
+    println!("P: on the Pareto set (no other setting as good in error and every resource, and better in one); *: the unit's own");
+    let [lut, ff, dsp, bram, _] = part.family.cells();
+    println!("{:<34} {:>10} {:>10} {:>8} {:>8} {:>6} {:>6}  {}", "setting", "mean", "max", lut, ff, dsp, bram, "");
+    for (k, p) in points.iter().enumerate() {
+        let marks = format!("{}{}{}", if front.contains(&k) { "P" } else { " " }, if p.own { "*" } else { " " }, if cheapest == Some(k) { " <- cheapest within the budget" } else { "" });
+        println!(
+            "{:<34} {:>10.4} {:>10.4} {:>8} {:>8} {:>6} {:>6}  {marks}{}",
+            p.setting, p.mean, p.max, p.cells.lut4, p.cells.ff, p.cells.dsp, p.cells.bram,
+            p.also.as_ref().map(|a| format!("  ({a})")).unwrap_or_default()
+        );
+    }
+    match cheapest {
+        Some(k) => println!(
+            "budget {budget} {what} (max): the cheapest setting within it is {} ({} {dsp}, {} {bram}, {} {lut}, {} {ff}; max {:.4})",
+            points[k].setting, points[k].cells.dsp, points[k].cells.bram, points[k].cells.lut4, points[k].cells.ff, points[k].max
+        ),
+        None => println!("budget {budget} {what} (max): no setting meets it; the most accurate has max {:.4}", points.iter().map(|p| p.max).fold(f64::MAX, f64::min)),
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p(max: f64, lut4: u64, bram: u64) -> Point {
+        Point { setting: String::new(), own: false, mean: max / 2.0, max, also: None, cells: synth::fpga::Cells { lut4, ff: 10, dsp: 0, bram, carry: 0 } }
+    }
+
+    #[test]
+    fn the_pareto_set_drops_what_another_setting_beats_everywhere() {
+        // 1 is as accurate as 0 and cheaper: 0 is dominated; 2 is less accurate but smaller; 3 loses to 2 everywhere
+        let pts = [p(0.5, 100, 2), p(0.5, 90, 2), p(2.0, 40, 0), p(3.0, 50, 0)];
+        let (front, cheapest) = pareto(&pts, 1.0);
+        assert_eq!(front, [1, 2]);
+        assert_eq!(cheapest, Some(1));
+        // a looser budget takes the setting without block RAM; one below every error takes none
+        assert_eq!(pareto(&pts, 2.0).1, Some(2));
+        assert_eq!(pareto(&pts, 0.1).1, None);
+    }
+}

@@ -382,3 +382,37 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     assert_ne!(code, 0);
     assert_eq!(err.lines().count(), 1, "{err}");
 }
+
+#[test]
+fn widths_budget_sweeps_the_table_sizes_and_marks_the_cheapest_within_it() {
+    let d = scratch("widths-budget");
+    let (code, out, err) = bumprtl(&["widths", "sincos", "--budget", "1.0", "--dir", d.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    // the rows: setting, mean, max, LUT4, FF, DSP, BRAM, marks
+    let rows: Vec<(String, f64, [u64; 4], String)> = out
+        .lines()
+        .filter(|l| l.contains(" entries of "))
+        .filter_map(|l| {
+            let (name, rest) = l.split_at(34);
+            let f: Vec<&str> = rest.split_whitespace().collect();
+            let n = |k: usize| f[k].parse::<u64>().ok();
+            Some((name.trim().to_string(), f[1].parse().ok()?, [n(2)?, n(3)?, n(4)?, n(5)?], f[6..].join(" ")))
+        })
+        .collect();
+    assert_eq!(rows.len(), 9, "{out}");
+    assert_eq!(rows.iter().filter(|r| r.3.contains('*')).map(|r| r.0.as_str()).collect::<Vec<_>>(), ["256 entries of 8 bits"], "{out}");
+    // the cheapest within 1 LSB: its max within the budget, and no row within it cheaper (DSP, BRAM, LUT4, FF)
+    let key = |c: &[u64; 4]| (c[2], c[3], c[0], c[1]);
+    let chosen: Vec<_> = rows.iter().filter(|r| r.3.contains("cheapest")).collect();
+    assert_eq!(chosen.len(), 1, "{out}");
+    assert!(chosen[0].1 <= 1.0, "{out}");
+    assert!(rows.iter().filter(|r| r.1 <= 1.0).all(|r| key(&r.2) >= key(&chosen[0].2)), "{out}");
+    // more entries or bits never cost accuracy: the 1,024-entry 12-bit table is the most accurate
+    assert!(rows.iter().all(|r| r.1 >= rows[8].1), "{out}");
+    // bad budgets and units without width parameters: one line, non-zero
+    for args in [&["widths", "sincos", "--budget", "-1"][..], &["widths", "sincos", "--budget", "nan"], &["widths", "gloss", "--budget", "1"]] {
+        let (code, _, err) = bumprtl(args);
+        assert_ne!(code, 0, "{args:?}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+    }
+}

@@ -80,7 +80,7 @@ fn a_magnitude_written_before_its_sign_test_is_proven_on_both_sides() {
     let f = Formats::of::<rtl::normalise::Normalise>();
     let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
     let signed = |n: &str| f.format(n).is_some_and(|x| x.signed);
-    let proof = bounds::prove(&rtl::normalise::Normalise::build(), &ports, &signed);
+    let proof = bounds::prove(&<rtl::normalise::Normalise>::build(), &ports, &signed);
     assert_eq!(proof.values["uut.s1_m$0.d"].range(false), (0, 512));
     assert_eq!(proof.values["uut.s2_sq$1.q"].range(false), (0, 512 * 512));
     let flagged: Vec<&str> = proof.wraps.keys().map(|(_, n)| n.as_str()).collect();

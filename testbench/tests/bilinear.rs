@@ -115,3 +115,24 @@ fn nine_blend_bits_with_one_dropped_filter_colour_exactly_as_eight() {
         }
     }
 }
+
+// Other widths of the same block (the width sweep's): fewer blend bits, bits dropped between the stages.
+fn exact_at<const F: u32, const D: u32>(i: &[i64]) -> Vec<i64> {
+    vectors::bilinear::exact_sized(i, F, D)
+}
+
+const fn sized(exact: fn(&[i64]) -> Vec<i64>) -> vectors::UnitModel {
+    vectors::UnitModel { exact, accuracy: None, ..vectors::bilinear::MODEL }
+}
+
+static F6: vectors::UnitModel = sized(exact_at::<6, 0>);
+static F8D4: vectors::UnitModel = sized(exact_at::<8, 4>);
+
+#[test]
+fn other_widths_three_ways() {
+    let v = vectors::unit::generate(&vectors::bilinear::MODEL, false, 3_000, 19).unwrap();
+    testbench::three_ways::<rtl::bilinear::Bilinear<6, 0>>(&F6, &v, "bilinear_f6");
+    testbench::three_ways::<rtl::bilinear::Bilinear<8, 4>>(&F8D4, &v, "bilinear_f8d4");
+    let own = vectors::bilinear::MODEL.exact;
+    assert!(v.iter().any(|i| (F6.exact)(i) != own(i)) && v.iter().any(|i| (F8D4.exact)(i) != own(i)));
+}

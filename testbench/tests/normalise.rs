@@ -45,3 +45,28 @@ fn normalise_rtl_table_is_the_models() {
         assert_eq!(v, vectors::normalise::table_entry(k as u64, vectors::normalise::TABLE_BITS), "entry {k}");
     }
 }
+
+// Other seed-table sizes of the same block (the width sweep's), three ways on the hard cases and random vectors.
+fn exact_table<const T: u32>(i: &[i64]) -> Vec<i64> {
+    vectors::normalise::exact_with([i[0], i[1], i[2]], T, 0).to_vec()
+}
+
+const fn sized(exact: fn(&[i64]) -> Vec<i64>) -> vectors::UnitModel {
+    vectors::UnitModel { exact, accuracy: None, ..MODEL }
+}
+
+static T8: vectors::UnitModel = sized(exact_table::<8>);
+static T12: vectors::UnitModel = sized(exact_table::<12>);
+
+fn vectors_of(m: &vectors::UnitModel) -> Vec<Vec<i64>> {
+    vectors::unit::generate(m, false, 3_000, 17).unwrap()
+}
+
+#[test]
+fn other_table_sizes_three_ways() {
+    testbench::three_ways::<Normalise<8>>(&T8, &vectors_of(&T8), "normalise_t8");
+    testbench::three_ways::<Normalise<12>>(&T12, &vectors_of(&T12), "normalise_t12");
+    // and they are other sizes: the model's outputs differ from the unit's somewhere
+    let v = vectors_of(&MODEL);
+    assert!(v.iter().any(|i| (T8.exact)(i) != (MODEL.exact)(i)) && v.iter().any(|i| (T12.exact)(i) != (MODEL.exact)(i)));
+}

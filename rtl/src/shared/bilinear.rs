@@ -204,9 +204,10 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
 }
 
 crate::stream_block! {
-    /// The unit `bilinear`: the colour filter's four bilinear units on R, G, B and A, 8-bit texels, 8 blend bits.
-    #[derive(Default)]
-    pub struct Bilinear: unit("bilinear", LATENCY) {
+    /// The unit `bilinear`: the colour filter's four bilinear units on R, G, B and A, 8-bit texels, 8-bit blend
+    /// positions. `Bilinear<F, D>` keeps the top F bits of each position (truncation) and drops D bits between the
+    /// two stages: the unit has F = 8, D = 0; the other settings are the width sweep's.
+    pub struct Bilinear<const F: usize = 8, const D: usize = 0>: unit("bilinear", LATENCY) {
         in {
             t00_r: U8,
             t00_g: U8,
@@ -233,19 +234,56 @@ crate::stream_block! {
             out_b: U8,
             out_a: U8,
         }
-        pub unit: [BilinearUnit<8, 8>; 4], // R, G, B, A
-        valid: Delay<Bit, LATENCY>,        // the valid flag, beside the units
+        pub unit: [BilinearUnit<8, F, D>; 4], // R, G, B, A
+        valid: Delay<Bit, LATENCY>,           // the valid flag, beside the units
+        blend_at: Constant<Bits<4>>,          // 8 − F: the position's top F bits
     }
 }
 
-impl Logic for Bilinear {
+impl<const F: usize, const D: usize> Default for Bilinear<F, D> {
+    fn default() -> Self {
+        assert!((1..=8).contains(&F), "Bilinear<F, D>: 1 to 8 blend bits of the 8-bit position (F = {F})");
+        Self {
+            clock: Default::default(),
+            valid_in: Default::default(),
+            valid_out: Default::default(),
+            t00_r: Default::default(),
+            t00_g: Default::default(),
+            t00_b: Default::default(),
+            t00_a: Default::default(),
+            t10_r: Default::default(),
+            t10_g: Default::default(),
+            t10_b: Default::default(),
+            t10_a: Default::default(),
+            t01_r: Default::default(),
+            t01_g: Default::default(),
+            t01_b: Default::default(),
+            t01_a: Default::default(),
+            t11_r: Default::default(),
+            t11_g: Default::default(),
+            t11_b: Default::default(),
+            t11_a: Default::default(),
+            ublend: Default::default(),
+            vblend: Default::default(),
+            out_r: Default::default(),
+            out_g: Default::default(),
+            out_b: Default::default(),
+            out_a: Default::default(),
+            unit: Default::default(),
+            valid: Default::default(),
+            blend_at: Constant::new(Bits::from(8 - F as u64)),
+        }
+    }
+}
+
+impl<const F: usize, const D: usize> Logic for Bilinear<F, D> {
     #[hdl_gen]
     fn update(&mut self) {
         clock!(self, clock, valid);
         for i in 0..4 {
             self.unit[i].clock.next = self.clock.val();
-            self.unit[i].ublend.next = self.ublend.val();
-            self.unit[i].vblend.next = self.vblend.val();
+            self.unit[i].ublend.next = self.ublend.val().get_bits::<F>(self.blend_at.val().index()); // the top F bits, floor
+            self.unit[i].vblend.next = self.vblend.val().get_bits::<F>(self.blend_at.val().index()); // the same
         }
         self.valid.d.next = self.valid_in.val();
         self.unit[0].t00.next = self.t00_r.val();

@@ -1,5 +1,6 @@
-//! `normalise`: three S10 components → a unit vector in Sq1.10 (S12), by a seed table of 1/√m (`TABLE_BITS` = 10,
-//! 1,024 × 13-bit entries, a ROM) and no Newton step; see `vectors::normalise` for the exact recipe and the zero
+//! `normalise`: three S10 components → a unit vector in Sq1.10 (S12), by a seed table of 1/√m (`Normalise<T>`: 2^T
+//! entries of 13 bits, a ROM; the unit `normalise` and every pipeline have T = `TABLE_BITS` = 10, the other sizes
+//! are the width sweep's) and no Newton step; see `vectors::normalise` for the exact recipe and the zero
 //! vector (zero in, zero out). Latency 11: magnitudes; the squarers' operand register (it feeds nothing else, so it
 //! can sit beside the DSP); squares; their sum; the leading-zero pairs; the shifts and
 //! the table address; the table (the block RAM's own read register); a register after the block RAM, so that its
@@ -16,10 +17,15 @@ pub const LATENCY: usize = 11;
 
 pub const TABLE_BITS: u32 = 10;
 
-/// The seed table, entry `idx` = round(2^12/√m) at the midpoint m of its bin; bins below m = 1 are unused (0).
-/// The model's `vectors::normalise::table_entry` is the same formula; a test compares the two entry by entry.
+/// The seed table at `TABLE_BITS`.
 pub fn table() -> Vec<u64> {
-    let t = TABLE_BITS;
+    table_of(TABLE_BITS)
+}
+
+/// A seed table of 2^t entries, entry `idx` = round(2^12/√m) at the midpoint m of its bin; bins below m = 1 are
+/// unused (0). The model's `vectors::normalise::table_entry` is the same formula; a test compares the two entry by
+/// entry.
+pub fn table_of(t: u32) -> Vec<u64> {
     (0..1u64 << t)
         .map(|idx| {
             if idx < 1 << (t - 2) {
@@ -33,7 +39,7 @@ pub fn table() -> Vec<u64> {
 }
 
 crate::stream_block! {
-    pub struct Normalise: unit("normalise", LATENCY) {
+    pub struct Normalise<const T: usize = 10>: unit("normalise", LATENCY) {
         in {
             vec_x: Sq9_0,
             vec_y: Sq9_0,
@@ -44,7 +50,8 @@ crate::stream_block! {
             norm_y: Sq1_10,
             norm_z: Sq1_10,
         }
-        rsqrt: ROM<Uq1_12, 10>,
+        rsqrt: ROM<Uq1_12, T>,
+        addr_at: Constant<Bits<5>>, // 20 − T: the address is the top T bits of s·4^e
         // stage 1: magnitudes ≤ 512 (U10) and signs
         s1_m: [DFF<Bits<10>>; 3],
         s1_neg: [DFF<Bit>; 3],
@@ -64,7 +71,7 @@ crate::stream_block! {
         s4_m: [DFF<Bits<10>>; 3],
         s4_neg: [DFF<Bit>; 3],
         // stage 5: table address = top bits of s·4^e; |c|·2^e ≤ √(s·4^e) < 1024 (U10)
-        s5_addr: DFF<Bits<10>>,
+        s5_addr: DFF<Bits<T>>,
         s5_c: [DFF<Bits<10>>; 3],
         s5_neg: [DFF<Bit>; 3],
         // stage 6: the table entry
@@ -96,10 +103,11 @@ crate::stream_block! {
     }
 }
 
-impl Default for Normalise {
+impl<const T: usize> Default for Normalise<T> {
     fn default() -> Self {
-        let rom: std::collections::BTreeMap<Bits<10>, Uq1_12> =
-            table().into_iter().enumerate().map(|(k, v)| (Bits::<10>::from(k as u64), Uq1_12::from(v))).collect();
+        assert!((4..=14).contains(&T), "Normalise<T>: a table of 2^4 to 2^14 entries (T = {T})");
+        let rom: std::collections::BTreeMap<Bits<T>, Uq1_12> =
+            table_of(T as u32).into_iter().enumerate().map(|(k, v)| (Bits::<T>::from(k as u64), Uq1_12::from(v))).collect();
         Self {
             clock: Default::default(),
             valid_in: Default::default(),
@@ -111,6 +119,7 @@ impl Default for Normalise {
             norm_y: Default::default(),
             norm_z: Default::default(),
             rsqrt: ROM::new(rom),
+            addr_at: Constant::new(Bits::from(20 - T as u64)),
             s1_m: Default::default(),
             s1_neg: Default::default(),
             s1b_m: Default::default(),
@@ -153,7 +162,7 @@ impl Default for Normalise {
     }
 }
 
-impl Logic for Normalise {
+impl<const T: usize> Logic for Normalise<T> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r);
@@ -280,10 +289,10 @@ impl Logic for Normalise {
             self.s4_e.d.next = 0.into();
         }
         self.s4_s.d.next = self.s3_s.q.val();
-        // stage 5: the table address, the top TABLE_BITS of s·4^e
+        // stage 5: the table address, the top T bits of s·4^e (floor)
         self.w_e2.next = bit_cast::<5, 4>(self.s4_e.q.val()) << 1;
         self.w_sn.next = self.s4_s.q.val() << self.w_e2.val();
-        self.s5_addr.d.next = self.w_sn.val().get_bits::<10>(10);
+        self.s5_addr.d.next = self.w_sn.val().get_bits::<T>(self.addr_at.val().index());
         // stage 6
         self.s6_r.d.next = self.rsqrt.data.val();
         self.norm_x.next = self.s9_out[0].q.val();

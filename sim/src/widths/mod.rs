@@ -160,6 +160,8 @@ impl Parser<'_> {
 #[derive(Clone, Debug, Default)]
 pub struct Decl {
     pub generics: Vec<String>,
+    /// each generic's default (`const D: usize = 0`), for a type written without it
+    pub defaults: Vec<Option<Ty>>,
     pub fields: Vec<(String, Ty)>,
 }
 
@@ -353,7 +355,7 @@ pub fn declarations() -> (HashMap<String, Decl>, HashMap<String, Ty>) {
                 p.i += 1;
             }
             let name = s[start..p.i].to_string();
-            let mut generics = vec![];
+            let (mut generics, mut defaults) = (vec![], vec![]);
             if p.peek() == Some(b'<') {
                 p.i += 1;
                 let Some(g) = p.balanced(b'<', b'>') else { continue };
@@ -362,6 +364,7 @@ pub fn declarations() -> (HashMap<String, Decl>, HashMap<String, Ty>) {
                     let item = item.trim_start_matches("const ").trim();
                     let n = item.split([':', '=']).next().unwrap_or("").trim();
                     generics.push(n.to_string());
+                    defaults.push(item.split_once('=').and_then(|(_, d)| Ty::parse(d.trim())));
                 }
             }
             // to the body's brace, past `: unit(...)` in a stream block; a `;` or `(` first is no block of ours
@@ -384,7 +387,7 @@ pub fn declarations() -> (HashMap<String, Decl>, HashMap<String, Ty>) {
             }
             p.i += 1;
             let Some(body) = p.balanced(b'{', b'}') else { continue };
-            let mut d = Decl { generics, fields: vec![] };
+            let mut d = Decl { generics, defaults, fields: vec![] };
             let mut rest = body.as_str();
             if stream {
                 d.fields.push(("clock".into(), signal("In", Ty::Path("Clock".into(), vec![]))));
@@ -512,7 +515,12 @@ impl Formats {
         for seg in path.split('.').skip(1) {
             let Ty::Path(name, args) = types.last()? else { return None };
             let d = self.decls.get(name)?;
-            let env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
+            let mut env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
+            for (g, def) in d.generics.iter().zip(&d.defaults).skip(args.len()) {
+                if let Some(def) = def {
+                    env.insert(g.clone(), def.clone());
+                }
+            }
             let mut parts = seg.split('$');
             let field = parts.next()?;
             let (_, ft) = d.fields.iter().find(|(n, _)| n == field)?;

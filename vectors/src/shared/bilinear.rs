@@ -72,6 +72,41 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
 
 pub static MODEL: UnitModel = UnitModel::new("bilinear", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
 
+/// The width sweep's settings (blend bits F, bits D dropped between the stages), the unit's own (8, 0) first; the
+/// rtl `Bilinear<F, D>` of each comes from the same list (`bilinear_sizes!(callback)` expands to
+/// `callback! { (8, 0), (7, 0), ... }`).
+#[macro_export]
+macro_rules! bilinear_sizes {
+    ($then:ident) => {
+        $then! { (8, 0), (7, 0), (6, 0), (5, 0), (4, 0), (8, 2), (8, 4), (6, 2) }
+    };
+}
+
+/// The unit with `f` blend bits and `d` dropped: each 8-bit position keeps its top `f` bits (floor), every channel
+/// `exact_channel_with`. At (8, 0) this is the unit's own `exact`.
+pub fn exact_sized(i: &[i64], f: u32, d: u32) -> Vec<i64> {
+    let (u, v) = (i[input::ublend] >> (8 - f), i[input::vblend] >> (8 - f)); // U8 → U(f), floor
+    (0..4).map(|c| exact_channel_with(i[c], i[4 + c], i[8 + c], i[12 + c], u, v, f, d)).collect()
+}
+
+/// The sized unit against the reals at the 8-bit positions it was given (u/256, v/256): every channel of `samples`
+/// random vectors, 8-bit LSB.
+pub fn error_sized(f: u32, d: u32, samples: usize, seed: u64) -> crate::stats::ErrorStats {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut s = crate::stats::ErrorStats::default();
+    for _ in 0..samples {
+        let i = random_inputs(&mut rng);
+        let e = exact_sized(&i, f, d);
+        let (u, v) = (i[input::ublend] as f64 / 256.0, i[input::vblend] as f64 / 256.0);
+        for c in 0..4 {
+            let want = ideal_channel(i[c] as f64, i[4 + c] as f64, i[8 + c] as f64, i[12 + c] as f64, u, v);
+            s.add((e[c] as f64 - want).abs(), || format!("{i:?}"));
+        }
+    }
+    s
+}
+
 /// Random vectors against the reals, the red channel.
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
     let one = (1i64 << F) as f64;
@@ -86,6 +121,19 @@ fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_unit_s_own_size_is_the_unit() {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        for _ in 0..2000 {
+            let i = random_inputs(&mut rng);
+            assert_eq!(exact_sized(&i, 8, 0), exact_ports(&i));
+        }
+        // fewer blend bits cost accuracy: at 4 bits the position's dropped half texel shows
+        let (e8, e4) = (error_sized(8, 0, 20_000, 1), error_sized(4, 0, 20_000, 1));
+        assert!(e8.max <= 0.5 + 1e-9 && e4.mean() > 4.0 * e8.mean(), "{} / {}", e8.mean(), e4.mean());
+    }
 
     #[test]
     fn exact_is_the_ideal_rounded_half_up_for_every_f() {

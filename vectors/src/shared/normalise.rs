@@ -16,6 +16,16 @@ use crate::unit::UnitModel;
 
 pub const TABLE_BITS: u32 = 10;
 pub const NEWTON: u32 = 0;
+
+/// The width sweep's seed-table sizes (bits), the unit's own first; the rtl `Normalise<T>` of each comes from the
+/// same list (`normalise_table_sizes!(callback)` expands to `callback! { 10, 6, ... }`). Newton steps are a model
+/// parameter (`exact_with`) the rtl does not build, so the sweep holds them at 0.
+#[macro_export]
+macro_rules! normalise_table_sizes {
+    ($then:ident) => {
+        $then! { 10, 6, 7, 8, 9, 11, 12 }
+    };
+}
 /// Fraction bits of the table entries (2^12/√m, m ∈ [1, 4) → 2049..4096, U13).
 pub const R_FRAC: u32 = 12;
 
