@@ -236,7 +236,7 @@ crate::stream_block! {
         }
         pub unit: [BilinearUnit<8, F, D>; 4], // R, G, B, A
         valid: Delay<Bit, LATENCY>,           // the valid flag, beside the units
-        blend_at: Constant<Bits<4>>,          // 8 − F: the position's top F bits
+        blend_at: Constant<Bits<3>>,          // 8 − F: the position's top F bits (an index into 8 bits)
     }
 }
 
