@@ -65,17 +65,19 @@ pub struct BilinearUnit<const W: usize, const F: usize, const D: usize = 0> {
     b1: Delay<Bits<32>, { sm_mul::LATENCY }>,
     w_base0: Signal<Local, Bits<32>>, // t00·2^F (U(W+F))
     w_base1: Signal<Local, Bits<32>>, // t01·2^F (U(W+F))
-    // stage 6: a, b ∈ 0..(2^W − 1)·2^F (U(W+F)), exact
-    s6_a: DFF<Bits<32>>,
-    s6_b: DFF<Bits<32>>,
+    // stage 6: a, b ∈ 0..(2^W − 1)·2^F (U(W+F) ≤ U17: W ≤ 8, F ≤ 9), exact; the sums in 32 bits before
+    s6_a: DFF<Bits<17>>,
+    s6_b: DFF<Bits<17>>,
+    w_sa: Signal<Local, Bits<32>>,
+    w_sb: Signal<Local, Bits<32>>,
     // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's 16)
-    s7_e: DFF<SBits<32>>,
-    s7_a: DFF<Bits<32>>,
+    s7_e: DFF<SBits<17>>,
+    s7_a: DFF<Bits<17>>,
     // stages 8–10: |b − a|·v < 2^(W+2F), a carried
-    mul2: SmMul<32>,
-    a: Delay<Bits<32>, { sm_mul::LATENCY }>,
-    w_ad: Signal<Local, Bits<32>>, // a >> D (U(W+F−D)), truncated
-    w_bd: Signal<Local, Bits<32>>, // b >> D, truncated
+    mul2: SmMul<17>,
+    a: Delay<Bits<17>, { sm_mul::LATENCY }>,
+    w_ad: Signal<Local, Bits<17>>, // a >> D (U(W+F−D)), truncated
+    w_bd: Signal<Local, Bits<17>>, // b >> D, truncated
     w_a: Signal<Local, Bits<32>>, // a'·2^F (U(W+2F−D))
     w_wide: Signal<Local, Bits<32>>, // a'·2^F ± |b' − a'|·v ∈ 0..2^(W+2F−D) (≤ 25 bits), exact
     w_r: Signal<Local, Bits<32>>, // that + 2^(2F−D−1), < 2^(W+2F−D), exact
@@ -124,6 +126,8 @@ impl<const W: usize, const F: usize, const D: usize> Default for BilinearUnit<W,
             w_base1: Default::default(),
             s6_a: Default::default(),
             s6_b: Default::default(),
+            w_sa: Default::default(),
+            w_sb: Default::default(),
             s7_e: Default::default(),
             s7_a: Default::default(),
             mul2: Default::default(),
@@ -169,19 +173,21 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         self.w_base0.next = self.b0.q.val() << self.shift_f.val();
         self.w_base1.next = self.b1.q.val() << self.shift_f.val();
         if self.mul0.neg.val() {
-            self.s6_a.d.next = self.w_base0.val() - self.mul0.p.val();
+            self.w_sa.next = self.w_base0.val() - self.mul0.p.val();
         } else {
-            self.s6_a.d.next = self.w_base0.val() + self.mul0.p.val();
+            self.w_sa.next = self.w_base0.val() + self.mul0.p.val();
         }
         if self.mul1.neg.val() {
-            self.s6_b.d.next = self.w_base1.val() - self.mul1.p.val();
+            self.w_sb.next = self.w_base1.val() - self.mul1.p.val();
         } else {
-            self.s6_b.d.next = self.w_base1.val() + self.mul1.p.val();
+            self.w_sb.next = self.w_base1.val() + self.mul1.p.val();
         }
+        self.s6_a.d.next = self.w_sa.val().get_bits::<17>(0); // the weighted mean's U(W+F) ≤ U17: exact
+        self.s6_b.d.next = self.w_sb.val().get_bits::<17>(0); // the same
         // stage 7: b − a, wrapping in 32 bits to its two's complement
         self.w_ad.next = self.s6_a.q.val() >> self.shift_d.val(); // U(W+F) → U(W+F−D), truncated
         self.w_bd.next = self.s6_b.q.val() >> self.shift_d.val(); // the same
-        self.s7_e.d.next = self.w_bd.val() - self.w_ad.val(); // S(W+F−D), wrapping in 32 bits to its two's complement
+        self.s7_e.d.next = self.w_bd.val() - self.w_ad.val(); // S(W+F−D), |b' − a'| < 2^16: wrapping in 17 bits to its two's complement
         self.s7_a.d.next = self.w_ad.val();
         // stages 8–10: |b − a|·v, a beside
         self.mul2.x.next = self.s7_e.q.val();
@@ -189,7 +195,7 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         self.a.d.next = self.s7_a.q.val();
         // stage 11: a'·2^F ± |b' − a'|·v (wide), + 2^(2F−D−1), then bits 2F − D.. (truncation of the rounded sum:
         // round half up)
-        self.w_a.next = self.a.q.val() << self.shift_f.val();
+        self.w_a.next = bit_cast::<32, 17>(self.a.q.val()) << self.shift_f.val(); // U17 in 32, widening, then · 2^F
         if self.mul2.neg.val() {
             self.w_wide.next = self.w_a.val() - self.mul2.p.val();
         } else {

@@ -67,8 +67,9 @@ pub const WAIVED: &[Waived] = &[
     // shared blocks
     w("BilinearUnit", "s6_a.d", Bound, BILINEAR_MEAN),
     w("BilinearUnit", "s6_b.d", Bound, BILINEAR_MEAN),
+    w("BilinearUnit", "w_sa", Bound, BILINEAR_MEAN),
+    w("BilinearUnit", "w_sb", Bound, BILINEAR_MEAN),
     w("BilinearUnit", "s7_e.d", Bound, "b' − a' of two weighted means each below 2^(W + F − D): |b' − a'| < 2^(W + F − D)"),
-    w("BilinearUnit", "w_a", Bound, "a'·2^F with a' < 2^(W + F − D) (a weighted mean): below 2^(W + 2F − D) ≤ 2^25"),
     w("BilinearUnit", "w_wide", Bound, "a'·2^F ± |b' − a'|·v is the weighted mean of a' and b' times 2^F: 0 .. 2^(W + 2F − D)"),
     w("BilinearUnit", "w_r", Bound, "the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
     w("BilinearUnit", "s11_out.d", Bound, "the rounded weighted mean of UW values shifted down by 2F − D is at most 2^W − 1"),
