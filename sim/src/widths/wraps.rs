@@ -135,6 +135,14 @@ pub const WAIVED: &[Waived] = &[
     w("TextureFilter", "out_r", Split, "a byte of the filtered RGBA word"),
     w("TextureFilter", "out_g", Split, "a byte of the filtered RGBA word"),
     w("TextureFilter", "out_b", Split, "a byte of the filtered RGBA word"),
+    w("Tangent", "s2_dd.d", Bound, "d2 − d1 of two S21 values, each sign-extended to 22 bits by an OR on its sign: S22; \
+        intervals lose the sign extension's two sides"),
+    w("Tangent", "s2_ee.d", Bound, "as s2_dd"),
+    w("Tangent", "s2_b1.d", Modular, "d1·256 as the 29-bit pattern of an S21 shifted up: the sign lands in bit 28, so the \
+        pattern is d1·256's two's complement"),
+    w("Tangent", "s2_b2.d", Modular, "as s2_b1"),
+    w("Tangent", "s7_t1.d", Bound, "d1·256 ± |d2 − d1|·V with V ≤ 255 lies between d1·256 and d2·256: S29, inside S30"),
+    w("Tangent", "s7_t2.d", Bound, "as s7_t1"),
     w("Tangent", "s8_t1.d", Bound, "bits 8..28 of a convex combination of S21 values times 2^8: back in S21"),
     w("Tangent", "s8_t2.d", Bound, "as s8_t1"),
     w("BlinnPipeline", "w_d1", Bound, "G − R of two bilinear results, each below 2^25 (a weighted mean): S26"),
