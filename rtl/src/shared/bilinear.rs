@@ -197,12 +197,12 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         // round half up)
         self.w_a.next = bit_cast::<32, 17>(self.a.q.val()) << self.shift_f.val(); // U17 in 32, widening, then · 2^F
         if self.mul2.neg.val() {
-            self.w_wide.next = self.w_a.val() - self.mul2.p.val();
+            self.w_wide.next = self.w_a.val() - self.mul2.p.val(); // U(W+2F−D), exact (a weighted mean)
         } else {
-            self.w_wide.next = self.w_a.val() + self.mul2.p.val();
+            self.w_wide.next = self.w_a.val() + self.mul2.p.val(); // the same
         }
-        self.w_r.next = self.w_wide.val() + self.half.val();
-        self.s11_out.d.next = self.w_r.val().get_bits::<W>(self.shift_out.val().index());
+        self.w_r.next = self.w_wide.val() + self.half.val(); // + 2^(2F−D−1): < 2^26, exact
+        self.s11_out.d.next = self.w_r.val().get_bits::<W>(self.shift_out.val().index()); // >> (2F − D): UW, the rounding's floor
         self.s11_wide.d.next = self.w_wide.val();
         self.out.next = self.s11_out.q.val();
         self.wide.next = self.s11_wide.q.val();
