@@ -289,10 +289,14 @@ pub fn sweep(unit: &str, family: synth::fpga::Family, dir: &std::path::Path, say
 }
 
 /// The indices of the Pareto set (no other point as good in every figure and better in one), and of the cheapest
-/// point whose max error is within `budget`.
+/// point whose max error is within `budget` (at equal cost, the more accurate).
 pub fn pareto(points: &[Point], budget: f64) -> (Vec<usize>, Option<usize>) {
     let front: Vec<usize> = (0..points.len()).filter(|&k| !points.iter().any(|q| q.dominates(&points[k]))).collect();
-    let cheapest = (0..points.len()).filter(|&k| points[k].max <= budget).min_by_key(|&k| points[k].cost());
+    // at equal cost the more accurate (so the choice is always on the Pareto set)
+    let cheapest = (0..points.len()).filter(|&k| points[k].max <= budget).min_by(|&a, &b| {
+        let (p, q) = (&points[a], &points[b]);
+        p.cost().cmp(&q.cost()).then(p.max.total_cmp(&q.max)).then(p.mean.total_cmp(&q.mean))
+    });
     (front, cheapest)
 }
 
@@ -346,5 +350,8 @@ mod tests {
         // a looser budget takes the setting without block RAM; one below every error takes none
         assert_eq!(pareto(&pts, 2.0).1, Some(2));
         assert_eq!(pareto(&pts, 0.1).1, None);
+        // two settings of the same cells: the more accurate is chosen, and it is the one on the Pareto set
+        let same = [p(0.9, 16, 2), p(0.1, 16, 2)];
+        assert_eq!(pareto(&same, 1.0), (vec![1], Some(1)));
     }
 }
