@@ -11,11 +11,7 @@ type PalettePipeline8 = PalettePipeline<8, 9>;
 unit_tests!(palette_pipeline, PalettePipeline8, MODEL);
 
 fn stream(count: usize, seed: u64) -> Vec<Vec<i64>> {
-    use rand::SeedableRng;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut v = (MODEL.hard_cases)();
-    v.extend((0..count).map(|_| (MODEL.random)(&mut rng)));
-    v
+    vectors::unit::generate(&MODEL, false, count, seed).unwrap() // the hard cases, then `count` random vectors
 }
 
 #[test]

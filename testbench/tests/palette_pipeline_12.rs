@@ -10,11 +10,7 @@ type PalettePipeline12 = PalettePipeline<12, 13>;
 unit_tests!(palette_pipeline_12, PalettePipeline12, MODEL_12);
 
 fn stream(count: usize, seed: u64) -> Vec<Vec<i64>> {
-    use rand::SeedableRng;
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut v = (MODEL_12.hard_cases)();
-    v.extend((0..count).map(|_| (MODEL_12.random)(&mut rng)));
-    v
+    vectors::unit::generate(&MODEL_12, false, count, seed).unwrap() // the hard cases, then `count` random vectors
 }
 
 #[test]

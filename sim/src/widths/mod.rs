@@ -677,10 +677,7 @@ pub fn mismatches(m: &UnitModel, inputs: &[Vec<i64>], outputs: &[Vec<u64>]) -> u
     let differ = want
         .iter()
         .zip(outputs)
-        .filter(|(w, o)| {
-            let have: Vec<i64> = o.iter().zip(m.outputs).map(|(&p, port)| vectors::fixed::from_pattern(p, port.bits, port.signed)).collect();
-            have != **w
-        })
+        .filter(|(w, o)| vectors::unit::from_patterns(o, m.outputs) != **w)
         .count();
     differ + want.len().abs_diff(outputs.len())
 }

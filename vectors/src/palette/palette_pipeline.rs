@@ -22,12 +22,16 @@ crate::ports! {
     ],
 }
 
-/// The lookup's vector for one of ours: the pixel, and the built entry packed (r in the low byte) when building.
+/// An entry (r, g, b, α) as the table RAM's 32-bit word holds it, r in the low byte.
+pub fn pack(e: [i64; 4]) -> i64 {
+    e[0] | e[1] << 8 | e[2] << 16 | e[3] << 24
+}
+
+/// The lookup's vector for one of ours: the pixel, and the built entry packed when building.
 fn lookup_vector(v: &[i64]) -> Vec<i64> {
     use input::*;
     let e = table_builder::exact([v[n_x], v[n_y], v[n_z]], [v[l_x], v[l_y], v[l_z]], [v[h_x], v[h_y], v[h_z]], v[conc], [v[spec_r], v[spec_g], v[spec_b]]);
-    let packed = e[0] | e[1] << 8 | e[2] << 16 | e[3] << 24;
-    vec![v[frame], v[idx], v[build], v[b_idx], if v[build] == 1 { packed } else { 0 }]
+    vec![v[frame], v[idx], v[build], v[b_idx], if v[build] == 1 { pack(e) } else { 0 }]
 }
 
 /// The unit over a stream, for indices of `bits` bits, from empty (zero) tables.

@@ -45,8 +45,7 @@ pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
         .zip(taken(inputs))
         .map(|(v, take)| {
             let packed = if take {
-                let e = table_builder::exact_normalised([v[n_x], v[n_y], v[n_z]], [v[l_x], v[l_y], v[l_z]], [v[h_x], v[h_y], v[h_z]], v[conc], [v[spec_r], v[spec_g], v[spec_b]]);
-                e[0] | e[1] << 8 | e[2] << 16 | e[3] << 24
+                palette_pipeline::pack(table_builder::exact_normalised([v[n_x], v[n_y], v[n_z]], [v[l_x], v[l_y], v[l_z]], [v[h_x], v[h_y], v[h_z]], v[conc], [v[spec_r], v[spec_g], v[spec_b]]))
             } else {
                 0
             };
