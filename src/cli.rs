@@ -71,13 +71,13 @@ enum Cmd {
         /// instead of the signals: sweep the unit's width parameters (normalise, sincos, bilinear), print error
         /// against cost with its Pareto set, and mark the cheapest setting whose max error is within this budget
         /// (Sq1.10 LSB of the worst component for normalise, 8-bit LSB for sincos and bilinear)
-        #[arg(long, value_parser = budget)]
+        #[arg(long, value_parser = budget, conflicts_with = "csv")]
         budget: Option<f64>,
         /// with --budget: the part whose cells yosys counts (its family): up5k, ecp5-25f, ecp5-45f or ecp5-85f
-        #[arg(long, default_value = "up5k")]
+        #[arg(long, default_value = "up5k", requires = "budget")]
         target: String,
         /// with --budget: working folder for yosys's files
-        #[arg(long, default_value = "target/synth/widths")]
+        #[arg(long, default_value = "target/synth/widths", requires = "budget")]
         dir: PathBuf,
     },
     /// Exact against ideal for every unit, and the encoders' angular error
@@ -217,8 +217,13 @@ vectors::unit_table!(define_with_unit, $);
 /// A command's output folder, made and tried with a file before any work, refused in one line.
 pub fn writable_folder(out: &std::path::Path) -> Result<(), String> {
     std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    let probe = out.join(".write-test");
-    std::fs::write(&probe, b"").map_err(|e| format!("cannot write into {}: {e}", out.display()))?;
+    try_a_file_in(out).map_err(|e| format!("cannot write into {}: {e}", out.display()))
+}
+
+/// A file written into `dir` and removed.
+fn try_a_file_in(dir: &std::path::Path) -> std::io::Result<()> {
+    let probe = dir.join(format!(".{}.write-test", std::process::id()));
+    std::fs::write(&probe, b"")?;
     let _ = std::fs::remove_file(&probe);
     Ok(())
 }
@@ -233,10 +238,7 @@ pub fn writable_file(path: &std::path::Path) -> Result<(), String> {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => std::path::Path::new("."),
     };
-    let probe = dir.join(format!(".{}.write-test", std::process::id()));
-    std::fs::write(&probe, b"").map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    let _ = std::fs::remove_file(&probe);
-    Ok(())
+    try_a_file_in(dir).map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
 
 pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
@@ -326,7 +328,9 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::Widths { unit: name, budget: Some(b), target, dir, .. } => {
             unit(&name)?;
-            crate::widths::budget(&name, b, synth::fpga::part(&target)?, &dir)?
+            let part = synth::fpga::part(&target)?;
+            writable_folder(&dir)?; // before the first synthesis
+            crate::widths::budget(&name, b, part, &dir)?
         }
         Cmd::Widths { unit: name, count, seed, csv, .. } => {
             let m = unit(&name)?;

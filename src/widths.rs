@@ -280,10 +280,7 @@ pub fn sweep(unit: &str, family: synth::fpga::Family, dir: &std::path::Path, say
                 });
             }
         }
-        _ => {
-            let names: Vec<&str> = SWEPT.iter().map(|s| s.0).collect();
-            return Err(format!("--budget: `{unit}` has no width parameters to sweep; the units that do: {}", names.join(", ")));
-        }
+        _ => return Err(format!("--budget: `{unit}` has no width parameters to sweep")),
     }
     Ok(points)
 }
@@ -302,10 +299,13 @@ pub fn pareto(points: &[Point], budget: f64) -> (Vec<usize>, Option<usize>) {
 
 /// `bumprtl widths <unit> --budget X`: the sweep's table, its Pareto set, and the cheapest setting within X.
 pub fn budget(unit: &str, budget: f64, part: synth::fpga::Part, dir: &std::path::Path) -> Result<(), String> {
-    let (_, what) = SWEPT.iter().find(|s| s.0 == unit).copied().unwrap_or((unit, "?"));
+    let Some(&(_, what)) = SWEPT.iter().find(|s| s.0 == unit) else {
+        let names: Vec<&str> = SWEPT.iter().map(|s| s.0).collect();
+        return Err(format!("--budget: `{unit}` has no width parameters to sweep; the units that do: {}", names.join(", ")));
+    };
     let missing = synth::tools::missing(&["yosys"]);
     if !missing.is_empty() {
-        return Err(format!("--budget costs each setting with yosys, which is missing (`bash .ci/run` installs it)"));
+        return Err("--budget costs each setting with yosys, which is missing (`bash .ci/run` installs it)".into());
     }
     let t = std::time::Instant::now();
     let points = sweep(unit, part.family, dir, &|name| eprintln!("yosys: {name} for {}", part.title))?;

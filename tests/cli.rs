@@ -410,7 +410,14 @@ fn widths_budget_sweeps_the_table_sizes_and_marks_the_cheapest_within_it() {
     // more entries or bits never cost accuracy: the 1,024-entry 12-bit table is the most accurate
     assert!(rows.iter().all(|r| r.1 >= rows[8].1), "{out}");
     // bad budgets and units without width parameters: one line, non-zero
-    for args in [&["widths", "sincos", "--budget", "-1"][..], &["widths", "sincos", "--budget", "nan"], &["widths", "gloss", "--budget", "1"]] {
+    for args in [
+        &["widths", "sincos", "--budget", "-1"][..],
+        &["widths", "sincos", "--budget", "nan"],
+        &["widths", "gloss", "--budget", "1"],
+        &["widths", "sincos", "--budget", "1", "--dir", "/proc/no-such-folder"],
+        &["widths", "sincos", "--budget", "1", "--csv", "w.csv"],
+        &["widths", "sincos", "--target", "ecp5-25f"],
+    ] {
         let (code, _, err) = bumprtl(args);
         assert_ne!(code, 0, "{args:?}");
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
