@@ -44,7 +44,7 @@ pub fn accuracy(directions: usize, samples: usize) {
         let j = filters::fig8(&filters::Grid { side: surface.texels, h: &g }, k as f64, [0.6, 0.5, 0.3], 1e-4);
         println!("{:<40} {:>14.4} {:>14.4} {:>14.4} {:>14.4}", surface.name, j.blinn.0, j.bspline.0, j.blinn.1, j.bspline.1);
     }
-    println!("\nnormalise seed table and Newton steps (model; the rtl has 10 table bits, no Newton step):");
+    println!("\nnormalise seed table and Newton steps (model; the unit has 10 table bits, no Newton step; `Normalise<T, N>` builds each):");
     println!("{:>11} {:>7} {:>24} {:>9}", "table bits", "Newton", "mean err (Sq1.10 LSB)", "max");
     for (t, n, s) in sim::accuracy::normaliser_tradeoff(samples, 3) {
         println!("{t:>11} {n:>7} {:>24.4} {:>9.4}", s.mean(), s.max);

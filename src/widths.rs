@@ -211,9 +211,14 @@ impl Point {
     }
 }
 
+/// Every seed-table size with no Newton step and with one (a second costs three more DSPs than the first and buys
+/// less than a Uq1.12 seed can hold: `bumprtl report` prints the model's figures for it).
 macro_rules! normalise_blocks {
     ($($t:literal),* $(,)?) => {
-        &[$(($t, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t>> as crate::report::SynthFn)),*]
+        &[$(
+            ($t, 0, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 0>> as crate::report::SynthFn),
+            ($t, 1, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 1>> as crate::report::SynthFn),
+        )*]
     };
 }
 
@@ -223,13 +228,20 @@ macro_rules! bilinear_blocks {
     };
 }
 
-const NORMALISE_BLOCKS: &[(u32, crate::report::SynthFn)] = vectors::normalise_table_sizes!(normalise_blocks);
+macro_rules! power_blocks {
+    ($(($lf:literal, $eb:literal)),* $(,)?) => {
+        &[$(($lf, $eb, synth::fpga::synth_unit::<rtl::power::Power<$lf, $eb>> as crate::report::SynthFn)),*]
+    };
+}
+
+const POWER_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::power_sizes!(power_blocks);
+const NORMALISE_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::normalise_table_sizes!(normalise_blocks);
 const BILINEAR_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::bilinear_sizes!(bilinear_blocks);
 
 /// The units with width parameters the sweep knows, and the unit of their budget. The normaliser's is the worst
 /// component's error (Sq1.10 LSB), not the angle: its table sets the length of the result, hardly its direction
 /// (a scale error of 1/√m moves every component alike), and N·L reads the length; the angle is printed beside.
-pub const SWEPT: &[(&str, &str)] = &[("normalise", "Sq1.10 LSB"), ("sincos", "8-bit LSB"), ("bilinear", "8-bit LSB")];
+pub const SWEPT: &[(&str, &str)] = &[("normalise", "Sq1.10 LSB"), ("sincos", "8-bit LSB"), ("bilinear", "8-bit LSB"), ("power", "8-bit LSB")];
 
 /// Every setting of the unit's width parameters: its error from the model (random vectors, or every input where
 /// the unit has few) and its cost from yosys for `family`, each synthesised in its own folder under `dir`.
@@ -242,15 +254,15 @@ pub fn sweep(unit: &str, family: synth::fpga::Family, dir: &std::path::Path, say
     let mut points = vec![];
     match unit {
         "normalise" => {
-            for &(t, f) in NORMALISE_BLOCKS {
-                let (lsb, deg) = vectors::normalise::error(t, 0, SAMPLES, 3);
+            for &(t, n, f) in NORMALISE_BLOCKS {
+                let (lsb, deg) = vectors::normalise::error(t, n, SAMPLES, 3);
                 points.push(Point {
-                    setting: format!("table 2^{t} entries, 0 Newton steps"),
-                    own: t == vectors::normalise::TABLE_BITS,
+                    setting: format!("table 2^{t} entries, {n} Newton step{}", if n == 1 { "" } else { "s" }),
+                    own: (t, n) == (vectors::normalise::TABLE_BITS, vectors::normalise::NEWTON),
                     mean: lsb.mean(),
                     max: lsb.max,
                     also: Some(format!("{:.4}/{:.4} degrees", deg.mean(), deg.max)),
-                    cells: cost(f, format!("normalise_t{t}"))?,
+                    cells: cost(f, format!("normalise_t{t}n{n}"))?,
                 });
             }
         }
@@ -277,6 +289,19 @@ pub fn sweep(unit: &str, family: synth::fpga::Family, dir: &std::path::Path, say
                     max: e.max,
                     also: None,
                     cells: cost(f, format!("bilinear_f{fb}d{d}"))?,
+                });
+            }
+        }
+        "power" => {
+            for &(lf, eb, f) in POWER_BLOCKS {
+                let e = vectors::power::size_error(lf, eb);
+                points.push(Point {
+                    setting: format!("L to 2^-{lf}, {} exp entries", 1u32 << eb),
+                    own: (lf, eb) == (vectors::power::LOG_FRAC, vectors::power::EXP_BITS),
+                    mean: e.mean(),
+                    max: e.max,
+                    also: None,
+                    cells: cost(f, format!("power_l{lf}e{eb}"))?,
                 });
             }
         }

@@ -72,7 +72,7 @@ pub fn encoders(n: usize, seed: u64) -> Vec<Row> {
 
 /// The normaliser's seed-table size and Newton steps against its error (model only; the rtl is T = 10, N = 0).
 pub fn normaliser_tradeoff(samples: usize, seed: u64) -> Vec<(u32, u32, ErrorStats)> {
-    [(6, 0), (8, 0), (10, 0), (12, 0), (6, 1), (8, 1)]
+    [(6, 0), (8, 0), (10, 0), (12, 0), (6, 1), (8, 1), (10, 1), (6, 2)]
         .into_iter()
         .map(|(t, n)| (t, n, vectors::normalise::error(t, n, samples, seed).0))
         .collect()

@@ -20,6 +20,39 @@ macro_rules! every_unit {
 }
 vectors::unit_table!(every_unit);
 
+// The width sweep's other settings of the units that have them (same ports as the unit): held to the same tests.
+macro_rules! normalise_settings {
+    ($($t:literal),* $(,)?) => {
+        fn normalise_settings() -> Vec<(String, Box<dyn Fn() -> (&'static str, usize, Vec<String>)>, Box<dyn Fn() -> Vec<Site>>)> {
+            vec![$(
+                (format!("normalise<{}, 0>", $t), Box::new(|| check::<rtl::normalise::Normalise<$t, 0>>("normalise", &vectors::normalise::MODEL)), Box::new(|| wraps::<rtl::normalise::Normalise<$t, 0>>(&vectors::normalise::MODEL))),
+                (format!("normalise<{}, 1>", $t), Box::new(|| check::<rtl::normalise::Normalise<$t, 1>>("normalise", &vectors::normalise::MODEL)), Box::new(|| wraps::<rtl::normalise::Normalise<$t, 1>>(&vectors::normalise::MODEL))),
+            )*]
+        }
+    };
+}
+vectors::normalise_table_sizes!(normalise_settings);
+
+macro_rules! power_settings {
+    ($(($lf:literal, $eb:literal)),* $(,)?) => {
+        fn power_settings() -> Vec<(String, Box<dyn Fn() -> (&'static str, usize, Vec<String>)>, Box<dyn Fn() -> Vec<Site>>)> {
+            vec![$(
+                (format!("power<{}, {}>", $lf, $eb), Box::new(|| check::<rtl::power::Power<$lf, $eb>>("power", &vectors::power::MODEL)), Box::new(|| wraps::<rtl::power::Power<$lf, $eb>>(&vectors::power::MODEL))),
+            )*]
+        }
+    };
+}
+vectors::power_sizes!(power_settings);
+
+/// Every swept setting's name, its check and its wrap sites.
+fn settings() -> Vec<(String, Box<dyn Fn() -> (&'static str, usize, Vec<String>)>, Box<dyn Fn() -> Vec<Site>>)> {
+    let mut v = normalise_settings();
+    v.extend(power_settings());
+    v
+}
+
+type Site = (String, String, (i128, i128), String);
+
 fn check<U: rtl::StreamUnit>(name: &'static str, m: &vectors::UnitModel) -> (&'static str, usize, Vec<String>) {
     // the hard cases (every one) and 2,000 random vectors after them
     let inputs = vectors::unit::generate(m, false, 2_000, 7).expect("vectors");
@@ -67,6 +100,11 @@ fn every_signal_of_every_unit_has_its_declared_format_and_stays_inside_its_prove
         assert!(n > 0, "{name}: no signal probed");
         failed.extend(bad.into_iter().map(|b| format!("{name}: {b}")));
     }
+    for (setting, check, _) in settings() {
+        let (_, n, bad) = check();
+        assert!(n > 0, "{setting}: no signal probed");
+        failed.extend(bad.into_iter().map(|b| format!("{setting}: {b}")));
+    }
     assert!(failed.is_empty(), "{} signals:\n{}", failed.len(), failed.join("\n"));
 }
 
@@ -90,7 +128,7 @@ fn a_magnitude_written_before_its_sign_test_is_proven_on_both_sides() {
     assert!(!flagged.iter().any(|n| n.contains("s9_out")), "{flagged:?}");
 }
 
-fn wraps<U: rtl::StreamUnit>(m: &vectors::UnitModel) -> Vec<(String, String, (i128, i128), String)> {
+fn wraps<U: rtl::StreamUnit>(m: &vectors::UnitModel) -> Vec<Site> {
     let f = Formats::of::<U>();
     let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
     let signed = |n: &str| f.format(n).is_some_and(|x| x.signed);
@@ -109,7 +147,11 @@ fn no_step_wraps_unless_it_is_listed_with_its_reason() {
     let waived = sim::widths::wraps::WAIVED;
     let mut unlisted: Vec<String> = vec![];
     let mut used = vec![false; waived.len()];
-    for (owner, local, exact, q) in wraps_all() {
+    let mut sites = wraps_all();
+    for (_, _, sites_of) in settings() {
+        sites.extend(sites_of());
+    }
+    for (owner, local, exact, q) in sites {
         match waived.iter().position(|w| w.block == owner && w.signal == local) {
             Some(k) => used[k] = true,
             None => unlisted.push(format!("{owner} {local}: computes {} .. {}, {q}", exact.0, exact.1)),

@@ -46,17 +46,20 @@ fn normalise_rtl_table_is_the_models() {
     }
 }
 
-// Other seed-table sizes of the same block (the width sweep's), three ways on the hard cases and random vectors.
-fn exact_table<const T: u32>(i: &[i64]) -> Vec<i64> {
-    vectors::normalise::exact_with([i[0], i[1], i[2]], T, 0).to_vec()
+// Other seed-table sizes and Newton steps of the same block (the width sweep's), three ways on the hard cases and
+// random vectors.
+fn exact_table<const T: u32, const N: u32>(i: &[i64]) -> Vec<i64> {
+    vectors::normalise::exact_with([i[0], i[1], i[2]], T, N).to_vec()
 }
 
 const fn sized(exact: fn(&[i64]) -> Vec<i64>) -> vectors::UnitModel {
     vectors::UnitModel { exact, accuracy: None, ..MODEL }
 }
 
-static T8: vectors::UnitModel = sized(exact_table::<8>);
-static T12: vectors::UnitModel = sized(exact_table::<12>);
+static T8: vectors::UnitModel = sized(exact_table::<8, 0>);
+static T12: vectors::UnitModel = sized(exact_table::<12, 0>);
+static T6N1: vectors::UnitModel = sized(exact_table::<6, 1>);
+static T8N2: vectors::UnitModel = sized(exact_table::<8, 2>);
 
 fn vectors_of(m: &vectors::UnitModel) -> Vec<Vec<i64>> {
     vectors::unit::generate(m, false, 3_000, 17).unwrap()
@@ -69,4 +72,19 @@ fn other_table_sizes_three_ways() {
     // and they are other sizes: the model's outputs differ from the unit's somewhere
     let v = vectors_of(&MODEL);
     assert!(v.iter().any(|i| (T8.exact)(i) != (MODEL.exact)(i)) && v.iter().any(|i| (T12.exact)(i) != (MODEL.exact)(i)));
+}
+
+#[test]
+fn newton_steps_three_ways() {
+    testbench::three_ways::<Normalise<6, 1>>(&T6N1, &vectors_of(&T6N1), "normalise_t6n1");
+    testbench::three_ways::<Normalise<8, 2>>(&T8N2, &vectors_of(&T8N2), "normalise_t8n2");
+    // a step changes the result: 2^6 entries refined are not 2^6 entries bare, nor the unit's
+    let v = vectors_of(&MODEL);
+    let bare = |i: &Vec<i64>| vectors::normalise::exact_with([i[0], i[1], i[2]], 6, 0).to_vec();
+    assert!(v.iter().any(|i| (T6N1.exact)(i) != bare(i)) && v.iter().any(|i| (T6N1.exact)(i) != (MODEL.exact)(i)));
+}
+
+#[test]
+fn newton_three_is_the_models() {
+    assert_eq!(rtl::normalise::NEWTON_THREE as i64, vectors::normalise::NEWTON_THREE);
 }

@@ -3,6 +3,10 @@
 //! 1 inputs registered; 2 L(x) (table); 3 e = pw·L; 4 g = round(e >> 6), n = min(g >> 8, 9), f = g mod 256;
 //! 5 E(f) (table); 6 w = E >> (n + 6), the barrel shift; 7 y = (w + 1) >> 1, which makes (E + 2^(n+6)) >> (n + 7),
 //! and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K placed the unit at 43.7 MHz.)
+//!
+//! `Power<LF, EB>`: L with LF fraction bits and an exp table of 2^EB entries (`vectors::power::exact_with`); the
+//! unit and the polar pipeline have the defaults, LF = 12 and EB = 8, the other sizes are the width sweep's. The
+//! registers keep the default's widths, which hold every smaller setting.
 
 use crate::delay::Delay;
 use crate::tables::{ExpTable, LogTable};
@@ -13,8 +17,7 @@ pub const LATENCY: usize = 7;
 
 
 crate::stream_block! {
-    #[derive(Default)]
-    pub struct Power: unit("power", LATENCY) {
+    pub struct Power<const LF: usize = 12, const EB: usize = 8>: unit("power", LATENCY) {
         in {
             x: U8,
             pw: U8,
@@ -22,8 +25,11 @@ crate::stream_block! {
         out {
             y: U8,
         }
-        log: LogTable,
-        exp: ExpTable,
+        log: LogTable<LF>,
+        exp: ExpTable<EB>,
+        half: Constant<Bits<23>>, // 2^(k − 1), k = 2 + LF − EB the fraction bits g drops from e
+        f_at: Constant<Bits<5>>, // k: f is g's EB bits from bit k of e + half
+        n_at: Constant<Bits<5>>, // k + EB = 2 + LF: n is the bits above
         s1_x: DFF<U8>,
         s1_pw: DFF<U8>,
         // stage 2: L(x), Uq3.12
@@ -31,9 +37,9 @@ crate::stream_block! {
         s2_pw: DFF<U8>,
         // stage 3: e = pw·L, Uq9.14 (U23)
         s3_e: DFF<Bits<23>>,
-        // stage 4: n (0..9) and f
+        // stage 4: n (0..9) and f (U(EB))
         s4_n: DFF<Bits<4>>,
-        s4_f: DFF<U8>,
+        s4_f: DFF<Bits<EB>>,
         // stage 5: E(f) (U15) and the shift n + 6
         s5_e: DFF<Bits<15>>,
         s5_sh: DFF<Bits<4>>,
@@ -56,7 +62,49 @@ crate::stream_block! {
     }
 }
 
-impl Logic for Power {
+impl<const LF: usize, const EB: usize> Default for Power<LF, EB> {
+    fn default() -> Self {
+        assert!(LF <= 12 && EB < 2 + LF && EB <= 12, "Power<{LF}, {EB}>: L fits U15 for LF ≤ 12; g drops 2 + LF − EB ≥ 1 bits");
+        let k = 2 + LF - EB;
+        Self {
+            clock: Default::default(),
+            valid_in: Default::default(),
+            x: Default::default(),
+            pw: Default::default(),
+            valid_out: Default::default(),
+            y: Default::default(),
+            log: Default::default(),
+            exp: Default::default(),
+            half: Constant::new(Bits::from(1u64 << (k - 1))),
+            f_at: Constant::new(Bits::from(k as u64)),
+            n_at: Constant::new(Bits::from((k + EB) as u64)),
+            s1_x: Default::default(),
+            s1_pw: Default::default(),
+            s2_l: Default::default(),
+            s2_pw: Default::default(),
+            s3_e: Default::default(),
+            s4_n: Default::default(),
+            s4_f: Default::default(),
+            s5_e: Default::default(),
+            s5_sh: Default::default(),
+            s6_w: Default::default(),
+            s7_y: Default::default(),
+            zero_dly: Default::default(),
+            pw0_dly: Default::default(),
+            valid: Default::default(),
+            w_l: Default::default(),
+            w_p: Default::default(),
+            w_e: Default::default(),
+            w_g: Default::default(),
+            w_n: Default::default(),
+            w_w: Default::default(),
+            w_w1: Default::default(),
+            w_y: Default::default(),
+        }
+    }
+}
+
+impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s1_x, s1_pw, s2_l, s2_pw, s3_e, s4_n, s4_f, s5_e, s5_sh, s6_w, s7_y);
@@ -76,10 +124,10 @@ impl Logic for Power {
         self.w_p.next = bit_cast::<16, 8>(self.s2_pw.q.val());
         self.w_e.next = self.w_l.val() * self.w_p.val();
         self.s3_e.d.next = self.w_e.val().get_bits::<23>(0);
-        // stage 4: g = (e + 32) >> 6 (round half up; ≤ 2^23 − 1 + 32 fits U23 since e ≤ 255·32,745), split
-        self.w_g.next = self.s3_e.q.val() + 32;
-        self.s4_f.d.next = self.w_g.val().get_bits::<8>(6);
-        self.w_n.next = self.w_g.val().get_bits::<9>(14);
+        // stage 4: g = (e + 2^(k−1)) >> k (round half up; e ≤ 255·32,745 = 8,349,975 and 2^(k−1) ≤ 128: U23), split
+        self.w_g.next = self.s3_e.q.val() + self.half.val();
+        self.s4_f.d.next = self.w_g.val().get_bits::<EB>(self.f_at.val().index()); // g mod 2^EB
+        self.w_n.next = self.w_g.val().get_bits::<9>(self.n_at.val().index()); // g >> EB ≤ 509 (U9)
         if self.w_n.val() > 9 {
             self.s4_n.d.next = 9.into();
         } else {

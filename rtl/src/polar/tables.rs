@@ -42,46 +42,69 @@ pub fn cos_sign(dc: bool, tb: usize, w: usize) -> Vec<(u64, bool)> {
         .collect()
 }
 
-/// −log2(x/255)·2^12, rounded (U15); entry 0 unused.
+/// −log2(x/255)·2^12, rounded (U15); entry 0 unused: the power unit's own.
 pub fn log2() -> Vec<u64> {
-    (0..256).map(|x| if x == 0 { 0 } else { (-(x as f64 / 255.0).log2() * 4096.0).round() as u64 }).collect()
+    log2_of(12)
 }
 
-/// 255·2^(−f/256)·2^7, rounded (U15).
+/// −log2(x/255)·2^lf, rounded (U15 for lf ≤ 12); entry 0 unused.
+pub fn log2_of(lf: usize) -> Vec<u64> {
+    (0..256).map(|x| if x == 0 { 0 } else { (-(x as f64 / 255.0).log2() * (1u64 << lf) as f64).round() as u64 }).collect()
+}
+
+/// 255·2^(−f/256)·2^7, rounded (U15): the power unit's own.
 pub fn exp2() -> Vec<u64> {
-    (0..256).map(|f| (255.0 * (-(f as f64) / 256.0).exp2() * 128.0).round() as u64).collect()
+    exp2_of(8)
 }
 
-macro_rules! table_block {
-    ($(#[$doc:meta])* $name:ident, $d:literal, $contents:path) => {
-        $(#[$doc])*
-        #[derive(LogicBlock)]
-        pub struct $name {
-            pub address: Signal<In, Bits<8>>,
-            pub data: Signal<Out, Bits<$d>>,
-            rom: ROM<Bits<$d>, 8>,
-        }
-
-        impl Default for $name {
-            fn default() -> Self {
-                let rom = ROM::from($contents().into_iter().map(Bits::<$d>::from));
-                Self { address: Default::default(), data: Default::default(), rom }
-            }
-        }
-
-        impl Logic for $name {
-            #[hdl_gen]
-            fn update(&mut self) {
-                self.rom.address.next = self.address.val();
-                self.data.next = self.rom.data.val();
-            }
-        }
-    };
+/// 255·2^(−f/2^eb)·2^7 for f < 2^eb, rounded (U15).
+pub fn exp2_of(eb: usize) -> Vec<u64> {
+    (0..1u64 << eb).map(|f| (255.0 * (-(f as f64) / (1u64 << eb) as f64).exp2() * 128.0).round() as u64).collect()
 }
 
-table_block!(
-    /// The power unit's logarithm.
-    LogTable, 15, log2);
-table_block!(
-    /// The power unit's exponential.
-    ExpTable, 15, exp2);
+/// The power unit's logarithm, L with `LF` fraction bits (`LF` ≤ 12: U15).
+#[derive(LogicBlock)]
+pub struct LogTable<const LF: usize> {
+    pub address: Signal<In, Bits<8>>,
+    pub data: Signal<Out, Bits<15>>,
+    rom: ROM<Bits<15>, 8>,
+}
+
+impl<const LF: usize> Default for LogTable<LF> {
+    fn default() -> Self {
+        assert!(LF <= 12, "LogTable<{LF}>: L fits U15 with at most 12 fraction bits");
+        let rom = ROM::from(log2_of(LF).into_iter().map(Bits::<15>::from));
+        Self { address: Default::default(), data: Default::default(), rom }
+    }
+}
+
+impl<const LF: usize> Logic for LogTable<LF> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.rom.address.next = self.address.val();
+        self.data.next = self.rom.data.val();
+    }
+}
+
+/// The power unit's exponential, 2^`EB` entries (U15).
+#[derive(LogicBlock)]
+pub struct ExpTable<const EB: usize> {
+    pub address: Signal<In, Bits<EB>>,
+    pub data: Signal<Out, Bits<15>>,
+    rom: ROM<Bits<15>, EB>,
+}
+
+impl<const EB: usize> Default for ExpTable<EB> {
+    fn default() -> Self {
+        let rom = ROM::from(exp2_of(EB).into_iter().map(Bits::<15>::from));
+        Self { address: Default::default(), data: Default::default(), rom }
+    }
+}
+
+impl<const EB: usize> Logic for ExpTable<EB> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.rom.address.next = self.address.val();
+        self.data.next = self.rom.data.val();
+    }
+}

@@ -1,7 +1,8 @@
-//! `normalise`: three S10 components → a unit vector in Sq1.10 (S12), by a seed table of 1/√m (`Normalise<T>`: 2^T
-//! entries of 13 bits, a ROM; the unit `normalise` and every pipeline have T = `TABLE_BITS` = 10, the other sizes
-//! are the width sweep's) and no Newton step; see `vectors::normalise` for the exact recipe and the zero
-//! vector (zero in, zero out). Latency 11: magnitudes; the squarers' operand register (it feeds nothing else, so it
+//! `normalise`: three S10 components → a unit vector in Sq1.10 (S12), by a seed table of 1/√m (`Normalise<T, N>`:
+//! 2^T entries of 13 bits, a ROM, then N Newton steps; the unit `normalise` and every pipeline have T =
+//! `TABLE_BITS` = 10 and N = 0, the other settings are the width sweep's); see `vectors::normalise` for the exact
+//! recipe and the zero vector (zero in, zero out). Each Newton step (`NewtonStep`) sits between the table and the
+//! products and adds `NEWTON_LATENCY` clocks. Latency 11 without one: magnitudes; the squarers' operand register (it feeds nothing else, so it
 //! can sit beside the DSP); squares; their sum; the leading-zero pairs; the shifts and
 //! the table address; the table (the block RAM's own read register); a register after the block RAM, so that its
 //! slow clock-to-output (5.6 ns on an ECP5-6) does not add to the multiplier's delay; the products; the rounding;
@@ -39,7 +40,7 @@ pub fn table_of(t: u32) -> Vec<u64> {
 }
 
 crate::stream_block! {
-    pub struct Normalise<const T: usize = 10>: unit("normalise", LATENCY) {
+    pub struct Normalise<const T: usize = 10, const N: usize = 0>: unit("normalise", LATENCY + N * NEWTON_LATENCY) {
         in {
             vec_x: Sq9_0,
             vec_y: Sq9_0,
@@ -91,6 +92,11 @@ crate::stream_block! {
         // stage 9: the signs back
         s9_out: [DFF<Sq1_10>; 3],
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        // the Newton steps, m beside the table address and the table entry for the first, the valid flag beside them
+        newton: [NewtonStep; N],
+        nw_s5_m: [DFF<Bits<12>>; N],
+        nw_s6_m: [DFF<Bits<12>>; N],
+        nw_valid: [Delay<Bit, NEWTON_LATENCY>; N],
         w_m: [Signal<Local, Bits<16>>; 3],
         w_sq: [Signal<Local, Bits<32>>; 3],
         w_part: Signal<Local, Bits<20>>,
@@ -103,9 +109,10 @@ crate::stream_block! {
     }
 }
 
-impl<const T: usize> Default for Normalise<T> {
+impl<const T: usize, const N: usize> Default for Normalise<T, N> {
     fn default() -> Self {
-        assert!((4..=14).contains(&T), "Normalise<T>: a table of 2^4 to 2^14 entries (T = {T})");
+        assert!((4..=14).contains(&T), "Normalise<T, N>: a table of 2^4 to 2^14 entries (T = {T})");
+        assert!(N <= 2, "Normalise<T, N>: at most 2 Newton steps (N = {N}); a third cannot improve a Uq1.12 seed");
         let rom: std::collections::BTreeMap<Bits<T>, Uq1_12> =
             table_of(T as u32).into_iter().enumerate().map(|(k, v)| (Bits::<T>::from(k as u64), Uq1_12::from(v))).collect();
         Self {
@@ -149,6 +156,10 @@ impl<const T: usize> Default for Normalise<T> {
             s8_neg: Default::default(),
             s9_out: Default::default(),
             valid: Default::default(),
+            newton: std::array::from_fn(|_| NewtonStep::default()),
+            nw_s5_m: std::array::from_fn(|_| DFF::default()),
+            nw_s6_m: std::array::from_fn(|_| DFF::default()),
+            nw_valid: std::array::from_fn(|_| Delay::default()),
             w_m: Default::default(),
             w_sq: Default::default(),
             w_part: Default::default(),
@@ -162,7 +173,7 @@ impl<const T: usize> Default for Normalise<T> {
     }
 }
 
-impl<const T: usize> Logic for Normalise<T> {
+impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r);
@@ -299,6 +310,200 @@ impl<const T: usize> Logic for Normalise<T> {
         self.norm_y.next = self.s9_out[1].q.val();
         self.norm_z.next = self.s9_out[2].q.val();
         self.valid_out.next = self.valid.q.val();
+        // The Newton steps (none when N = 0: these loops are empty, and so is the Verilog they export). Each takes
+        // the table entry, m = s·4^e/2^8 (Uq2.10, floor) and the waiting components from the stage or step before;
+        // the last step's outputs replace stage 6's at stage 6b (the last assignment wins, in rust-hdl and Verilog).
+        for k in 0..N {
+            self.newton[k].clock.next = self.clock.val();
+            self.nw_s5_m[k].clock.next = self.clock.val();
+            self.nw_s6_m[k].clock.next = self.clock.val();
+            self.nw_valid[k].clock.next = self.clock.val();
+            self.nw_s5_m[k].d.next = self.w_sn.val().get_bits::<12>(8); // U20 → Uq2.10 (floor)
+            self.nw_s6_m[k].d.next = self.nw_s5_m[k].q.val();
+            self.newton[k].r.next = self.s6_r.q.val();
+            self.newton[k].m.next = self.nw_s6_m[k].q.val();
+            self.newton[k].c_x.next = self.s6_c[0].q.val();
+            self.newton[k].c_y.next = self.s6_c[1].q.val();
+            self.newton[k].c_z.next = self.s6_c[2].q.val();
+            self.newton[k].neg_x.next = self.s6_neg[0].q.val();
+            self.newton[k].neg_y.next = self.s6_neg[1].q.val();
+            self.newton[k].neg_z.next = self.s6_neg[2].q.val();
+            self.nw_valid[k].d.next = self.valid.q.val();
+        }
+        for k in 1..N {
+            self.newton[k].r.next = self.newton[k - 1].r_out.val();
+            self.newton[k].m.next = self.newton[k - 1].m_out.val();
+            self.newton[k].c_x.next = self.newton[k - 1].c_x_out.val();
+            self.newton[k].c_y.next = self.newton[k - 1].c_y_out.val();
+            self.newton[k].c_z.next = self.newton[k - 1].c_z_out.val();
+            self.newton[k].neg_x.next = self.newton[k - 1].neg_x_out.val();
+            self.newton[k].neg_y.next = self.newton[k - 1].neg_y_out.val();
+            self.newton[k].neg_z.next = self.newton[k - 1].neg_z_out.val();
+            self.nw_valid[k].d.next = self.nw_valid[k - 1].q.val();
+        }
+        for k in 0..N {
+            self.mop_r[0].d.next = self.newton[k].r_out.val();
+            self.mop_r[1].d.next = self.newton[k].r_out.val();
+            self.mop_r[2].d.next = self.newton[k].r_out.val();
+            self.s6b_c[0].d.next = self.newton[k].c_x_out.val();
+            self.s6b_c[1].d.next = self.newton[k].c_y_out.val();
+            self.s6b_c[2].d.next = self.newton[k].c_z_out.val();
+            self.s6b_neg[0].d.next = self.newton[k].neg_x_out.val();
+            self.s6b_neg[1].d.next = self.newton[k].neg_y_out.val();
+            self.s6b_neg[2].d.next = self.newton[k].neg_z_out.val();
+            self.valid_out.next = self.nw_valid[k].q.val();
+        }
     }
 }
+
+/// Clock edges through one `NewtonStep`.
+pub const NEWTON_LATENCY: usize = 5;
+
+/// `NewtonStep`: one Newton step on the seed, `r ← r·(3 − m·r²)/2` (`vectors::normalise::newton_step`: three
+/// 16 × 16 products, each truncated (floor) to the next one's operand), with m, the shifted components and their
+/// signs waiting beside it. Five stages: the squarer's operands; q = r² (Uq2.14); t = m·q (Uq2.14); the last
+/// product's operands, d = 3 − t and r; r' = r·d/2 (Uq1.12).
+#[derive(LogicBlock)]
+pub struct NewtonStep {
+    pub clock: Signal<In, Clock>,
+    /// The seed, Uq1.12 (U13).
+    pub r: Signal<In, Uq1_12>,
+    /// The mantissa s·4^e / 2^8, Uq2.10 ∈ [1, 4) (U12).
+    pub m: Signal<In, Bits<12>>,
+    /// |c|·2^e (U10) and the signs, waiting.
+    pub c_x: Signal<In, Bits<10>>,
+    pub c_y: Signal<In, Bits<10>>,
+    pub c_z: Signal<In, Bits<10>>,
+    pub neg_x: Signal<In, Bit>,
+    pub neg_y: Signal<In, Bit>,
+    pub neg_z: Signal<In, Bit>,
+    /// The refined r, m, the components and signs, NEWTON_LATENCY clocks later.
+    pub r_out: Signal<Out, Uq1_12>,
+    pub m_out: Signal<Out, Bits<12>>,
+    pub c_x_out: Signal<Out, Bits<10>>,
+    pub c_y_out: Signal<Out, Bits<10>>,
+    pub c_z_out: Signal<Out, Bits<10>>,
+    pub neg_x_out: Signal<Out, Bit>,
+    pub neg_y_out: Signal<Out, Bit>,
+    pub neg_z_out: Signal<Out, Bit>,
+    three: Constant<Bits<16>>, // 3 in Uq2.14
+    // (rust-hdl's Verilog export cannot reach into a port array of a sub-block: one port per component)
+    c_wait: [Delay<Bits<10>, NEWTON_LATENCY>; 3],
+    neg_wait: [Delay<Bit, NEWTON_LATENCY>; 3],
+    m_wait: Delay<Bits<12>, NEWTON_LATENCY>,
+    // stage 1: the squarer's operands (`mop_`: they feed the DSP alone), m and r carried
+    mop_ra: DFF<Bits<16>>,
+    mop_rb: DFF<Bits<16>>,
+    s1_m: DFF<Bits<16>>,
+    s1_r: DFF<Uq1_12>,
+    // stage 2: q = r²/2^10 ≤ 2^14 (Uq2.14, U15); m as the next product's operand
+    s2_q: DFF<Bits<15>>,
+    mop_m: DFF<Bits<16>>,
+    s2_r: DFF<Uq1_12>,
+    // stage 3: t = m·q/2^10 < 2^16 (Uq2.14)
+    s3_t: DFF<Bits<16>>,
+    s3_r: DFF<Uq1_12>,
+    // stage 4: the last product's operands, d = 3 − t ≥ 0 (Uq2.14) and r
+    mop_d: DFF<Bits<16>>,
+    mop_r: DFF<Bits<16>>,
+    // stage 5: r·d/2^15 ≤ 4096·3·2^14/2^15 < 2^13 (Uq1.12)
+    s5_r: DFF<Uq1_12>,
+    w_q: Signal<Local, Bits<32>>,
+    w_t: Signal<Local, Bits<32>>,
+    w_p: Signal<Local, Bits<32>>,
+}
+
+impl Default for NewtonStep {
+    fn default() -> Self {
+        Self {
+            clock: Default::default(),
+            r: Default::default(),
+            m: Default::default(),
+            c_x: Default::default(),
+            c_y: Default::default(),
+            c_z: Default::default(),
+            neg_x: Default::default(),
+            neg_y: Default::default(),
+            neg_z: Default::default(),
+            r_out: Default::default(),
+            m_out: Default::default(),
+            c_x_out: Default::default(),
+            c_y_out: Default::default(),
+            c_z_out: Default::default(),
+            neg_x_out: Default::default(),
+            neg_y_out: Default::default(),
+            neg_z_out: Default::default(),
+            three: Constant::new(Bits::from(NEWTON_THREE)),
+            c_wait: Default::default(),
+            neg_wait: Default::default(),
+            m_wait: Default::default(),
+            mop_ra: Default::default(),
+            mop_rb: Default::default(),
+            s1_m: Default::default(),
+            s1_r: Default::default(),
+            s2_q: Default::default(),
+            mop_m: Default::default(),
+            s2_r: Default::default(),
+            s3_t: Default::default(),
+            s3_r: Default::default(),
+            mop_d: Default::default(),
+            mop_r: Default::default(),
+            s5_r: Default::default(),
+            w_q: Default::default(),
+            w_t: Default::default(),
+            w_p: Default::default(),
+        }
+    }
+}
+
+/// 3 in Uq2.14 (`vectors::normalise::NEWTON_THREE`, compared in a test).
+pub const NEWTON_THREE: u64 = 3 << 14;
+
+impl Logic for NewtonStep {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, m_wait, mop_ra, mop_rb, s1_m, s1_r, s2_q, mop_m, s2_r, s3_t, s3_r, mop_d, mop_r, s5_r);
+        for i in 0..3 {
+            self.c_wait[i].clock.next = self.clock.val();
+            self.neg_wait[i].clock.next = self.clock.val();
+        }
+        // the components and signs wait
+        self.c_wait[0].d.next = self.c_x.val();
+        self.c_wait[1].d.next = self.c_y.val();
+        self.c_wait[2].d.next = self.c_z.val();
+        self.neg_wait[0].d.next = self.neg_x.val();
+        self.neg_wait[1].d.next = self.neg_y.val();
+        self.neg_wait[2].d.next = self.neg_z.val();
+        self.c_x_out.next = self.c_wait[0].q.val();
+        self.c_y_out.next = self.c_wait[1].q.val();
+        self.c_z_out.next = self.c_wait[2].q.val();
+        self.neg_x_out.next = self.neg_wait[0].q.val();
+        self.neg_y_out.next = self.neg_wait[1].q.val();
+        self.neg_z_out.next = self.neg_wait[2].q.val();
+        self.m_wait.d.next = self.m.val();
+        self.m_out.next = self.m_wait.q.val();
+        // stage 1: U13 → U16 operands, exact
+        self.mop_ra.d.next = bit_cast::<16, 13>(self.r.val());
+        self.mop_rb.d.next = bit_cast::<16, 13>(self.r.val());
+        self.s1_m.d.next = bit_cast::<16, 12>(self.m.val());
+        self.s1_r.d.next = self.r.val();
+        // stage 2: Uq1.12² = Uq2.24 → Uq2.14 (floor), ≤ 2^14
+        self.w_q.next = self.mop_ra.q.val() * self.mop_rb.q.val();
+        self.s2_q.d.next = self.w_q.val().get_bits::<15>(10);
+        self.mop_m.d.next = self.s1_m.q.val();
+        self.s2_r.d.next = self.s1_r.q.val();
+        // stage 3: Uq2.10 × Uq2.14 = Uq4.24 → Uq2.14 (floor), < 2^16
+        self.w_t.next = self.mop_m.q.val() * bit_cast::<16, 15>(self.s2_q.q.val());
+        self.s3_t.d.next = self.w_t.val().get_bits::<16>(10);
+        self.s3_r.d.next = self.s2_r.q.val();
+        // stage 4: 3 − m·r² (Uq2.14; m·r² ≤ 3 for every seed: `vectors::normalise` tests every mantissa), r widened
+        self.mop_d.d.next = self.three.val() - self.s3_t.q.val();
+        self.mop_r.d.next = bit_cast::<16, 13>(self.s3_r.q.val());
+        // stage 5: Uq1.12 × Uq2.14 = Uq3.26 → Uq1.12 (floor, the halving included), < 2^13
+        self.w_p.next = self.mop_r.q.val() * self.mop_d.q.val();
+        self.s5_r.d.next = self.w_p.val().get_bits::<13>(15);
+        self.r_out.next = self.s5_r.q.val();
+    }
+}
+
 

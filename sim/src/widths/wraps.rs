@@ -66,6 +66,11 @@ const BILINEAR_WIDE: &str = "a bilinear unit's exact result is a weighted mean o
 pub const WAIVED: &[Waived] = &[
     // shared blocks
     w("BilinearUnit", "s6_a.d", Bound, BILINEAR_MEAN),
+    w("Normalise", "s9_out.d", Bound, "with Newton steps (the sweep's `Normalise<T, N>`, N ≥ 1): r' = r·(3 − m·r²)/2 is at most \
+        2^12/√m ≤ 2^12 (the step's maximum over r; `vectors::normalise` tests every mantissa of every size), so |n| ≤ 1024 as \
+        without one; intervals see r' anywhere in its U13"),
+    w("NewtonStep", "mop_d.d", Bound, "3 − m·r² in Uq2.14 is ≥ 0 while m·r² ≤ 3, and every seed table of the sweep gives m·r² ≤ \
+        1.25 (`vectors::normalise` tests every mantissa of every size); intervals see m and r apart"),
     w("BilinearUnit", "s6_b.d", Bound, BILINEAR_MEAN),
     w("BilinearUnit", "w_sa", Bound, BILINEAR_MEAN),
     w("BilinearUnit", "w_sb", Bound, BILINEAR_MEAN),
@@ -156,7 +161,8 @@ pub const WAIVED: &[Waived] = &[
     // polar
     w("PolarShade", "w_d", Modular, "R − Q modulo 256: the angle difference goes round the circle (the seed's subtractor [16])"),
     w("PolarShade", "s10_shade.d", Bound, "a clamp [28]: the low 8 bits only where the sign (bit 10) and bits 9..8 are clear"),
-    w("Power", "s4_f.d", Split, "g's fraction, bits 6..13 (its integer part, bits 14.., is taken beside it)"),
+    w("Power", "s4_f.d", Split, "g's fraction: EB bits of e + 2^(k − 1) from bit k = 2 + LF − EB (6..13 in the unit); its \
+        integer part, above, is taken beside it"),
     w("Power", "s6_w.d", Bound, "E >> (n + 6) with E ≤ 32,640 (the exp table's largest) and n + 6 ≥ 6: ≤ 510; only the \
         shift register's reset zero, seen by bubbles, gives more"),
     w("Power", "w_w1", Bound, "(E >> (n + 6)) + 1 ≤ 511 (s6_w)"),

@@ -11,6 +11,10 @@
 //!   n = g >> 8 (the integer part), f = g mod 256.
 //! - E(f) = round(255·2^(−f/256)·2^7) (U15, E(0) = 32,640).
 //! - y = (E(f) + 2^(n+6)) >> (n + 7), rounded to nearest; n ≥ 9 gives 0 (E < 2^15), so n saturates at 9.
+//!
+//! Those are the unit's table sizes (`LOG_FRAC` = 12, `EXP_BITS` = 8). The width sweep varies both (`exact_with`):
+//! L with `lf` fraction bits (Uq3.lf), e = pw·L with 2 + lf, g rounded (half up) to `eb` fraction bits, and an
+//! exp table of 2^eb entries.
 
 use crate::unit::UnitModel;
 use std::sync::OnceLock;
@@ -24,28 +28,80 @@ crate::ports! {
     ],
 }
 
-/// L(x), entry 0 unused (0).
-pub fn log_table() -> &'static [i64] {
-    static T: OnceLock<Vec<i64>> = OnceLock::new();
-    T.get_or_init(|| (0..256).map(|x| if x == 0 { 0 } else { (-(x as f64 / 255.0).log2() * 4096.0).round() as i64 }).collect())
+/// The unit's fraction bits of L and of g (the exp table's index bits).
+pub const LOG_FRAC: u32 = 12;
+pub const EXP_BITS: u32 = 8;
+
+/// The width sweep's (L fraction bits, exp-table index bits), the unit's own first; the rtl `Power<LF, EB>` of each
+/// comes from the same list (`power_sizes!(callback)` expands to `callback! { (12, 8), ... }`). L fits its U15 for
+/// lf ≤ 12, and rounding g needs eb < 2 + lf.
+#[macro_export]
+macro_rules! power_sizes {
+    ($then:ident) => {
+        $then! { (12, 8), (12, 6), (12, 7), (12, 9), (10, 6), (10, 7), (10, 8), (10, 9), (8, 6), (8, 7), (8, 8), (8, 9) }
+    };
 }
 
-/// E(f).
+/// L(x) with `lf` fraction bits, entry 0 unused (0).
+pub fn log_entry(x: u64, lf: u32) -> i64 {
+    if x == 0 { 0 } else { (-(x as f64 / 255.0).log2() * (1u64 << lf) as f64).round() as i64 }
+}
+
+/// E(f) of a 2^eb-entry table: 255·2^(−f/2^eb)·2^7, rounded (U15).
+pub fn exp_entry(f: u64, eb: u32) -> i64 {
+    (255.0 * (-(f as f64) / (1u64 << eb) as f64).exp2() * 128.0).round() as i64
+}
+
+/// L(x) at the unit's size.
+pub fn log_table() -> &'static [i64] {
+    static T: OnceLock<Vec<i64>> = OnceLock::new();
+    T.get_or_init(|| (0..256).map(|x| log_entry(x, LOG_FRAC)).collect())
+}
+
+/// E(f) at the unit's size.
 pub fn exp_table() -> &'static [i64] {
     static T: OnceLock<Vec<i64>> = OnceLock::new();
-    T.get_or_init(|| (0..256).map(|f| (255.0 * (-(f as f64) / 256.0).exp2() * 128.0).round() as i64).collect())
+    T.get_or_init(|| (0..1 << EXP_BITS).map(|f| exp_entry(f, EXP_BITS)).collect())
 }
 
 pub fn exact(x: i64, pw: i64) -> i64 {
     if x == 0 {
         return if pw == 0 { 255 } else { 0 };
     }
-    let l = log_table()[x as usize]; // U15, Uq3.12
-    let e = pw * l; // U23, Uq9.14
-    let g = (e + 32) >> 6; // round half up to 8 fraction bits: U17, Uq9.8
-    let n = (g >> 8).min(9); // U4, saturated
-    let f = g & 255; // U8
-    (exp_table()[f as usize] + (1 << (n + 6))) >> (n + 7) // U16 >> 7..16, rounded: U8
+    pow_of(pw, log_table()[x as usize], LOG_FRAC, EXP_BITS, |f| exp_table()[f as usize])
+}
+
+/// The power unit with L to `lf` fraction bits and an exp table of 2^eb entries.
+pub fn exact_with(x: i64, pw: i64, lf: u32, eb: u32) -> i64 {
+    if (lf, eb) == (LOG_FRAC, EXP_BITS) {
+        return exact(x, pw);
+    }
+    if x == 0 {
+        return if pw == 0 { 255 } else { 0 };
+    }
+    pow_of(pw, log_entry(x as u64, lf), lf, eb, |f| exp_entry(f as u64, eb))
+}
+
+/// 2^(−p·L) from L = `l` (Uq3.lf): e = pw·l (Uq9.(2 + lf), U23 at most), g = e rounded half up to `eb` fraction
+/// bits (Uq9.eb), n = min(g >> eb, 9), f = g mod 2^eb, y = (E(f) + 2^(n+6)) >> (n + 7) (rounded half up: U8).
+fn pow_of(pw: i64, l: i64, lf: u32, eb: u32, e_of: impl Fn(i64) -> i64) -> i64 {
+    let k = 2 + lf - eb; // fraction bits dropped from e
+    let e = pw * l; // U23, Uq9.(2+lf)
+    let g = (e + (1 << (k - 1))) >> k; // round half up to eb fraction bits: Uq9.eb
+    let n = (g >> eb).min(9); // U4, saturated
+    let f = g & ((1 << eb) - 1); // U(eb)
+    (e_of(f) + (1 << (n + 6))) >> (n + 7) // U16 >> 7..16, rounded: U8
+}
+
+/// Mean and max |error| in 8-bit LSB against `powf` over every (x, p), at L fraction bits `lf` and 2^eb exp entries.
+pub fn size_error(lf: u32, eb: u32) -> crate::stats::ErrorStats {
+    let mut s = crate::stats::ErrorStats::default();
+    for x in 0..256 {
+        for p in 0..256 {
+            s.add((exact_with(x, p, lf, eb) as f64 - ideal(x, p)).abs(), || format!("x={x} p={}", p as f64 / 4.0));
+        }
+    }
+    s
 }
 
 /// `powf`, ×255.
@@ -81,13 +137,7 @@ pub static MODEL: UnitModel = UnitModel::new("power", (INPUTS, OUTPUTS), exact_p
 
 /// Every (x, p) against `powf`.
 fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
-    let mut pw = crate::stats::ErrorStats::default();
-    for x in 0..256 {
-        for p in 0..256 {
-            pw.add((exact(x, p) as f64 - ideal(x, p)).abs(), || format!("x={x} p={}", p as f64 / 4.0));
-        }
-    }
-    vec![crate::unit::Accuracy::new("8-bit LSB against powf, all 2^16 (x, p)", pw)]
+    vec![crate::unit::Accuracy::new("8-bit LSB against powf, all 2^16 (x, p)", size_error(LOG_FRAC, EXP_BITS))]
 }
 
 #[cfg(test)]
@@ -120,6 +170,25 @@ mod tests {
             }
         }
         assert!(worst < 2.0, "{worst}");
+    }
+
+    #[test]
+    fn every_swept_size_keeps_its_ends_and_its_widths() {
+        macro_rules! sizes {
+            ($(($lf:literal, $eb:literal)),*) => { [$(($lf, $eb)),*] };
+        }
+        for (lf, eb) in crate::power_sizes!(sizes) {
+            assert!(eb < 2 + lf && lf <= LOG_FRAC, "({lf}, {eb})");
+            // L fits U15 and e + the rounding half fits U23
+            assert!((1..256).all(|x| log_entry(x, lf) < 1 << 15) && 255 * log_entry(1, lf) + (1 << (1 + lf - eb)) < 1 << 23);
+            for pw in 0..256 {
+                assert_eq!(exact_with(255, pw, lf, eb), 255, "({lf}, {eb}): 1^p");
+                assert_eq!(exact_with(0, pw, lf, eb), if pw == 0 { 255 } else { 0 }, "({lf}, {eb}): 0^p");
+            }
+            for x in 1..256 {
+                assert_eq!(exact_with(x, 0, lf, eb), 255, "({lf}, {eb}): x^0");
+            }
+        }
     }
 
     #[test]

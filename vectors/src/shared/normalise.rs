@@ -5,7 +5,7 @@
 //! 1. `s = x² + y² + z²` (U20: at most 3·512² < 2^20);
 //! 2. `e` = the largest shift with `s·4^e < 2^20`, `sn = s·4^e` ∈ [2^18, 2^20) (mantissa m = sn/2^18 ∈ [1, 4));
 //! 3. `r = table[sn >> (20 − T)]`, the table holding `round(2^12/√m)` at each bin's midpoint (U13);
-//!    optionally refined by Newton steps `r ← r·(3 − m·r²)/2` (model only, to measure what a step buys);
+//!    optionally refined by Newton steps `r ← r·(3 − m·r²)/2`, each product one 16 × 16 multiply (`newton_step`);
 //! 4. `n = round_half_away(c·2^e · r, 11)` per component: c·2^e fits S11 because |c|·2^e ≤ √sn < 2^10.
 //!
 //! A zero vector (s = 0: opposite vertex lights interpolated through their midpoint) gives (0, 0, 0), so that the
@@ -18,8 +18,8 @@ pub const TABLE_BITS: u32 = 10;
 pub const NEWTON: u32 = 0;
 
 /// The width sweep's seed-table sizes (bits), the unit's own first; the rtl `Normalise<T>` of each comes from the
-/// same list (`normalise_table_sizes!(callback)` expands to `callback! { 10, 6, ... }`). Newton steps are a model
-/// parameter (`exact_with`) the rtl does not build, so the sweep holds them at 0.
+/// same list (`normalise_table_sizes!(callback)` expands to `callback! { 10, 6, ... }`). Each size is swept with 0
+/// and 1 Newton steps (`Normalise<T, N>`).
 #[macro_export]
 macro_rules! normalise_table_sizes {
     ($then:ident) => {
@@ -73,12 +73,24 @@ pub fn exact_with(v: [i64; 3], t: u32, newton: u32) -> [i64; 3] {
     let idx = truncate(sn as i64, 20 - t) as u64; // the top t bits of U20 (floor) index a U13, Q1.12
     let mut r = if t == TABLE_BITS { seed_table()[idx as usize] } else { table_entry(idx, t) } as i64;
     for _ in 0..newton {
-        let m = truncate(sn as i64, 8); // U20 → Q2.10 (floor)
-        let t2 = truncate(m * r * r, 10); // Q2.10 × Q1.12² = Q.34 → Q.24 (floor)
-        r = truncate(r * (3 * (1 << 24) - t2), 25); // Q1.12 × Q.24 = Q.36 → Q1.12 (floor, the halving included)
+        r = newton_step(r, sn);
     }
     v.map(|c| round_half_away((c << e) * r, 11)) // S11 × U13 → S24 → Sq1.10
 }
+
+/// One Newton step on the seed, `r ← r·(3 − m·r²)/2`, as the rtl computes it: three products, each of operands of
+/// at most 16 bits (rust-hdl's one multiply, one DSP each), each truncated (floor) to the next one's operand.
+/// r: Uq1.12 (U13); sn: the U20 mantissa s·4^e, m = sn/2^18 ∈ [1, 4).
+pub fn newton_step(r: i64, sn: u64) -> i64 {
+    let m = truncate(sn as i64, 8); // U20 → Uq2.10 (floor), < 2^12
+    let q = truncate(r * r, 10); // Uq1.12² = Uq2.24 → Uq2.14 (floor), ≤ 2^14
+    let t = truncate(m * q, 10); // Uq2.10 × Uq2.14 = Uq4.24 → Uq2.14 (floor), m·r² ≈ 1: t ≈ 2^14, < 2^16
+    let d = NEWTON_THREE - t; // Uq2.14: 3 − m·r², ≥ 0 while m·r² ≤ 3 (every seed table here: ≤ 1.25)
+    truncate(r * d, 15) // Uq1.12 × Uq2.14 = Uq3.26 → Uq1.12 (floor, the halving included)
+}
+
+/// 3 in Uq2.14.
+pub const NEWTON_THREE: i64 = 3 << 14;
 
 /// The unit vector in reals, in Sq1.10 units.
 pub fn ideal(v: [i64; 3]) -> [f64; 3] {
@@ -169,6 +181,32 @@ mod tests {
     #[test]
     fn zero_vector_gives_zero() {
         assert_eq!(exact([0, 0, 0]), [0, 0, 0]);
+    }
+
+    /// The widths `newton_step` (and the rtl's `NewtonStep`) give its products, over every mantissa and every swept
+    /// table size: r² and m·q fit 16-bit operands, 3 − m·r² stays ≥ 0, the result is at most 2^12 and nearer 2^12/√m.
+    #[test]
+    fn a_newton_step_fits_its_widths_for_every_mantissa_and_table() {
+        macro_rules! sizes {
+            ($($t:literal),*) => { [$($t),*] };
+        }
+        for t in crate::normalise_table_sizes!(sizes) {
+            let (mut before, mut after) = (0.0f64, 0.0f64);
+            for sn in (1u64 << 18)..(1 << 20) {
+                let r = table_entry(sn >> (20 - t), t) as i64;
+                let (m, q) = (truncate(sn as i64, 8), truncate(r * r, 10));
+                assert!(r < 1 << 13 && q < 1 << 15 && m < 1 << 12, "T {t} sn {sn}");
+                let tt = truncate(m * q, 10);
+                assert!((0..=NEWTON_THREE).contains(&tt), "T {t} sn {sn}: m·r² = {tt}/2^14");
+                let r1 = newton_step(r, sn);
+                // r·(3 − m·r²)/2 is at most 1/√m (its maximum over r) ≤ 1: the products after it keep their widths
+                assert!((0..=1 << R_FRAC).contains(&r1), "T {t} sn {sn}: {r1}");
+                let ideal = 4096.0 / (sn as f64 / (1u64 << 18) as f64).sqrt();
+                before = before.max((r as f64 - ideal).abs());
+                after = after.max((r1 as f64 - ideal).abs());
+            }
+            assert!(after < before || after <= 2.0, "T {t}: a step leaves {after} LSB from {before}");
+        }
     }
 
     #[test]
