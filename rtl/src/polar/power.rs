@@ -126,12 +126,12 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         self.s3_e.d.next = self.w_e.val().get_bits::<23>(0);
         // stage 4: g = (e + 2^(k−1)) >> k (round half up; e ≤ 255·32,745 = 8,349,975 and 2^(k−1) ≤ 128: U23), split
         self.w_g.next = self.s3_e.q.val() + self.half.val();
-        self.s4_f.d.next = self.w_g.val().get_bits::<EB>(self.f_at.val().index()); // g mod 2^EB
+        self.s4_f.d.next = self.w_g.val().get_bits::<EB>(self.f_at.val().index()); // g mod 2^EB: U(EB), the split
         self.w_n.next = self.w_g.val().get_bits::<9>(self.n_at.val().index()); // g >> EB ≤ 509 (U9)
         if self.w_n.val() > 9 {
             self.s4_n.d.next = 9.into();
         } else {
-            self.s4_n.d.next = self.w_n.val().get_bits::<4>(0);
+            self.s4_n.d.next = self.w_n.val().get_bits::<4>(0); // n ≤ 9: U4, exact
         }
         // stage 5: the exp table; shift = n + 6 ≤ 15
         self.exp.address.next = self.s4_f.q.val();
