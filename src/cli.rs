@@ -130,6 +130,19 @@ enum Cmd {
         #[arg(long, default_value = "out/palette-table")]
         out: PathBuf,
     },
+    /// Render a scene file (scenes/*.toml) through the pipeline it names: the f64 ideal, the bit-exact model,
+    /// Verilator for the whole frame and rust-hdl for a window (traced to a VCD); fails if the rtl and the model differ
+    Render {
+        scene: PathBuf,
+        #[arg(long, default_value = "out/render")]
+        out: PathBuf,
+        /// the rust-hdl window, x,y,w,h in pixels (default: the centre 8 × 8)
+        #[arg(long, value_parser = crate::render::parse_window)]
+        window: Option<sim::render::Window>,
+        /// skip the Verilator path (the rust-hdl window still checks the rtl)
+        #[arg(long)]
+        no_verilator: bool,
+    },
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
         #[arg(long, default_value = "out/demo")]
@@ -395,6 +408,10 @@ pub fn main() -> Result<(), String> {
             };
             crate::palette_table::run(fmax, &out)?
         }
+        Cmd::Render { out, .. } if out.as_os_str() == "-" => {
+            return Err("--out -: render writes pictures and a waveform; name a folder".into())
+        }
+        Cmd::Render { scene, out, window, no_verilator } => crate::render::run(&scene, &out, window, !no_verilator)?,
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())
         }

@@ -13,7 +13,15 @@ use std::path::Path;
 use std::time::Instant;
 use vectors::cart_pipeline::Decode;
 use vectors::polar_encode::Scale;
-use vectors::stats::{angle_deg, ErrorStats};
+use vectors::stats::ErrorStats;
+
+/// The demo's scene, embedded: `scenes/demo.toml`.
+pub const DEMO_SCENE: &str = include_str!("../scenes/demo.toml");
+
+/// The embedded scene, read as any scene file is.
+pub fn demo_scene() -> Result<Scene, String> {
+    Ok(sim::scene_file::parse(DEMO_SCENE, "scenes/demo.toml (embedded)", Path::new("."))?.scene)
+}
 
 /// The polar surface of the demo: h = 1 (a pure dot product, k1 = 0) and p = 4.
 pub const POLAR_H: f64 = 1.0;
@@ -69,32 +77,15 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
     // both Verilator runs, the one-thread and the split one, against the model
     let mism_vl = vl.as_ref().map(|r| r.image.mismatches(&model) + r.single.mismatches(&model)).unwrap_or(0);
     let mism_hdl = hdl.as_ref().map(|h| h.mismatches(&model)).unwrap_or(0);
-    let where_ = render::pixel_at(prep.size);
-    let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
-    let mut normal = pipe.normal(&prep.pixels()[0]).map(|_| ErrorStats::default());
-    let mut surface = pipe.surface_ideal(scene, &prep.ideal[0]).map(|_| ErrorStats::default());
-    for (k, (o, ideal)) in model.outs.iter().zip(&prep.ideal).enumerate() {
-        shade.add((pipe.shade(o) - ideal.shade).abs(), || where_(k));
-        colour.add(colour_err(pipe.colour(o), ideal.rgb), || where_(k));
-        if let (Some(s), Some(n)) = (normal.as_mut(), pipe.normal(&prep.pixels()[k])) {
-            s.add(angle_deg(n, ideal.normal), || where_(k));
-        }
-        if let (Some(s), Some(i)) = (surface.as_mut(), pipe.surface_ideal(scene, ideal)) {
-            s.add((pipe.shade(o) - i).abs(), || where_(k));
-        }
-    }
+    let render::Errors { shade, colour, normal, surface } = render::errors(pipe, scene, &prep, &model);
     Ok(Run { pipe, prep, ideal_s, model, hdl, vl, mism_hdl, mism_vl, shade, colour, normal, surface })
 }
 
-/// Worst channel error of a blended colour against the ideal, 8-bit LSB.
-fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
-    (0..3).map(|c| (a[c] as f64 - ideal[c]).abs()).fold(0.0, f64::max)
-}
 
 pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Option<&Path>, relief: Option<f64>) -> Result<(), String> {
     let wall = Instant::now();
     // a user's map is read (or refused) before anything is written
-    let mut scene = Scene { size, ..Scene::default() };
+    let mut scene = Scene { size, ..demo_scene()? };
     if let Some(path) = height_map {
         let loaded = sim::heightmap::load(path)?;
         for n in &loaded.notes {
@@ -145,7 +136,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         }
         each("shade", &|k| [to8(r.pipe.shade(&r.model.outs[k])); 3])?;
         let hmax = r.colour.max.max(1.0);
-        each("error_heat", &|k| render::heat(colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb), hmax))?;
+        each("error_heat", &|k| render::heat(render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb), hmax))?;
     }
     let pol = &runs[2];
     let smax = sc.surface.max.max(1.0);

@@ -5,6 +5,7 @@ mod demo;
 mod hardware;
 mod palette_table;
 mod quantize;
+mod render;
 mod report;
 mod widths;
 

@@ -423,3 +423,65 @@ fn widths_budget_sweeps_the_table_sizes_and_marks_the_cheapest_within_it() {
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
     }
 }
+
+fn scenes() -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
+}
+
+#[test]
+fn render_runs_a_scene_file_on_every_path_and_the_rtl_equals_the_model() {
+    let d = scratch("render");
+    let scene = scenes().join("directional.toml");
+    let w = synth::tools::missing(&["verilator", "make", "g++"]).is_empty();
+    let (code, out, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", d.to_str().unwrap(), "--window", "100,60,6,5"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("pipeline: cart_pipeline") && out.contains("units: bilinear → cart_decode"), "{out}");
+    assert!(out.contains("rust-hdl, window 6×5 at (100, 60)"), "{out}");
+    for f in ["directional_ideal.png", "directional_model.png", "directional_shade.png", "directional_error_heat.png", "directional_window.vcd"] {
+        assert!(d.join(f).is_file(), "{f}");
+    }
+    assert_eq!(d.join("directional_verilator.png").is_file(), w);
+    // the window's VCD holds its 30 pixels' clocks and the pipeline's signals
+    let vcd = std::fs::read_to_string(d.join("directional_window.vcd")).unwrap();
+    assert!(vcd.contains("$scope") && vcd.contains("valid_out"), "VCD");
+    let model = image::open(d.join("directional_model.png")).unwrap().to_rgb8();
+    assert_eq!(model.dimensions(), (256, 256));
+    if w {
+        assert_eq!(model, image::open(d.join("directional_verilator.png")).unwrap().to_rgb8());
+    }
+    // a window outside the frame, and a malformed one: one line, nothing written
+    for (win, says) in [("250,250,8,8", "outside the 256 × 256 frame"), ("1,2,3", "four whole numbers")] {
+        let e = scratch(&format!("render-bad-{}", win.len()));
+        let (code, _, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", e.to_str().unwrap(), "--window", win, "--no-verilator"]);
+        assert_ne!(code, 0);
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(says), "{err}");
+        assert!(!e.exists() || std::fs::read_dir(&e).unwrap().next().is_none(), "{win}: files written");
+    }
+}
+
+#[test]
+fn a_bad_scene_is_one_line_at_its_place_and_nothing_is_written() {
+    let d = scratch("render-bad-scene");
+    std::fs::create_dir_all(&d).unwrap();
+    let cases: [(&str, &str, &str); 5] = [
+        ("malformed.toml", "size = 64\n[bump\nsource = \"procedural\"\n", "malformed.toml:2:"),
+        ("unknown.toml", "size = 64\ncolor = 1\n[bump]\nsource = \"procedural\"\n", "unknown field `color`"),
+        ("nan.toml", "size = 64\n[bump]\nsource = \"procedural\"\nrelief = nan\n", "nan.toml:4:10:"),
+        ("zero-light.toml", "size = 64\n[bump]\nsource = \"procedural\"\n[light]\nkind = \"directional\"\ndirection = [0, 0, 0]\n", "zero length"),
+        ("no-map.toml", "size = 64\n[bump]\nsource = \"height_map\"\npath = \"absent.png\"\n", "absent.png"),
+    ];
+    for (name, text, says) in cases {
+        let scene = d.join(name);
+        std::fs::write(&scene, text).unwrap();
+        let out = d.join(format!("out-{name}"));
+        let (code, _, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert_ne!(code, 0, "{name}");
+        assert_eq!(err.lines().count(), 1, "{name}: {err}");
+        assert!(err.contains(name) && err.contains(says), "{name}: {err}");
+        assert!(!out.exists(), "{name}: the output folder was made");
+    }
+    let (code, _, err) = bumprtl(&["render", d.join("absent.toml").to_str().unwrap(), "--out", d.join("o").to_str().unwrap()]);
+    assert_ne!(code, 0);
+    assert!(err.contains("absent.toml") && err.contains("cannot read"), "{err}");
+}

@@ -18,6 +18,14 @@ pub const MAX_SIDE: usize = 256;
 /// A map and the lines to tell the user about how it was read.
 pub struct Loaded {
     pub map: HeightMap,
+    /// bits per channel of the file (8 or 16)
+    pub depth: u16,
+    pub notes: Vec<String>,
+}
+
+/// A normal map and the lines to tell the user about how it was read.
+pub struct LoadedNormals {
+    pub map: crate::scene::NormalMap,
     pub notes: Vec<String>,
 }
 
@@ -44,14 +52,19 @@ const PNG_SIGNATURE: &[u8] = b"\x89PNG\r\n\x1a\n";
 pub fn read_png(path: &Path, what: &str) -> Result<image::DynamicImage, String> {
     let name = path.display();
     let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the {what}: {e}"))?;
+    png_from_bytes(&bytes, &name.to_string(), what)
+}
+
+/// The same from bytes in memory (`name` for the errors).
+pub fn png_from_bytes(bytes: &[u8], name: &str, what: &str) -> Result<image::DynamicImage, String> {
     if bytes.is_empty() {
         return Err(format!("{name}: the {what} is an empty file"));
     }
     if !bytes.starts_with(PNG_SIGNATURE) {
         return Err(format!("{name}: not a PNG file (it does not start with the PNG signature)"));
     }
-    let img = image::load_from_memory_with_format(&bytes, image::ImageFormat::Png)
-        .map_err(|e| format!("{name}: not a readable PNG: {e}"))?;
+    let img = image::load_from_memory_with_format(bytes, image::ImageFormat::Png)
+        .map_err(|e| format!("{name}: not a readable PNG: {}", e.to_string().replace('\n', " ")))?;
     let (w, h) = (img.width() as usize, img.height() as usize);
     if w < 2 || h < 2 {
         return Err(format!("{name}: {w} × {h} pixels; a {what} needs at least 2 × 2"));
@@ -152,7 +165,49 @@ pub fn load(path: &Path) -> Result<Loaded, String> {
             .collect();
         HeightMap { side, h: h2 }
     };
-    Ok(Loaded { map, notes })
+    Ok(Loaded { map, depth, notes })
+}
+
+/// A user's tangent-space normal map: an 8-bit RGB(A) PNG (the texel encodings hold 8 bits a component; a 16-bit
+/// map is refused rather than silently cut), OpenGL's green up the image unless `green_down` (DirectX), into the
+/// project's frame (x along u, y out, z down the image); brought to a square power-of-two side up to `MAX_SIDE`
+/// like a height map (each component bilinear, then renormalised), and said so.
+pub fn load_normal_map(path: &Path, green_down: bool) -> Result<LoadedNormals, String> {
+    let name = path.display();
+    let img = read_png(path, "normal map")?;
+    if is_grey(&img) {
+        return Err(format!("{name}: a grey PNG is a height map, not a normal map (source = \"height_map\" reads it)"));
+    }
+    if depth(&img) != 8 {
+        return Err(format!("{name}: a {}-bit normal map where 8 bits are required (the texel encodings hold 8 bits a component); save it as 8-bit", depth(&img)));
+    }
+    let mut notes = vec![];
+    if img.color().has_alpha() {
+        notes.push(format!("{name}: its alpha channel is ignored"));
+    }
+    let (w, h) = (img.width() as usize, img.height() as usize);
+    let (gl, zero) = normal_values(&img, green_down);
+    if zero > 0 {
+        notes.push(format!("{name}: {zero} zero-length texels read as straight out of the surface"));
+    }
+    // OpenGL's (x, y up the image, z out) → the project's (x, y out, z down the image)
+    let n: Vec<[f64; 3]> = gl.iter().map(|g| [g[0], g[2], -g[1]]).collect();
+    let side = w.max(h).next_power_of_two().min(MAX_SIDE);
+    if w == side && h == side {
+        return Ok(LoadedNormals { map: crate::scene::NormalMap { side, n }, notes });
+    }
+    notes.push(format!("{name}: {w} × {h} resampled (bilinear, renormalised) to {side} × {side}: maps are square, 2^n texels up to {MAX_SIDE}"));
+    let s = side as f64;
+    let comp: Vec<Vec<f64>> = (0..3).map(|c| n.iter().map(|v| v[c]).collect()).collect();
+    let out = (0..side * side)
+        .map(|k| {
+            let (x, y) = ((k % side) as f64 + 0.5, (k / side) as f64 + 0.5);
+            let v: [f64; 3] = std::array::from_fn(|c| bilinear(&comp[c], w, h, x * w as f64 / s - 0.5, y * h as f64 / s - 0.5));
+            let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            if l < 1e-9 { [0.0, 1.0, 0.0] } else { v.map(|c| c / l) }
+        })
+        .collect();
+    Ok(LoadedNormals { map: crate::scene::NormalMap { side, n: out }, notes })
 }
 
 #[cfg(test)]

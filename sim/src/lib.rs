@@ -7,6 +7,7 @@ pub mod pipeline;
 pub mod raster;
 pub mod render;
 pub mod scene;
+pub mod scene_file;
 pub mod shortcomings;
 pub mod variants;
 pub mod wave;

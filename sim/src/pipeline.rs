@@ -90,6 +90,8 @@ pub trait RtlPaths: Sync {
     fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image;
     fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
     fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String>;
+    /// The prepared vectors through rust-hdl with every signal traced to `path`: the outputs past the prologue.
+    fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String>;
     fn export(&self, dir: &Path) -> Result<(), String>;
     fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String>;
 }
@@ -116,6 +118,10 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
     }
     fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String> {
         crate::wave::write_vcd::<U>(m, inputs, path).map(|_| ())
+    }
+    fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String> {
+        let got = crate::wave::write_vcd::<U>(m, &p.inputs, path)?;
+        Ok(got[p.prologue.min(got.len())..].iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect())
     }
     fn export(&self, dir: &Path) -> Result<(), String> {
         synth::export::<U>().write(dir).map(|_| ())

@@ -146,3 +146,62 @@ pub fn heat(e: f64, max: f64) -> [u8; 3] {
     let c = |x: f64| (x.clamp(0.0, 1.0) * 255.0) as u8;
     [c(t), c(t - 1.0), c(t - 2.0)]
 }
+
+/// A frame's errors against the scene's ideal: the shade (8-bit units), the blended colour (worst channel), the
+/// normal's angle where the pipeline has one, and the shade against the ideal under the pipeline's one light where
+/// it lights a surface with one.
+pub struct Errors {
+    pub shade: vectors::stats::ErrorStats,
+    pub colour: vectors::stats::ErrorStats,
+    pub normal: Option<vectors::stats::ErrorStats>,
+    pub surface: Option<vectors::stats::ErrorStats>,
+}
+
+/// Worst channel error of a blended colour against the ideal, 8-bit LSB.
+pub fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
+    (0..3).map(|c| (a[c] as f64 - ideal[c]).abs()).fold(0.0, f64::max)
+}
+
+/// The model's frame against the ideal.
+pub fn errors(pipe: &dyn crate::pipeline::Pipeline, scene: &crate::scene::Scene, prep: &Prepared, model: &Image) -> Errors {
+    use vectors::stats::{angle_deg, ErrorStats};
+    let where_ = pixel_at(prep.size);
+    let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
+    let mut normal = pipe.normal(&prep.pixels()[0]).map(|_| ErrorStats::default());
+    let mut surface = pipe.surface_ideal(scene, &prep.ideal[0]).map(|_| ErrorStats::default());
+    for (k, (o, ideal)) in model.outs.iter().zip(&prep.ideal).enumerate() {
+        shade.add((pipe.shade(o) - ideal.shade).abs(), || where_(k));
+        colour.add(colour_err(pipe.colour(o), ideal.rgb), || where_(k));
+        if let (Some(s), Some(n)) = (normal.as_mut(), pipe.normal(&prep.pixels()[k])) {
+            s.add(angle_deg(n, ideal.normal), || where_(k));
+        }
+        if let (Some(s), Some(i)) = (surface.as_mut(), pipe.surface_ideal(scene, ideal)) {
+            s.add((pipe.shade(o) - i).abs(), || where_(k));
+        }
+    }
+    Errors { shade, colour, normal, surface }
+}
+
+/// A rectangle of a frame, in pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    pub x: usize,
+    pub y: usize,
+    pub w: usize,
+    pub h: usize,
+}
+
+impl Window {
+    /// The frame's pixel indices inside the window, row by row.
+    pub fn pixels(&self, size: usize) -> Vec<usize> {
+        (self.y..self.y + self.h).flat_map(|y| (self.x..self.x + self.w).map(move |x| y * size + x)).collect()
+    }
+
+    /// The window's share of a prepared frame: the prologue, then the window's pixels (their ideals beside them).
+    pub fn of(&self, p: &Prepared) -> Prepared {
+        let px = self.pixels(p.size);
+        let mut inputs: Vec<Vec<i64>> = p.inputs[..p.prologue].to_vec();
+        inputs.extend(px.iter().map(|&k| p.inputs[p.prologue + k].clone()));
+        Prepared { size: p.size, inputs, prologue: p.prologue, ideal: px.iter().map(|&k| p.ideal[k]).collect() }
+    }
+}

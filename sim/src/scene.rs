@@ -20,11 +20,37 @@ pub struct Scene {
     pub relief: f64,
     /// A user's height map in place of the procedural one (`tex` is then its side).
     pub map: Option<std::sync::Arc<crate::heightmap::HeightMap>>,
+    /// A user's normal map in place of the heights' normals (`tex` is then its side).
+    pub normal_map: Option<std::sync::Arc<NormalMap>>,
+    /// A directional light (unit, towards the light) in place of the point light at `light_pos`.
+    pub directional: Option<[f64; 3]>,
+    /// One light for the whole surface: every vertex gets the direction at the quad's centre.
+    pub per_surface: bool,
+}
+
+/// A tangent-space normal map in the project's frame (x along u, y out of the surface, z along v, down the image):
+/// `side` × `side` unit normals, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NormalMap {
+    pub side: usize,
+    pub n: Vec<[f64; 3]>,
 }
 
 impl Default for Scene {
     fn default() -> Self {
-        Scene { size: 256, tex: 128, light_pos: [0.2, 0.45, 0.25], conc: 96, src: [236, 196, 140], dst: [16, 20, 36], relief: 6.0, map: None }
+        Scene {
+            size: 256,
+            tex: 128,
+            light_pos: [0.2, 0.45, 0.25],
+            conc: 96,
+            src: [236, 196, 140],
+            dst: [16, 20, 36],
+            relief: 6.0,
+            map: None,
+            normal_map: None,
+            directional: None,
+            per_surface: false,
+        }
     }
 }
 
@@ -59,18 +85,28 @@ impl Scene {
 
     /// Unit direction from quad point (u, v) to the light, tangent space (x along u, y up, z along v).
     pub fn light_dir(&self, u: f64, v: f64) -> [f64; 3] {
+        if let Some(d) = self.directional {
+            return d;
+        }
         let d = [self.light_pos[0] - u, self.light_pos[1], self.light_pos[2] - v];
         let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
         [d[0] / l, d[1] / l, d[2] / l]
     }
 
-    /// The light direction at the quad's four vertices (00, 10, 01, 11).
+    /// The light direction at the quad's four vertices (00, 10, 01, 11); with one light per surface, its direction at
+    /// the centre at all four.
     pub fn vertex_lights(&self) -> [[f64; 3]; 4] {
+        if self.per_surface {
+            return [self.light_dir(0.5, 0.5); 4];
+        }
         [self.light_dir(0.0, 0.0), self.light_dir(1.0, 0.0), self.light_dir(0.0, 1.0), self.light_dir(1.0, 1.0)]
     }
 
     /// The height field sampled at texel centres (in texel units of rise), and its normals.
     pub fn normals(&self) -> Vec<[f64; 3]> {
+        if let Some(m) = &self.normal_map {
+            return m.n.clone();
+        }
         let t = self.tex;
         let n = t as f64;
         let heights: Vec<f64> =

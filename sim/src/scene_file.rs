@@ -1,0 +1,523 @@
+//! Scene files: a scene as TOML (through serde, unknown fields refused), read into a `Scene` and the pipeline that
+//! renders it. Every value is range-checked as it is read, so a bad one is reported at its own line and column;
+//! what depends on several fields (a path only for a map read from a file, gloss only where a pipeline has the
+//! gloss unit) is checked after, and reported at the field that cannot stay. Every failure is one line:
+//! `FILE:LINE:COLUMN: what is wrong`, or for a map the scene names, the scene's line and the map's file.
+//!
+//! ```toml
+//! name = "bumps under a point light"
+//! size = 256                      # output side, pixels (16 to 1024)
+//!
+//! [surface]
+//! shape = "quad"                  # the quad's four vertices carry the lights the light iterator interpolates
+//!
+//! [bump]
+//! source = "procedural"           # procedural | height_map | normal_map
+//! texels = 128                    # procedural: the map's side (a power of two, 4 to 256)
+//! relief = 6.0                    # procedural, height_map: texels of rise from the lowest to the highest
+//! # path = "maps/rock.png"        # height_map (8- or 16-bit grey), normal_map (8-bit RGB)
+//! # green = "opengl"              # normal_map: opengl (green up the image) | directx (green down)
+//! encoding = "seed"               # seed | hemi_oct | polar | polar_dc255 | heights | palette
+//! # palette = 256                 # palette: s_N, 1 to 4,096
+//!
+//! [light]
+//! kind = "point"                  # point | directional
+//! position = [0.2, 0.45, 0.25]    # point: over the quad [0, 1]², y up
+//! # direction = [0.3, 1.0, 0.2]   # directional: towards the light, any length but 0
+//! per = "vertex"                  # vertex (interpolated) | surface (one light, at the centre)
+//!
+//! [material]
+//! gloss = 96                      # C, 0 to 255 (Cartesian and palette pipelines)
+//! src = [236, 196, 140]           # the blend's colours, lit and unlit
+//! dst = [16, 20, 36]
+//! # power = 4.0                   # polar: p, 0 to 63.75 in quarters
+//! # weight = 1.0                  # polar: h, 0 to 1
+//! ```
+
+use crate::scene::Scene;
+use serde::Deserialize;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use toml::Spanned;
+use vectors::cart_pipeline::Decode;
+use vectors::polar_encode::Scale;
+
+/// An integer range-checked as it is read; the error names the range and the value.
+macro_rules! ranged {
+    ($(#[$doc:meta])* $name:ident, $lo:expr, $hi:expr, $what:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+        #[serde(try_from = "i64")]
+        pub struct $name(pub i64);
+
+        impl TryFrom<i64> for $name {
+            type Error = String;
+            fn try_from(v: i64) -> Result<Self, String> {
+                if ($lo..=$hi).contains(&v) {
+                    Ok(Self(v))
+                } else {
+                    Err(format!("{} is {} to {}, not {v}", $what, $lo, $hi))
+                }
+            }
+        }
+    };
+}
+
+ranged!(
+    /// The output image's side, pixels.
+    Side, 16, 1024, "the image side (pixels)");
+ranged!(
+    /// An 8-bit value: a colour channel, the gloss concentration C.
+    Byte, 0, 255, "an 8-bit value");
+ranged!(
+    /// The palette's size s_N: the palette pipelines hold 256 (8-bit indices) or 4,096 (12-bit) entries.
+    PaletteSize, 1, 4096, "the palette size s_N");
+
+/// A procedural map's side: a power of two the height path's memory holds.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "i64")]
+pub struct Texels(pub usize);
+
+impl TryFrom<i64> for Texels {
+    type Error = String;
+    fn try_from(v: i64) -> Result<Self, String> {
+        if (4..=crate::heightmap::MAX_SIDE as i64).contains(&v) && (v as u64).is_power_of_two() {
+            Ok(Self(v as usize))
+        } else {
+            Err(format!("the map's side is a power of two from 4 to {}, not {v}", crate::heightmap::MAX_SIDE))
+        }
+    }
+}
+
+/// A finite number in [lo, hi].
+fn finite_in(v: f64, lo: f64, hi: f64, what: &str) -> Result<f64, String> {
+    if !v.is_finite() {
+        return Err(format!("{what} must be a finite number, not {v}"));
+    }
+    if !(lo..=hi).contains(&v) {
+        return Err(format!("{what} is {lo} to {hi}, not {v}"));
+    }
+    Ok(v)
+}
+
+/// The relief: texels of rise from the map's lowest to its highest, above 0.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "f64")]
+pub struct Relief(pub f64);
+
+impl TryFrom<f64> for Relief {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        let v = finite_in(v, 0.0, 1024.0, "the relief (texels)")?;
+        if v == 0.0 {
+            return Err("the relief must be above 0: a flat map has no bumps to shade".into());
+        }
+        Ok(Self(v))
+    }
+}
+
+/// The polar power p, in quarters (the power unit's pw = 4p is U8).
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "f64")]
+pub struct Power(pub f64);
+
+impl TryFrom<f64> for Power {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        let v = finite_in(v, 0.0, 63.75, "the power p")?;
+        if (v * 4.0).fract() != 0.0 {
+            return Err(format!("the power p is a multiple of 0.25 (the power unit's pw = 4p is an integer), not {v}"));
+        }
+        Ok(Self(v))
+    }
+}
+
+/// The polar weight h of N·L against the ambient 1 − h.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "f64")]
+pub struct Weight(pub f64);
+
+impl TryFrom<f64> for Weight {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        finite_in(v, 0.0, 1.0, "the weight h").map(Self)
+    }
+}
+
+/// Three finite numbers: a position.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "Vec<f64>")]
+pub struct Vec3(pub [f64; 3]);
+
+impl TryFrom<Vec<f64>> for Vec3 {
+    type Error = String;
+    fn try_from(v: Vec<f64>) -> Result<Self, String> {
+        let [x, y, z] = v[..] else { return Err(format!("three numbers [x, y, z], not {}", v.len())) };
+        for c in [x, y, z] {
+            finite_in(c, -1e6, 1e6, "a coordinate")?;
+        }
+        Ok(Self([x, y, z]))
+    }
+}
+
+/// A direction: three finite numbers, not all zero (normalised where it is used).
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "Vec<f64>")]
+pub struct Direction(pub [f64; 3]);
+
+impl TryFrom<Vec<f64>> for Direction {
+    type Error = String;
+    fn try_from(v: Vec<f64>) -> Result<Self, String> {
+        let Vec3(d) = Vec3::try_from(v)?;
+        let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+        if l < 1e-9 {
+            return Err(format!("a light direction of zero length {d:?} points nowhere"));
+        }
+        Ok(Self(d.map(|c| c / l)))
+    }
+}
+
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+pub enum Shape {
+    #[default]
+    Quad,
+}
+
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+pub enum Source {
+    Procedural,
+    HeightMap,
+    NormalMap,
+}
+
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+pub enum Green {
+    /// green up the image (OpenGL, Blender)
+    Opengl,
+    /// green down the image (DirectX, Unreal)
+    Directx,
+}
+
+/// The bump map's encoding, which chooses the pipeline: seed 000's Cartesian texels (the seed's, or hemi-oct with
+/// its decode), seed 000's polar texels (the seed's 256 steps or the Dreamcast toolchains' 255), seed 001's 8-bit
+/// heights, seed 004's palette.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+pub enum Encoding {
+    #[default]
+    Seed,
+    HemiOct,
+    Polar,
+    PolarDc255,
+    Heights,
+    Palette,
+}
+
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+pub enum Filter {
+    Bilinear,
+}
+
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+pub enum LightKind {
+    #[default]
+    Point,
+    Directional,
+}
+
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case")]
+pub enum Per {
+    /// one light direction per vertex, interpolated per pixel (the light iterator)
+    #[default]
+    Vertex,
+    /// one light for the whole surface, its direction at the surface's centre
+    Surface,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceSpec {
+    #[serde(default)]
+    pub shape: Shape,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BumpSpec {
+    pub source: Spanned<Source>,
+    pub path: Option<Spanned<PathBuf>>,
+    pub green: Option<Spanned<Green>>,
+    pub texels: Option<Spanned<Texels>>,
+    pub relief: Option<Spanned<Relief>>,
+    pub encoding: Option<Spanned<Encoding>>,
+    pub palette: Option<Spanned<PaletteSize>>,
+    pub filter: Option<Spanned<Filter>>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightSpec {
+    pub kind: Option<Spanned<LightKind>>,
+    pub position: Option<Spanned<Vec3>>,
+    pub direction: Option<Spanned<Direction>>,
+    pub per: Option<Spanned<Per>>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    pub gloss: Option<Spanned<Byte>>,
+    pub src: Option<[Byte; 3]>,
+    pub dst: Option<[Byte; 3]>,
+    pub power: Option<Spanned<Power>>,
+    pub weight: Option<Spanned<Weight>>,
+}
+
+/// A scene file as written.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    pub name: Option<String>,
+    pub size: Side,
+    #[serde(default)]
+    pub surface: SurfaceSpec,
+    pub bump: Spanned<BumpSpec>,
+    pub light: Option<Spanned<LightSpec>>,
+    #[serde(default)]
+    pub material: MaterialSpec,
+}
+
+/// The pipeline a scene is rendered by, with its settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PipelineKind {
+    Cartesian(Decode),
+    /// the angle scale, the power unit's pw = 4p, and the weight h
+    Polar { scale: Scale, pw: i64, h: f64 },
+    Height,
+    /// s_N
+    Palette(usize),
+}
+
+/// A scene read and checked: the scene, the pipeline for it, and what the reading has to tell.
+pub struct SceneSpec {
+    pub name: String,
+    pub scene: Scene,
+    pub pipeline: PipelineKind,
+    /// one light for the whole surface (the pipeline's own, or asked for)
+    pub per_surface: bool,
+    pub notes: Vec<String>,
+}
+
+/// 1-based line and column of a byte offset.
+fn line_col(text: &str, at: usize) -> (usize, usize) {
+    let at = at.min(text.len());
+    let before = &text[..at];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+/// Where a checked value sits, for its error.
+struct At<'a> {
+    file: &'a str,
+    text: &'a str,
+}
+
+impl At<'_> {
+    fn err(&self, span: Range<usize>, msg: impl std::fmt::Display) -> String {
+        let (l, c) = line_col(self.text, span.start);
+        format!("{}:{l}:{c}: {msg}", self.file)
+    }
+}
+
+/// Parse a scene's text (`file` names it in errors; maps it names are read relative to `dir`).
+pub fn parse(text: &str, file: &str, dir: &Path) -> Result<SceneSpec, String> {
+    let at = At { file, text };
+    let f: SceneFile = toml::from_str(text).map_err(|e| {
+        let msg = e.message().trim().replace('\n', " ");
+        match e.span() {
+            Some(s) => at.err(s, msg),
+            None => format!("{file}: {msg}"),
+        }
+    })?;
+    resolve(f, &at, dir)
+}
+
+/// Read and check a scene file.
+pub fn load(path: &Path) -> Result<SceneSpec, String> {
+    let name = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the scene: {e}"))?;
+    let text = String::from_utf8(bytes).map_err(|e| format!("{name}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))?;
+    let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    parse(&text, &name, &dir)
+}
+
+fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
+    let (bump_span, bump) = (f.bump.span(), f.bump.into_inner());
+    let (light_span, light) = f.light.map_or((0..0, LightSpec::default()), |l| (l.span(), l.into_inner()));
+    let mat = f.material;
+    let source = *bump.source.get_ref();
+    let encoding = bump.encoding.as_ref().map_or(Encoding::Seed, |e| *e.get_ref());
+    let mut notes = vec![];
+    // a field the scene's other choices leave no use for
+    let unused = |field: Option<Range<usize>>, why: &str| -> Result<(), String> {
+        match field {
+            Some(s) => Err(at.err(s, why)),
+            None => Ok(()),
+        }
+    };
+
+    // the bump source
+    let is_map = matches!(source, Source::HeightMap | Source::NormalMap);
+    if !is_map {
+        unused(bump.path.as_ref().map(|p| p.span()), "[bump] path: a procedural map reads no file")?;
+    }
+    if source != Source::NormalMap {
+        unused(bump.green.as_ref().map(|g| g.span()), "[bump] green: only a normal map has a green convention")?;
+    } else {
+        unused(bump.relief.as_ref().map(|r| r.span()), "[bump] relief: a normal map's slopes are its own (relief is for heights)")?;
+    }
+    if source != Source::Procedural {
+        unused(bump.texels.as_ref().map(|t| t.span()), "[bump] texels: a map read from a file has its own size")?;
+    }
+    if encoding != Encoding::Palette {
+        unused(bump.palette.as_ref().map(|p| p.span()), "[bump] palette: only encoding = \"palette\" has a palette size")?;
+    }
+    let mut scene = Scene { size: f.size.0 as usize, ..Scene::default() };
+    match source {
+        Source::Procedural => {
+            if let Some(t) = &bump.texels {
+                scene.tex = t.get_ref().0;
+            }
+            if let Some(r) = &bump.relief {
+                scene.relief = r.get_ref().0;
+            }
+        }
+        Source::HeightMap | Source::NormalMap => {
+            let Some(p) = &bump.path else {
+                return Err(at.err(bump_span, format!("[bump] a {} needs path = \"FILE.png\"", if source == Source::HeightMap { "height map" } else { "normal map" })));
+            };
+            let file = dir.join(p.get_ref());
+            let map_err = |e: String| at.err(p.span(), format!("[bump] path: {e}"));
+            if source == Source::HeightMap {
+                let loaded = crate::heightmap::load(&file).map_err(map_err)?;
+                if encoding == Encoding::Heights && loaded.depth == 16 {
+                    return Err(at.err(p.span(), format!(
+                        "[bump] path: {}: a 16-bit height map where 8 bits are required (seed 001's path stores 8-bit heights); save it as 8-bit",
+                        file.display()
+                    )));
+                }
+                notes.extend(loaded.notes);
+                let side = loaded.map.side;
+                scene.tex = side;
+                scene.relief = bump.relief.as_ref().map_or(side as f64 / 16.0, |r| r.get_ref().0);
+                scene.map = Some(Arc::new(loaded.map));
+            } else {
+                let green_down = bump.green.as_ref().is_some_and(|g| *g.get_ref() == Green::Directx);
+                let loaded = crate::heightmap::load_normal_map(&file, green_down).map_err(map_err)?;
+                notes.extend(loaded.notes);
+                scene.tex = loaded.map.side;
+                scene.normal_map = Some(Arc::new(loaded.map));
+            }
+        }
+    }
+    if encoding == Encoding::Heights && source == Source::NormalMap {
+        return Err(at.err(bump.encoding.as_ref().map_or(bump_span.clone(), |e| e.span()), "[bump] encoding = \"heights\": a normal map has no heights (seed 001's path needs a height map or a procedural one)"));
+    }
+    if encoding == Encoding::Heights && scene.tex > crate::heightmap::MAX_SIDE {
+        return Err(at.err(bump_span, format!("[bump] the height path holds maps up to {0} × {0}", crate::heightmap::MAX_SIDE)));
+    }
+
+    // the light
+    let kind = light.kind.as_ref().map_or(LightKind::Point, |k| *k.get_ref());
+    match kind {
+        LightKind::Point => {
+            unused(light.direction.as_ref().map(|d| d.span()), "[light] direction: a point light has a position (kind = \"directional\" has a direction)")?;
+            if let Some(p) = &light.position {
+                scene.light_pos = p.get_ref().0;
+            }
+        }
+        LightKind::Directional => {
+            unused(light.position.as_ref().map(|p| p.span()), "[light] position: a directional light has a direction (kind = \"point\" has a position)")?;
+            let Some(d) = &light.direction else {
+                return Err(at.err(light_span, "[light] a directional light needs direction = [x, y, z] (towards the light)"));
+            };
+            scene.directional = Some(d.get_ref().0);
+        }
+    }
+    let per = light.per.as_ref().map(|p| *p.get_ref());
+    let per_span = light.per.as_ref().map(|p| p.span());
+
+    // the pipeline, and what it can take
+    let one_light = |name: &str| -> Result<(), String> {
+        match (per, &per_span) {
+            (Some(Per::Vertex), Some(s)) => Err(at.err(s.clone(), format!("[light] per = \"vertex\": the {name} pipeline lights a surface with one light (per = \"surface\")"))),
+            _ => Ok(()),
+        }
+    };
+    let no = |field: Option<Range<usize>>, what: &str, name: &str| unused(field, &format!("[material] {what}: the {name} pipeline has no {what}"));
+    let gloss = mat.gloss.as_ref().map(|g| g.span());
+    let (power, weight) = (mat.power.as_ref().map(|p| p.span()), mat.weight.as_ref().map(|w| w.span()));
+    let pipeline = match encoding {
+        Encoding::Seed | Encoding::HemiOct => {
+            no(power, "power", "Cartesian")?;
+            no(weight, "weight", "Cartesian")?;
+            PipelineKind::Cartesian(if encoding == Encoding::Seed { Decode::Seed } else { Decode::HemiOct })
+        }
+        Encoding::Polar | Encoding::PolarDc255 => {
+            one_light("polar")?;
+            unused(gloss.clone(), "[material] gloss: the polar pipeline has no gloss unit (its power unit is the specular term: set power)")?;
+            let pw = mat.power.as_ref().map_or(16, |p| (p.get_ref().0 * 4.0) as i64);
+            let h = mat.weight.as_ref().map_or(1.0, |w| w.get_ref().0);
+            PipelineKind::Polar { scale: if encoding == Encoding::Polar { Scale::Seed } else { Scale::Dc255 }, pw, h }
+        }
+        Encoding::Heights => {
+            one_light("height")?;
+            no(gloss.clone(), "gloss", "height")?;
+            no(power, "power", "height")?;
+            no(weight, "weight", "height")?;
+            PipelineKind::Height
+        }
+        Encoding::Palette => {
+            no(power, "power", "palette")?;
+            no(weight, "weight", "palette")?;
+            let Some(n) = &bump.palette else {
+                return Err(at.err(bump_span, "[bump] encoding = \"palette\" needs palette = s_N (1 to 4,096)"));
+            };
+            PipelineKind::Palette(n.get_ref().0 as usize)
+        }
+    };
+    if let Some(g) = &mat.gloss {
+        scene.conc = g.get_ref().0;
+    }
+    if let Some(c) = mat.src {
+        scene.src = c.map(|b| b.0);
+    }
+    if let Some(c) = mat.dst {
+        scene.dst = c.map(|b| b.0);
+    }
+    let per_surface = !matches!(pipeline, PipelineKind::Cartesian(_)) || per == Some(Per::Surface);
+    scene.per_surface = per_surface;
+    let name = f.name.unwrap_or_else(|| at.file.to_string());
+    Ok(SceneSpec { name, scene, pipeline, per_surface, notes })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_and_column_count_from_one() {
+        let t = "a = 1\nbb = 2\n";
+        assert_eq!(line_col(t, 0), (1, 1));
+        assert_eq!(line_col(t, 6), (2, 1));
+        assert_eq!(line_col(t, 9), (2, 4));
+    }
+}

@@ -1,0 +1,148 @@
+//! `bumprtl render SCENE.toml --out DIR`: a scene file through the pipeline it names, on four paths: the f64 ideal,
+//! the bit-exact model, Verilator on the exported Verilog for the whole frame (where it is installed), and rust-hdl
+//! for a window, traced to a VCD. The rtl paths must equal the model on every pixel they render; the command fails
+//! if they do not. The scene is read (or refused) before anything is written.
+
+use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar};
+use sim::render::{self, Window};
+use sim::scene_file::{PipelineKind, SceneSpec};
+use std::path::Path;
+use std::time::Instant;
+
+/// The side of the default window: the centre 8 × 8 pixels.
+pub const WINDOW: usize = 8;
+
+/// `x,y,w,h` in pixels.
+pub fn parse_window(s: &str) -> Result<Window, String> {
+    let v: Vec<usize> = s
+        .split(',')
+        .map(|p| p.trim().parse::<usize>().map_err(|_| format!("--window `{s}`: four whole numbers x,y,w,h")))
+        .collect::<Result<_, _>>()?;
+    let [x, y, w, h] = v[..] else { return Err(format!("--window `{s}`: four whole numbers x,y,w,h, not {}", v.len())) };
+    if w == 0 || h == 0 {
+        return Err(format!("--window `{s}`: an empty window ({w} × {h})"));
+    }
+    Ok(Window { x, y, w, h })
+}
+
+/// The pipeline a scene names, built for it.
+pub fn pipeline(spec: &SceneSpec) -> Box<dyn Pipeline> {
+    match spec.pipeline {
+        PipelineKind::Cartesian(decode) => Box::new(Cartesian { decode }),
+        PipelineKind::Polar { scale, pw, h } => Box::new(Polar { scale, pw, h }),
+        PipelineKind::Height => Box::new(Height::new(&spec.scene)),
+        PipelineKind::Palette(n) => Box::new(Palette::new(n, &spec.scene)),
+    }
+}
+
+pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> Result<(), String> {
+    let wall = Instant::now();
+    let spec = sim::scene_file::load(path)?;
+    let scene = &spec.scene;
+    let size = scene.size;
+    let win = window.unwrap_or(Window { x: (size - WINDOW) / 2, y: (size - WINDOW) / 2, w: WINDOW, h: WINDOW });
+    if win.x + win.w > size || win.y + win.h > size {
+        return Err(format!("--window {},{},{},{}: outside the {size} × {size} frame", win.x, win.y, win.w, win.h));
+    }
+    let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
+    crate::cli::writable_folder(out)?;
+    for n in &spec.notes {
+        println!("{n}");
+    }
+    let stem = path.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
+    let pipe = pipeline(&spec);
+    let (m, rtl) = (pipe.model(), pipe.rtl());
+    println!("scene: {} ({}), {size} × {size}", spec.name, path.display());
+    println!("pipeline: {} ({}, latency {} clocks): {}", m.name, pipe.label(), rtl.latency(), pipe.describe(scene));
+    println!("  units: {}", pipe.units().join(" → "));
+
+    let t = Instant::now();
+    let prep = pipe.prepare(scene);
+    let ideal_s = t.elapsed().as_secs_f64();
+    let model = render::model(m, &prep);
+    let n = size * size;
+
+    // Verilator, the whole frame
+    let vl = if verilator && no_vl.is_empty() {
+        Some(rtl.verilator(m, &prep, &out.join("verilator").join(m.name), 2)?)
+    } else {
+        None
+    };
+    // rust-hdl, the window, traced
+    let wprep = win.of(&prep);
+    let vcd = out.join(format!("{stem}_window.vcd"));
+    let t = Instant::now();
+    let hdl = rtl.traced(m, &wprep, &vcd)?;
+    let hdl_s = t.elapsed().as_secs_f64();
+    let wpx = win.pixels(size);
+    let mism_hdl = wpx.iter().zip(&hdl).filter(|(&k, o)| model.outs[k] != **o).count() + wpx.len().abs_diff(hdl.len());
+    let mism_vl = vl.as_ref().map(|v| v.image.mismatches(&model) + v.single.mismatches(&model));
+
+    // pictures
+    let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;
+    let png = |what: &str, f: &dyn Fn(usize) -> [u8; 3]| render::write_png(&out.join(format!("{stem}_{what}.png")), size, f);
+    png("ideal", &|k| prep.ideal[k].rgb.map(to8))?;
+    png("model", &|k| pipe.colour(&model.outs[k]))?;
+    if let Some(v) = &vl {
+        png("verilator", &|k| pipe.colour(&v.image.outs[k]))?;
+    }
+    png("shade", &|k| [to8(pipe.shade(&model.outs[k])); 3])?;
+    let e = render::errors(pipe.as_ref(), scene, &prep, &model);
+    let hmax = e.colour.max.max(1.0);
+    png("error_heat", &|k| render::heat(render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb), hmax))?;
+
+    println!();
+    println!("{:<44} {:>14} {:>12}", "path", "pixels/s", "mismatches");
+    println!("{:<44} {:>14.0} {:>12}", "f64 ideal (set-up included)", n as f64 / ideal_s.max(1e-9), "-");
+    println!("{:<44} {:>14.0} {:>12}", "bit-exact model", model.pixels_per_second(), "-");
+    match &vl {
+        Some(v) => println!("{:<44} {:>14.0} {:>12}", format!("Verilator, whole frame, {} threads", v.threads), v.image.pixels_per_second(), mism_vl.unwrap_or(0)),
+        None if !verilator => println!("Verilator: skipped (--no-verilator)"),
+        None => println!("Verilator: skipped, {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", ")),
+    }
+    println!(
+        "{:<44} {:>14.0} {:>12}",
+        format!("rust-hdl, window {}×{} at ({}, {}), traced", win.w, win.h, win.x, win.y),
+        wpx.len() as f64 / hdl_s.max(1e-9),
+        mism_hdl
+    );
+    println!();
+    let row = |name: &str, s: &vectors::stats::ErrorStats| println!("{name:<44} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax);
+    println!("{:<44} {:>9} {:>9}   max at", "the model against the scene's ideal", "mean", "max");
+    row(&format!("shade, 8-bit LSB ({})", pipe.shade_name()), &e.shade);
+    row("blended colour, 8-bit LSB", &e.colour);
+    if let Some(s) = &e.normal {
+        row("normal angle, degrees", s);
+    }
+    if let Some(s) = &e.surface {
+        row("shade vs the ideal under its one light", s);
+    }
+    println!();
+    let vl_png = if vl.is_some() { format!("{stem}_verilator.png, ") } else { String::new() };
+    println!("wrote {}: {stem}_{{ideal,model,shade,error_heat}}.png, {vl_png}{stem}_window.vcd", out.display());
+    println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
+    let bad = mism_hdl + mism_vl.unwrap_or(0);
+    if bad != 0 {
+        return Err(format!(
+            "the rtl disagrees with the model: rust-hdl {mism_hdl} of {} window pixels, Verilator {} of {n} (each of two runs)",
+            wpx.len(),
+            mism_vl.map_or("-".into(), |v| v.to_string())
+        ));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_window_is_four_whole_numbers_and_not_empty() {
+        assert_eq!(parse_window("1,2,3,4"), Ok(Window { x: 1, y: 2, w: 3, h: 4 }));
+        assert_eq!(parse_window(" 0, 0 ,8,8"), Ok(Window { x: 0, y: 0, w: 8, h: 8 }));
+        for bad in ["1,2,3", "1,2,3,4,5", "a,b,c,d", "1,2,0,4", "-1,0,4,4", ""] {
+            let e = parse_window(bad).unwrap_err();
+            assert!(e.contains("--window") && !e.contains('\n'), "{e}");
+        }
+    }
+}
