@@ -5,7 +5,8 @@ use rtl::StreamUnit;
 use std::path::Path;
 use vectors::UnitModel;
 
-/// Trace `inputs` through the unit into `path` (written whole, or not at all). Returns the outputs seen.
+/// Trace `inputs` through the unit into `path` (written whole, or not at all), with its GTKWave save file beside it
+/// (`crate::gtkw`). Returns the outputs seen.
 pub fn write_vcd<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<Vec<Vec<u64>>, String> {
     let tmp = path.with_extension("vcd.partial");
     let file = std::fs::File::create(&tmp).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
@@ -17,6 +18,7 @@ pub fn write_vcd<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], path: &P
         }
     };
     std::fs::rename(&tmp, path).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    crate::gtkw::write_beside(path, &crate::widths::Formats::of::<U>())?;
     Ok(got)
 }
 
