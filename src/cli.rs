@@ -143,6 +143,9 @@ enum Cmd {
         #[arg(long)]
         no_verilator: bool,
     },
+    /// The hard cases the seeds warn about, unit by unit: what they ask, what the rtl does (rust-hdl, held to the
+    /// model), pass or fail, as a Markdown table; fails if any row fails
+    Hardcases,
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
         #[arg(long, default_value = "out/demo")]
@@ -412,6 +415,10 @@ pub fn main() -> Result<(), String> {
             return Err("--out -: render writes pictures and a waveform; name a folder".into())
         }
         Cmd::Render { scene, out, window, no_verilator } => crate::render::run(&scene, &out, window, !no_verilator)?,
+        Cmd::Hardcases => crate::hardcases::run(&|name, inputs| {
+            let m = unit(name)?;
+            with_unit!(name, U => Ok(crate::hardcases::rtl_outputs::<U>(m, inputs)))
+        })?,
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())
         }

@@ -2,6 +2,7 @@
 
 mod cli;
 mod demo;
+mod hardcases;
 mod hardware;
 mod palette_table;
 mod quantize;

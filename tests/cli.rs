@@ -485,3 +485,17 @@ fn a_bad_scene_is_one_line_at_its_place_and_nothing_is_written() {
     assert_ne!(code, 0);
     assert!(err.contains("absent.toml") && err.contains("cannot read"), "{err}");
 }
+
+#[test]
+fn hardcases_prints_every_row_passing_and_covers_what_the_seeds_warn_about() {
+    let (code, out, err) = bumprtl(&["hardcases"]);
+    assert_eq!(code, 0, "{err}{out}");
+    let rows: Vec<&str> = out.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| unit") && !l.starts_with("| ---")).collect();
+    assert!(rows.len() >= 33, "{} rows", rows.len());
+    assert!(rows.iter().all(|r| r.ends_with("| pass |")), "{out}");
+    for covered in ["invalid texel", "texel 255", "below the horizon", "on the horizon", "180° apart", "120° apart", "zero-length vector",
+        "R's wrap", "steepest step", "s_N = 1", "most negative"] {
+        assert!(rows.iter().any(|r| r.contains(covered)), "no row for {covered}");
+    }
+    assert!(out.contains(&format!("{} hard cases over", rows.len())) && out.contains(" 0 fail"), "{out}");
+}
