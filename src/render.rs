@@ -40,9 +40,10 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     let spec = sim::scene_file::load(path)?;
     let scene = &spec.scene;
     let size = scene.size;
-    let win = window.unwrap_or(Window { x: (size - WINDOW) / 2, y: (size - WINDOW) / 2, w: WINDOW, h: WINDOW });
-    if win.x + win.w > size || win.y + win.h > size {
-        return Err(format!("--window {},{},{},{}: outside the {size} × {size} frame", win.x, win.y, win.w, win.h));
+    if let Some(w) = window {
+        if w.x + w.w > size || w.y + w.h > size {
+            return Err(format!("--window {},{},{},{}: outside the {size} × {size} frame", w.x, w.y, w.w, w.h));
+        }
     }
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
     crate::cli::writable_folder(out)?;
@@ -60,7 +61,18 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     let prep = pipe.prepare(scene);
     let ideal_s = t.elapsed().as_secs_f64();
     let model = render::model(m, &prep);
-    let n = size * size;
+    let n = prep.ideal.len();
+    // the window: the one asked for, or 8 × 8 round the covered pixel nearest the frame's centre
+    let win = window.unwrap_or_else(|| {
+        let c = (size / 2) as i64;
+        let near = (0..n).map(|k| prep.frame_index(k)).min_by_key(|&at| {
+            let (x, y) = ((at % size) as i64, (at / size) as i64);
+            (x - c).pow(2) + (y - c).pow(2)
+        });
+        let (x, y) = near.map_or((size / 2, size / 2), |at| (at % size, at / size));
+        let corner = |v: usize| v.saturating_sub(WINDOW / 2).min(size - WINDOW);
+        Window { x: corner(x), y: corner(y), w: WINDOW, h: WINDOW }
+    });
 
     // Verilator, the whole frame
     let vl = if verilator && no_vl.is_empty() {
@@ -70,17 +82,24 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     };
     // rust-hdl, the window, traced
     let wprep = win.of(&prep);
+    if wprep.ideal.is_empty() {
+        return Err(format!("--window {},{},{},{}: the surface covers no pixel of it", win.x, win.y, win.w, win.h));
+    }
     let vcd = out.join(format!("{stem}_window.vcd"));
     let t = Instant::now();
     let hdl = rtl.traced(m, &wprep, &vcd)?;
     let hdl_s = t.elapsed().as_secs_f64();
-    let wpx = win.pixels(size);
+    let wpx = win.pixels(&prep);
     let mism_hdl = wpx.iter().zip(&hdl).filter(|(&k, o)| model.outs[k] != **o).count() + wpx.len().abs_diff(hdl.len());
     let mism_vl = vl.as_ref().map(|v| v.image.mismatches(&model) + v.single.mismatches(&model));
 
     // pictures
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;
-    let png = |what: &str, f: &dyn Fn(usize) -> [u8; 3]| render::write_png(&out.join(format!("{stem}_{what}.png")), size, f);
+    let by = prep.by_place();
+    // each place of the frame: its pixel's colour, or the background
+    let png = |what: &str, f: &dyn Fn(usize) -> [u8; 3]| {
+        render::write_png(&out.join(format!("{stem}_{what}.png")), size, |at| by[at].map_or(render::BACKGROUND, f))
+    };
     png("ideal", &|k| prep.ideal[k].rgb.map(to8))?;
     png("model", &|k| pipe.colour(&model.outs[k]))?;
     if let Some(v) = &vl {
@@ -92,6 +111,7 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     png("error_heat", &|k| render::heat(render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb), hmax))?;
 
     println!();
+    println!("{n} pixels of the surface in the {size} × {size} frame");
     println!("{:<44} {:>14} {:>12}", "path", "pixels/s", "mismatches");
     println!("{:<44} {:>14.0} {:>12}", "f64 ideal (set-up included)", n as f64 / ideal_s.max(1e-9), "-");
     println!("{:<44} {:>14.0} {:>12}", "bit-exact model", model.pixels_per_second(), "-");

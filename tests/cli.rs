@@ -499,3 +499,26 @@ fn hardcases_prints_every_row_passing_and_covers_what_the_seeds_warn_about() {
     }
     assert!(out.contains(&format!("{} hard cases over", rows.len())) && out.contains(" 0 fail"), "{out}");
 }
+
+#[test]
+fn render_draws_a_torus_and_a_sphere_on_a_background_and_the_rtl_equals_the_model() {
+    let w = synth::tools::missing(&["verilator", "make", "g++"]).is_empty();
+    for stem in ["torus", "sphere_polar"] {
+        let d = scratch(&format!("render-{stem}"));
+        let scene = scenes().join(format!("{stem}.toml"));
+        let (code, out, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", d.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+        let covered: usize = out.lines().find_map(|l| l.strip_suffix(" pixels of the surface in the 256 × 256 frame")).unwrap().parse().unwrap();
+        // a torus or a sphere of radius 1 in a square of side 2.2 covers far from all of the frame
+        assert!((15_000..50_000).contains(&covered), "{stem}: {covered}");
+        let img = image::open(d.join(format!("{stem}_model.png"))).unwrap().to_rgb8();
+        let background = img.pixels().filter(|p| p.0 == [12, 12, 16]).count();
+        assert!(background >= 65_536 - covered && img.get_pixel(0, 0).0 == [12, 12, 16], "{stem}: {background}");
+        if w {
+            assert_eq!(img, image::open(d.join(format!("{stem}_verilator.png"))).unwrap().to_rgb8(), "{stem}");
+            assert!(out.contains("Verilator, whole frame"), "{out}");
+        }
+        // the default window sits on the surface
+        assert!(out.lines().any(|l| l.starts_with("rust-hdl, window 8×8") && l.trim_end().ends_with(" 0")), "{out}");
+    }
+}

@@ -10,6 +10,7 @@ pub mod render;
 pub mod scene;
 pub mod scene_file;
 pub mod shortcomings;
+pub mod surface;
 pub mod variants;
 pub mod wave;
 pub mod widths;

@@ -34,11 +34,27 @@ pub struct Prepared {
     pub inputs: Vec<Vec<i64>>,
     pub prologue: usize,
     pub ideal: Vec<Ideal>,
+    /// each pixel's place in the frame (row by row); empty when the pixels fill the frame in order
+    pub at: Vec<usize>,
 }
 
 impl Prepared {
     pub fn new(size: usize) -> Prepared {
-        Prepared { size, inputs: vec![], prologue: 0, ideal: vec![] }
+        Prepared { size, inputs: vec![], prologue: 0, ideal: vec![], at: vec![] }
+    }
+
+    /// Pixel k's place in the frame.
+    pub fn frame_index(&self, k: usize) -> usize {
+        if self.at.is_empty() { k } else { self.at[k] }
+    }
+
+    /// For each place of the frame, the pixel there, if the surface covers it.
+    pub fn by_place(&self) -> Vec<Option<usize>> {
+        let mut m = vec![None; self.size * self.size];
+        for k in 0..self.ideal.len() {
+            m[self.frame_index(k)] = Some(k);
+        }
+        m
     }
 
     /// The pixels' input vectors, the prologue left out.
@@ -178,9 +194,11 @@ impl Pipeline for Cartesian {
         let t = scene.tex;
         let normals = scene.normals();
         let texels: Vec<(u8, u8)> = normals.iter().map(|&n| cart_encode::encode(encoder, n)).collect();
-        let q: Vec<[i64; 3]> = scene.vertex_lights().iter().map(|&d| light_iter::quantise_vertex(d)).collect();
+        let frame = raster::frame(scene, &normals);
+        let q: Vec<[i64; 3]> = frame.lights.iter().map(|&d| light_iter::quantise_vertex(d)).collect();
         let mut p = Prepared::new(scene.size);
-        for px in raster::pixels(scene, &normals) {
+        for px in frame.pixels {
+            p.at.push(px.at);
             let mut x = vec![0; cart_pipeline::INPUTS.len()];
             for (slot, (i, j)) in cart_pipeline::TEXELS.iter().zip(px.corners) {
                 (x[slot[0]], x[slot[1]]) = (texels[j * t + i].0 as i64, texels[j * t + i].1 as i64);
@@ -255,6 +273,9 @@ impl Polar {
         let mut p = Prepared::new(scene.size);
         let mut straddles = vec![];
         for px in raster::pixels(scene, &normals) {
+            p.at.push(px.at);
+            // the pixel's surface's one light (the quad's is `light`; a curved surface's, its triangle's)
+            let light = if scene.curved.is_some() { polar_encode::encode_light(self.scale, px.surface, self.h) } else { light };
             let c = px.corners.map(|(i, j)| codes[j * t + i]);
             let s = bilinear::exact_channel(c[0].0, c[1].0, c[2].0, c[3].0, px.ub, px.vb, bilinear::F);
             let r = bilinear::exact_channel(c[0].1, c[1].1, c[2].1, c[3].1, px.ub, px.vb, bilinear::F);
@@ -508,6 +529,7 @@ impl Pipeline for Palette {
         }
         p.prologue = codes.len();
         for px in raster::pixels(scene, &normals) {
+            p.at.push(px.at);
             // the texel nearest the sample point: of the bilinear corners, the one the blend factors lean to
             let (i, j) = px.corners[(px.ub >= 128) as usize + 2 * (px.vb >= 128) as usize];
             let mut x = vec![0; palette_pipeline::INPUTS.len()];

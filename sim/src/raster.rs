@@ -1,7 +1,12 @@
-//! The rasteriser: for every pixel of a scene, the four texels and blend factors the texture filter reads, the
-//! light triangle and its weights, and the ideal (filtered float) normal and light beside them.
+//! The rasteriser: for every pixel of a scene the surface covers, the four texels and blend factors the texture
+//! filter reads, the light triangle and its weights, and the ideal (filtered float) normal and light beside them.
+//! The quad fills the screen; a sphere or a torus (`crate::surface`) covers part of it, the rest is background.
+//!
+//! Vertex lights are listed per triangle corner (`Frame::lights`, three a triangle), so that one light per surface
+//! can give a triangle's three corners its own light while another triangle at the same vertex has another.
 
 use crate::scene::Scene;
+use crate::surface::{self, dot, Mesh};
 
 /// One pixel's rasterisation.
 pub struct Pixel {
@@ -10,7 +15,7 @@ pub struct Pixel {
     /// Blend factors, U8 (1/256), truncated.
     pub ub: i64,
     pub vb: i64,
-    /// The light triangle's vertices (indices into `Scene::vertex_lights`) and the weights of its second and third.
+    /// The light triangle's corners (indices into `Frame::lights`) and the weights of its second and third.
     pub tri: [usize; 3],
     pub w1: f64,
     pub w2: f64,
@@ -18,12 +23,57 @@ pub struct Pixel {
     /// vertex lights interpolated linearly and renormalised, as the seed does).
     pub normal: [f64; 3],
     pub light: [f64; 3],
+    /// The pixel's place in the frame (row by row).
+    pub at: usize,
+    /// The one light of the pixel's surface, in its tangent frame: the quad's centre's; a curved surface's
+    /// triangle's, at its centre.
+    pub surface: [f64; 3],
 }
 
-/// Every pixel of `scene`, row by row; `normals` are the height map's, one per texel.
+/// A frame rasterised: its covered pixels in frame order, and the lights of every triangle's corners.
+pub struct Frame {
+    pub pixels: Vec<Pixel>,
+    pub lights: Vec<[f64; 3]>,
+}
+
+/// The scene's frame: the quad's, or the curved surface's.
+pub fn frame(scene: &Scene, normals: &[[f64; 3]]) -> Frame {
+    match &scene.curved {
+        None => quad(scene, normals),
+        Some(c) => curved(scene, c, normals),
+    }
+}
+
+/// Every pixel the scene's surface covers, row by row; `normals` are the map's, one per texel.
 pub fn pixels(scene: &Scene, normals: &[[f64; 3]]) -> Vec<Pixel> {
+    frame(scene, normals).pixels
+}
+
+/// The bilinear blend of the four corner texels' normals with the blend factors, renormalised.
+fn filtered(normals: &[[f64; 3]], t: usize, corners: [(usize, usize); 4], ub: i64, vb: i64) -> [f64; 3] {
+    let (fu, fv) = (ub as f64 / 256.0, vb as f64 / 256.0);
+    let nn = |(i, j): (usize, usize)| normals[j * t + i];
+    let mut nrm = [0.0; 3];
+    for c in 0..3 {
+        nrm[c] = (1.0 - fv) * ((1.0 - fu) * nn(corners[0])[c] + fu * nn(corners[1])[c]) + fv * ((1.0 - fu) * nn(corners[2])[c] + fu * nn(corners[3])[c]);
+    }
+    surface::unit(nrm)
+}
+
+/// The corner lights interpolated linearly with the weights of the second and third, renormalised (as the seed).
+fn interpolated(lf: [[f64; 3]; 3], w1: f64, w2: f64) -> [f64; 3] {
+    let ld: [f64; 3] = std::array::from_fn(|c| lf[0][c] + (lf[1][c] - lf[0][c]) * w1 + (lf[2][c] - lf[0][c]) * w2);
+    let ll = dot(ld, ld).sqrt().max(1e-12);
+    ld.map(|c| c / ll)
+}
+
+/// The quad: the screen is the quad, its four vertices carry the lights, two triangles.
+fn quad(scene: &Scene, normals: &[[f64; 3]]) -> Frame {
     let t = scene.tex;
     let corner = scene.vertex_lights();
+    let surface_light = scene.light_dir(0.5, 0.5);
+    // the corners of triangles (00, 10, 11) and (00, 11, 01)
+    let lights = vec![corner[0], corner[1], corner[3], corner[0], corner[3], corner[2]];
     let n = scene.size;
     let mut out = Vec::with_capacity(n * n);
     for py in 0..n {
@@ -37,25 +87,58 @@ pub fn pixels(scene: &Scene, normals: &[[f64; 3]]) -> Vec<Pixel> {
             let ub = (((su - i0 as f64) * 256.0) as i64).min(255); // U8 blend factor, truncated
             let vb = (((sv - j0 as f64) * 256.0) as i64).min(255);
             // triangle (00, 10, 11) where u ≥ v, else (00, 11, 01)
-            let (tri, w1, w2) = if u >= v { ([0, 1, 3], u - v, v) } else { ([0, 3, 2], u, v - u) };
-            let (fu, fv) = (ub as f64 / 256.0, vb as f64 / 256.0);
-            let nn = |i: usize, j: usize| normals[j * t + i];
-            let mut nrm = [0.0; 3];
-            for c in 0..3 {
-                nrm[c] = (1.0 - fv) * ((1.0 - fu) * nn(i0, j0)[c] + fu * nn(i1, j0)[c])
-                    + fv * ((1.0 - fu) * nn(i0, j1)[c] + fu * nn(i1, j1)[c]);
-            }
-            let ln = (nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]).sqrt();
-            nrm = nrm.map(|c| c / ln);
-            let lf = tri.map(|k| corner[k]);
-            let mut ld = [0.0; 3];
-            for c in 0..3 {
-                ld[c] = lf[0][c] + (lf[1][c] - lf[0][c]) * w1 + (lf[2][c] - lf[0][c]) * w2;
-            }
-            let ll = (ld[0] * ld[0] + ld[1] * ld[1] + ld[2] * ld[2]).sqrt().max(1e-12);
-            ld = ld.map(|c| c / ll);
-            out.push(Pixel { corners: [(i0, j0), (i1, j0), (i0, j1), (i1, j1)], ub, vb, tri, w1, w2, normal: nrm, light: ld });
+            let (tri, w1, w2) = if u >= v { ([0, 1, 2], u - v, v) } else { ([3, 4, 5], u, v - u) };
+            let corners = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
+            let normal = filtered(normals, t, corners, ub, vb);
+            let light = interpolated(tri.map(|k| lights[k]), w1, w2);
+            out.push(Pixel { corners, ub, vb, tri, w1, w2, normal, light, at: py * n + px, surface: surface_light });
         }
     }
-    out
+    Frame { pixels: out, lights }
+}
+
+/// A sphere or a torus: its triangles seen through the camera, the map repeated round it (wrapping along u, and
+/// along v on the torus; clamped at the sphere's poles), each corner's light in its own tangent frame.
+fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Frame {
+    let t = scene.tex;
+    let mesh: Mesh = surface::tessellate(c.shape, c.segments[0], c.segments[1]);
+    let light_at = |u: f64, v: f64| c.shape.frame(u, v).to_tangent(scene.light_from(c.shape.point(u, v)));
+    let mut lights = Vec::with_capacity(mesh.tris.len() * 3);
+    for tri in &mesh.tris {
+        if scene.per_surface {
+            let (u, v) = (tri.iter().map(|&i| mesh.uv[i][0]).sum::<f64>() / 3.0, tri.iter().map(|&i| mesh.uv[i][1]).sum::<f64>() / 3.0);
+            lights.extend([light_at(u, v); 3]);
+        } else {
+            lights.extend(tri.map(|i| light_at(mesh.uv[i][0], mesh.uv[i][1])));
+        }
+    }
+    let wrap_v = matches!(c.shape, surface::Shape::Torus { .. });
+    // a texel coordinate (texel centres at k + 0.5): the corner pair and the U8 blend factor (truncated)
+    let axis = |x: f64, wrap: bool| -> (usize, usize, i64) {
+        let s = x * t as f64 - 0.5;
+        if wrap {
+            let f = s.floor();
+            let i0 = (f as i64).rem_euclid(t as i64) as usize;
+            (i0, (i0 + 1) % t, (((s - f) * 256.0) as i64).min(255))
+        } else {
+            let s = s.clamp(0.0, (t - 1) as f64);
+            let i0 = s.floor() as usize;
+            (i0, (i0 + 1).min(t - 1), (((s - i0 as f64) * 256.0) as i64).min(255))
+        }
+    };
+    let mut out = vec![];
+    for cv in surface::rasterise(&mesh, c.view, scene.size) {
+        let tri = mesh.tris[cv.tri];
+        let uv: [f64; 2] = std::array::from_fn(|k| (0..3).map(|i| cv.bary[i] * mesh.uv[tri[i]][k]).sum());
+        let (i0, i1, ub) = axis(uv[0] * c.repeat[0] as f64, true);
+        let (j0, j1, vb) = axis(uv[1] * c.repeat[1] as f64, wrap_v);
+        let corners = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
+        let k = 3 * cv.tri;
+        let (w1, w2) = (cv.bary[1], cv.bary[2]);
+        let normal = filtered(normals, t, corners, ub, vb);
+        let light = interpolated([lights[k], lights[k + 1], lights[k + 2]], w1, w2);
+        let (cu, cv_) = (tri.iter().map(|&i| mesh.uv[i][0]).sum::<f64>() / 3.0, tri.iter().map(|&i| mesh.uv[i][1]).sum::<f64>() / 3.0);
+        out.push(Pixel { corners, ub, vb, tri: [k, k + 1, k + 2], w1, w2, normal, light, at: cv.at, surface: light_at(cu, cv_) });
+    }
+    Frame { pixels: out, lights }
 }

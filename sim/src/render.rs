@@ -22,7 +22,7 @@ pub struct Image {
 
 impl Image {
     pub fn pixels_per_second(&self) -> f64 {
-        (self.size * self.size) as f64 / self.seconds.max(1e-9)
+        self.outs.len() as f64 / self.seconds.max(1e-9)
     }
 
     /// Pixels whose output vector differs from `other`'s.
@@ -115,6 +115,9 @@ pub fn pixel_at(size: usize) -> impl Fn(usize) -> String {
     move |k| format!("pixel ({}, {})", k % size, k / size)
 }
 
+/// The colour of the frame's places the surface does not cover.
+pub const BACKGROUND: [u8; 3] = [12, 12, 16];
+
 /// Write an RGB image as PNG, whole or not at all.
 pub fn write_png(path: &Path, size: usize, rgb: impl Fn(usize) -> [u8; 3]) -> Result<(), String> {
     let mut img = image::RgbImage::new(size as u32, size as u32);
@@ -165,7 +168,8 @@ pub fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
 /// The model's frame against the ideal.
 pub fn errors(pipe: &dyn crate::pipeline::Pipeline, scene: &crate::scene::Scene, prep: &Prepared, model: &Image) -> Errors {
     use vectors::stats::{angle_deg, ErrorStats};
-    let where_ = pixel_at(prep.size);
+    let place = pixel_at(prep.size);
+    let where_ = |k: usize| place(prep.frame_index(k));
     let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
     let mut normal = pipe.normal(&prep.pixels()[0]).map(|_| ErrorStats::default());
     let mut surface = pipe.surface_ideal(scene, &prep.ideal[0]).map(|_| ErrorStats::default());
@@ -192,16 +196,23 @@ pub struct Window {
 }
 
 impl Window {
-    /// The frame's pixel indices inside the window, row by row.
-    pub fn pixels(&self, size: usize) -> Vec<usize> {
+    /// The frame's places inside the window, row by row.
+    pub fn places(&self, size: usize) -> Vec<usize> {
         (self.y..self.y + self.h).flat_map(|y| (self.x..self.x + self.w).map(move |x| y * size + x)).collect()
+    }
+
+    /// The pixels of a prepared frame inside the window (the places the surface covers), in frame order.
+    pub fn pixels(&self, p: &Prepared) -> Vec<usize> {
+        let by = p.by_place();
+        self.places(p.size).into_iter().filter_map(|at| by[at]).collect()
     }
 
     /// The window's share of a prepared frame: the prologue, then the window's pixels (their ideals beside them).
     pub fn of(&self, p: &Prepared) -> Prepared {
-        let px = self.pixels(p.size);
+        let px = self.pixels(p);
         let mut inputs: Vec<Vec<i64>> = p.inputs[..p.prologue].to_vec();
         inputs.extend(px.iter().map(|&k| p.inputs[p.prologue + k].clone()));
-        Prepared { size: p.size, inputs, prologue: p.prologue, ideal: px.iter().map(|&k| p.ideal[k]).collect() }
+        let at = px.iter().map(|&k| p.frame_index(k)).collect();
+        Prepared { size: p.size, inputs, prologue: p.prologue, ideal: px.iter().map(|&k| p.ideal[k]).collect(), at }
     }
 }

@@ -24,8 +24,23 @@ pub struct Scene {
     pub normal_map: Option<std::sync::Arc<NormalMap>>,
     /// A directional light (unit, towards the light) in place of the point light at `light_pos`.
     pub directional: Option<[f64; 3]>,
-    /// One light for the whole surface: every vertex gets the direction at the quad's centre.
+    /// One light for the whole surface: every vertex gets the direction at the quad's centre (on a curved surface,
+    /// every triangle's vertices get the direction at its centre, in its frame there).
     pub per_surface: bool,
+    /// A sphere or a torus in place of the quad; `light_pos` is then a point of the world (y up, the object at the
+    /// origin, radius 1).
+    pub curved: Option<Curved>,
+}
+
+/// A curved surface, how finely it is cut, how it is seen and how often the map repeats round it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Curved {
+    pub shape: crate::surface::Shape,
+    /// cells along u and v (two triangles a cell)
+    pub segments: [usize; 2],
+    pub view: crate::surface::View,
+    /// the map's repeats along u and v
+    pub repeat: [usize; 2],
 }
 
 /// A tangent-space normal map in the project's frame (x along u, y out of the surface, z along v, down the image):
@@ -50,6 +65,7 @@ impl Default for Scene {
             normal_map: None,
             directional: None,
             per_surface: false,
+            curved: None,
         }
     }
 }
@@ -91,6 +107,14 @@ impl Scene {
         let d = [self.light_pos[0] - u, self.light_pos[1], self.light_pos[2] - v];
         let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
         [d[0] / l, d[1] / l, d[2] / l]
+    }
+
+    /// Unit direction from a world point of a curved surface to the light (the directional light's own).
+    pub fn light_from(&self, p: [f64; 3]) -> [f64; 3] {
+        match self.directional {
+            Some(d) => d,
+            None => crate::surface::unit([self.light_pos[0] - p[0], self.light_pos[1] - p[1], self.light_pos[2] - p[2]]),
+        }
     }
 
     /// The light direction at the quad's four vertices (00, 10, 01, 11); with one light per surface, its direction at

@@ -9,7 +9,12 @@
 //! size = 256                      # output side, pixels (16 to 1024)
 //!
 //! [surface]
-//! shape = "quad"                  # the quad's four vertices carry the lights the light iterator interpolates
+//! shape = "quad"                  # quad | sphere | torus
+//! # segments = [64, 32]           # sphere, torus: cells along u and v, two triangles each (3 to 512)
+//! # minor = 0.3                   # torus: the tube's radius, the outer radius 1 (0.05 to 0.5)
+//! # repeat = [4, 1]               # sphere, torus: the map's repeats along u and v (1 to 64)
+//! # tilt = 25.0                   # sphere, torus: the camera's tilt and spin, degrees
+//! # spin = 20.0
 //!
 //! [bump]
 //! source = "procedural"           # procedural | height_map | normal_map
@@ -22,7 +27,8 @@
 //!
 //! [light]
 //! kind = "point"                  # point | directional
-//! position = [0.2, 0.45, 0.25]    # point: over the quad [0, 1]², y up
+//! position = [0.2, 0.45, 0.25]    # point: over the quad [0, 1]², y up (sphere, torus: in the world, y up, the
+//!                                 # object at the origin, radius 1)
 //! # direction = [0.3, 1.0, 0.2]   # directional: towards the light, any length but 0
 //! per = "vertex"                  # vertex (interpolated) | surface (one light, at the centre)
 //!
@@ -183,6 +189,62 @@ impl TryFrom<Vec<f64>> for Direction {
 pub enum Shape {
     #[default]
     Quad,
+    Sphere,
+    Torus,
+}
+
+/// Two whole numbers in a range: a curved surface's cells along u and v, the map's repeats.
+macro_rules! pair {
+    ($(#[$doc:meta])* $name:ident, $lo:expr, $hi:expr, $what:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+        #[serde(try_from = "Vec<i64>")]
+        pub struct $name(pub [usize; 2]);
+
+        impl TryFrom<Vec<i64>> for $name {
+            type Error = String;
+            fn try_from(v: Vec<i64>) -> Result<Self, String> {
+                let [a, b] = v[..] else { return Err(format!("{}: two whole numbers [u, v], not {}", $what, v.len())) };
+                for x in [a, b] {
+                    if !($lo..=$hi).contains(&x) {
+                        return Err(format!("{} are {} to {}, not {x}", $what, $lo, $hi));
+                    }
+                }
+                Ok(Self([a as usize, b as usize]))
+            }
+        }
+    };
+}
+
+pair!(
+    /// Cells along u and v (two triangles a cell).
+    Segments, 3, 512, "the segments");
+pair!(
+    /// The map's repeats along u and v round a curved surface.
+    Repeat, 1, 64, "the repeats");
+
+/// The torus's tube radius, the outer radius being 1.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "f64")]
+pub struct Minor(pub f64);
+
+impl TryFrom<f64> for Minor {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        finite_in(v, 0.05, 0.5, "the tube radius (the outer radius is 1)").map(Self)
+    }
+}
+
+/// A camera angle in degrees.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "f64")]
+pub struct Degrees(pub f64);
+
+impl TryFrom<f64> for Degrees {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        finite_in(v, -360.0, 360.0, "an angle (degrees)").map(Self)
+    }
 }
 
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
@@ -246,6 +308,11 @@ pub enum Per {
 pub struct SurfaceSpec {
     #[serde(default)]
     pub shape: Shape,
+    pub segments: Option<Spanned<Segments>>,
+    pub minor: Option<Spanned<Minor>>,
+    pub repeat: Option<Spanned<Repeat>>,
+    pub tilt: Option<Spanned<Degrees>>,
+    pub spin: Option<Spanned<Degrees>>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -314,6 +381,9 @@ pub struct SceneSpec {
     pub per_surface: bool,
     pub notes: Vec<String>,
 }
+
+/// A curved surface's point light where the scene gives none: above, to the left and in front of the object.
+pub const DEFAULT_WORLD_LIGHT: [f64; 3] = [-2.0, 2.5, 3.0];
 
 /// 1-based line and column of a byte offset.
 fn line_col(text: &str, at: usize) -> (usize, usize) {
@@ -450,6 +520,47 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                 return Err(at.err(light_span, "[light] a directional light needs direction = [x, y, z] (towards the light)"));
             };
             scene.directional = Some(d.get_ref().0);
+        }
+    }
+    // the surface
+    let surf = &f.surface;
+    let span = |o: &Option<Spanned<Segments>>| o.as_ref().map(|x| x.span());
+    if surf.shape == Shape::Quad {
+        unused(span(&surf.segments), "[surface] segments: the quad is two triangles (segments are for a sphere or a torus)")?;
+        unused(surf.repeat.as_ref().map(|x| x.span()), "[surface] repeat: the quad holds the map once")?;
+        unused(surf.tilt.as_ref().map(|x| x.span()), "[surface] tilt: the quad fills the screen (no camera)")?;
+        unused(surf.spin.as_ref().map(|x| x.span()), "[surface] spin: the quad fills the screen (no camera)")?;
+    }
+    if surf.shape != Shape::Torus {
+        unused(surf.minor.as_ref().map(|x| x.span()), "[surface] minor: only a torus has a tube radius")?;
+    }
+    if surf.shape != Shape::Quad {
+        let shape = match surf.shape {
+            Shape::Sphere => crate::surface::Shape::Sphere,
+            _ => crate::surface::Shape::Torus { minor: surf.minor.as_ref().map_or(0.3, |m| m.get_ref().0) },
+        };
+        let default_segments = if surf.shape == Shape::Sphere { [48, 24] } else { [64, 32] };
+        let default_repeat = if surf.shape == Shape::Sphere { [2, 1] } else { [4, 1] };
+        scene.curved = Some(crate::scene::Curved {
+            shape,
+            segments: surf.segments.as_ref().map_or(default_segments, |x| x.get_ref().0),
+            view: crate::surface::View {
+                tilt_deg: surf.tilt.as_ref().map_or(25.0, |x| x.get_ref().0),
+                spin_deg: surf.spin.as_ref().map_or(20.0, |x| x.get_ref().0),
+            },
+            repeat: surf.repeat.as_ref().map_or(default_repeat, |x| x.get_ref().0),
+        });
+        if kind == LightKind::Point && light.position.is_none() {
+            scene.light_pos = DEFAULT_WORLD_LIGHT;
+        }
+        let quad_only = |what: &str| at.err(bump.encoding.as_ref().map_or(bump_span.clone(), |e| e.span()), format!(
+            "[bump] encoding = \"{what}\": its pipeline renders the quad only ({}); shape = \"quad\"",
+            if what == "palette" { "its colour table holds one light direction a frame, a flat surface's" } else { "its address unit walks one flat map" }
+        ));
+        match encoding {
+            Encoding::Palette => return Err(quad_only("palette")),
+            Encoding::Heights => return Err(quad_only("heights")),
+            _ => {}
         }
     }
     let per = light.per.as_ref().map(|p| *p.get_ref());

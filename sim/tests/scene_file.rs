@@ -44,6 +44,29 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     assert!(matches!(kind("polar.toml"), PipelineKind::Polar { pw: 16, .. }));
     assert_eq!(kind("height.toml"), PipelineKind::Height);
     assert_eq!(kind("palette.toml"), PipelineKind::Palette(256));
+    // the curved ones
+    let torus = scene_file::load(&scenes_dir().join("torus.toml")).unwrap().scene;
+    let c = torus.curved.expect("a torus");
+    assert_eq!(c.shape, sim::surface::Shape::Torus { minor: 0.32 });
+    assert_eq!((c.segments, c.repeat), ([72, 36], [4, 1]));
+    assert!(scene_file::load(&scenes_dir().join("sphere_polar.toml")).unwrap().scene.curved.is_some());
+}
+
+#[test]
+fn curved_surfaces_take_their_own_fields_and_only_the_pipelines_that_can_draw_them() {
+    let base = "size = 64\n[bump]\nsource = \"procedural\"\n";
+    let with = |surface: &str, rest: &str| format!("size = 64\n[surface]\n{surface}[bump]\nsource = \"procedural\"\n{rest}");
+    assert!(parse(base).unwrap().scene.curved.is_none());
+    let s = parse(&with("shape = \"sphere\"\n", "")).unwrap().scene;
+    assert_eq!(s.light_pos, scene_file::DEFAULT_WORLD_LIGHT, "a curved surface's default light is in the world");
+    refused(&with("segments = [8, 8]\n", ""), "s.toml:3:12:", &["the quad is two triangles"]);
+    refused(&with("shape = \"sphere\"\nminor = 0.2\n", ""), "s.toml:4:9:", &["only a torus"]);
+    refused(&with("shape = \"torus\"\nminor = 0.9\n", ""), "s.toml:4:9:", &["0.05 to 0.5"]);
+    refused(&with("shape = \"torus\"\nsegments = [2, 8]\n", ""), "s.toml:4:12:", &["3 to 512"]);
+    refused(&with("shape = \"torus\"\nrepeat = [1]\n", ""), "s.toml:4:10:", &["two whole numbers"]);
+    refused(&with("shape = \"torus\"\ntilt = nan\n", ""), "s.toml:4:8:", &["finite"]);
+    refused(&with("shape = \"torus\"\n", "encoding = \"palette\"\npalette = 16\n[light]\nper = \"surface\"\n"), "s.toml:6:12:", &["renders the quad only"]);
+    refused(&with("shape = \"sphere\"\n", "encoding = \"heights\"\n[light]\nper = \"surface\"\n"), "s.toml:6:12:", &["renders the quad only"]);
 }
 
 #[test]
