@@ -27,7 +27,7 @@ crate::stream_block! {
         }
         log: LogTable<LF>,
         exp: ExpTable<EB>,
-        half: Constant<Bits<23>>, // 2^(k − 1), k = 2 + LF − EB the fraction bits g drops from e
+        half: Constant<Bits<8>>, // 2^(k − 1) ≤ 2^7, k = 2 + LF − EB the fraction bits g drops from e
         f_at: Constant<Bits<5>>, // k: f is g's EB bits from bit k of e + half
         n_at: Constant<Bits<5>>, // k + EB = 2 + LF: n is the bits above
         s1_x: DFF<U8>,
@@ -125,7 +125,7 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         self.w_e.next = self.w_l.val() * self.w_p.val();
         self.s3_e.d.next = self.w_e.val().get_bits::<23>(0);
         // stage 4: g = (e + 2^(k−1)) >> k (round half up; e ≤ 255·32,745 = 8,349,975 and 2^(k−1) ≤ 128: U23), split
-        self.w_g.next = self.s3_e.q.val() + self.half.val();
+        self.w_g.next = self.s3_e.q.val() + bit_cast::<23, 8>(self.half.val()); // U8 widened to U23, exact
         self.s4_f.d.next = self.w_g.val().get_bits::<EB>(self.f_at.val().index()); // g mod 2^EB: U(EB), the split
         self.w_n.next = self.w_g.val().get_bits::<9>(self.n_at.val().index()); // g >> EB ≤ 509 (U9)
         if self.w_n.val() > 9 {
