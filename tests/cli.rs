@@ -522,3 +522,25 @@ fn render_draws_a_torus_and_a_sphere_on_a_background_and_the_rtl_equals_the_mode
         assert!(out.lines().any(|l| l.starts_with("rust-hdl, window 8×8") && l.trim_end().ends_with(" 0")), "{out}");
     }
 }
+
+#[test]
+fn render_reads_a_users_normal_map_in_either_green_convention() {
+    let d = scratch("render-normal-map");
+    // a 32 × 32 normal map of one slope, its green high: leaning up the image in OpenGL's convention (towards −v),
+    // down it in DirectX's (towards +v)
+    image::RgbImage::from_fn(32, 32, |_, _| image::Rgb([128, 220, 200])).save(d.join("lean.png")).unwrap();
+    // a light from up the image (−v): bright where the map is read as OpenGL, dark where it is read as DirectX
+    for (green, bright) in [("opengl", true), ("directx", false)] {
+        let scene = d.join(format!("{green}.toml"));
+        std::fs::write(&scene, format!(
+            "size = 32\n[bump]\nsource = \"normal_map\"\npath = \"lean.png\"\ngreen = \"{green}\"\n[light]\nkind = \"directional\"\ndirection = [0.0, 0.35, -0.94]\nper = \"surface\"\n[material]\ngloss = 0\nsrc = [255, 255, 255]\ndst = [0, 0, 0]\n"
+        )).unwrap();
+        let out = d.join(format!("out-{green}"));
+        let (code, text, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", out.to_str().unwrap(), "--no-verilator"]);
+        assert_eq!(code, 0, "{err}");
+        assert!(text.contains("rust-hdl, window") && text.contains("normal angle"), "{text}");
+        let img = image::open(out.join(format!("{green}_model.png"))).unwrap().to_luma8();
+        let mean = img.pixels().map(|p| p.0[0] as f64).sum::<f64>() / 1024.0;
+        assert!(if bright { mean > 180.0 } else { mean < 90.0 }, "{green}: mean {mean}");
+    }
+}
