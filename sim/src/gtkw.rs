@@ -188,11 +188,7 @@ pub fn write_beside(vcd: &Path, formats: &Formats) -> Result<std::path::PathBuf,
     let name = vcd.file_name().map_or("".into(), |n| n.to_string_lossy().into_owned());
     let body = save_file(&name, &vars, &|n| formats.format(n).is_some_and(|f| f.signed));
     let out = vcd.with_extension("gtkw");
-    let tmp = vcd.with_extension("gtkw.partial");
-    std::fs::write(&tmp, body).and_then(|_| std::fs::rename(&tmp, &out)).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        format!("cannot write {}: {e}", out.display())
-    })?;
+    synth::export::write_atomic(&out, body.as_bytes())?;
     Ok(out)
 }
 

@@ -139,17 +139,32 @@ impl TryFrom<f64> for Power {
     }
 }
 
-/// The polar weight h of N·L against the ambient 1 − h.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(try_from = "f64")]
-pub struct Weight(pub f64);
+/// A finite number in a range, checked as it is read.
+macro_rules! finite {
+    ($(#[$doc:meta])* $name:ident, $lo:expr, $hi:expr, $what:expr) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+        #[serde(try_from = "f64")]
+        pub struct $name(pub f64);
 
-impl TryFrom<f64> for Weight {
-    type Error = String;
-    fn try_from(v: f64) -> Result<Self, String> {
-        finite_in(v, 0.0, 1.0, "the weight h").map(Self)
-    }
+        impl TryFrom<f64> for $name {
+            type Error = String;
+            fn try_from(v: f64) -> Result<Self, String> {
+                finite_in(v, $lo, $hi, $what).map(Self)
+            }
+        }
+    };
 }
+
+finite!(
+    /// The polar weight h of N·L against the ambient 1 − h.
+    Weight, 0.0, 1.0, "the weight h");
+finite!(
+    /// The torus's tube radius, the outer radius being 1.
+    Minor, 0.05, 0.5, "the tube radius (the outer radius is 1)");
+finite!(
+    /// A camera angle in degrees.
+    Degrees, -360.0, 360.0, "an angle (degrees)");
 
 /// Three finite numbers: a position.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
@@ -223,29 +238,7 @@ pair!(
     /// The map's repeats along u and v round a curved surface.
     Repeat, 1, 64, "the repeats");
 
-/// The torus's tube radius, the outer radius being 1.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(try_from = "f64")]
-pub struct Minor(pub f64);
 
-impl TryFrom<f64> for Minor {
-    type Error = String;
-    fn try_from(v: f64) -> Result<Self, String> {
-        finite_in(v, 0.05, 0.5, "the tube radius (the outer radius is 1)").map(Self)
-    }
-}
-
-/// A camera angle in degrees.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(try_from = "f64")]
-pub struct Degrees(pub f64);
-
-impl TryFrom<f64> for Degrees {
-    type Error = String;
-    fn try_from(v: f64) -> Result<Self, String> {
-        finite_in(v, -360.0, 360.0, "an angle (degrees)").map(Self)
-    }
-}
 
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
 #[serde(rename_all = "snake_case")]

@@ -62,49 +62,39 @@ pub fn exp2_of(eb: usize) -> Vec<u64> {
     (0..1u64 << eb).map(|f| (255.0 * (-(f as f64) / (1u64 << eb) as f64).exp2() * 128.0).round() as u64).collect()
 }
 
-/// The power unit's logarithm, L with `LF` fraction bits (`LF` ≤ 12: U15).
-#[derive(LogicBlock)]
-pub struct LogTable<const LF: usize> {
-    pub address: Signal<In, Bits<8>>,
-    pub data: Signal<Out, Bits<15>>,
-    rom: ROM<Bits<15>, 8>,
+/// A ROM block of U15 entries, generic in the one size it has (`$g`, at most `$max`): `$addr` address bits,
+/// `$contents($g)` the entries.
+macro_rules! rom_block {
+    ($(#[$doc:meta])* $name:ident, $g:ident, $max:literal, $addr:tt, $contents:ident) => {
+        $(#[$doc])*
+        #[derive(LogicBlock)]
+        pub struct $name<const $g: usize> {
+            pub address: Signal<In, Bits<$addr>>,
+            pub data: Signal<Out, Bits<15>>,
+            rom: ROM<Bits<15>, $addr>,
+        }
+
+        impl<const $g: usize> Default for $name<$g> {
+            fn default() -> Self {
+                assert!($g <= $max, "{}<{}>: at most {}", stringify!($name), $g, $max);
+                let rom = ROM::from($contents($g).into_iter().map(Bits::<15>::from));
+                Self { address: Default::default(), data: Default::default(), rom }
+            }
+        }
+
+        impl<const $g: usize> Logic for $name<$g> {
+            #[hdl_gen]
+            fn update(&mut self) {
+                self.rom.address.next = self.address.val();
+                self.data.next = self.rom.data.val();
+            }
+        }
+    };
 }
 
-impl<const LF: usize> Default for LogTable<LF> {
-    fn default() -> Self {
-        assert!(LF <= 12, "LogTable<{LF}>: L fits U15 with at most 12 fraction bits");
-        let rom = ROM::from(log2_of(LF).into_iter().map(Bits::<15>::from));
-        Self { address: Default::default(), data: Default::default(), rom }
-    }
-}
-
-impl<const LF: usize> Logic for LogTable<LF> {
-    #[hdl_gen]
-    fn update(&mut self) {
-        self.rom.address.next = self.address.val();
-        self.data.next = self.rom.data.val();
-    }
-}
-
-/// The power unit's exponential, 2^`EB` entries (U15).
-#[derive(LogicBlock)]
-pub struct ExpTable<const EB: usize> {
-    pub address: Signal<In, Bits<EB>>,
-    pub data: Signal<Out, Bits<15>>,
-    rom: ROM<Bits<15>, EB>,
-}
-
-impl<const EB: usize> Default for ExpTable<EB> {
-    fn default() -> Self {
-        let rom = ROM::from(exp2_of(EB).into_iter().map(Bits::<15>::from));
-        Self { address: Default::default(), data: Default::default(), rom }
-    }
-}
-
-impl<const EB: usize> Logic for ExpTable<EB> {
-    #[hdl_gen]
-    fn update(&mut self) {
-        self.rom.address.next = self.address.val();
-        self.data.next = self.rom.data.val();
-    }
-}
+rom_block!(
+    /// The power unit's logarithm, L with `LF` fraction bits (`LF` ≤ 12: U15).
+    LogTable, LF, 12, 8, log2_of);
+rom_block!(
+    /// The power unit's exponential, 2^`EB` entries (U15).
+    ExpTable, EB, 12, EB, exp2_of);
