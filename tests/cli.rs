@@ -544,3 +544,34 @@ fn render_reads_a_users_normal_map_in_either_green_convention() {
         assert!(if bright { mean > 180.0 } else { mean < 90.0 }, "{green}: mean {mean}");
     }
 }
+
+#[test]
+fn synthesis_results_are_cached_under_a_content_hash_and_reused() {
+    if !synth::tools::missing(&["yosys"]).is_empty() {
+        return; // the test command installs yosys; without it there is nothing to cache
+    }
+    let d = scratch("synth-cache");
+    let cache = d.join("cache");
+    let run = || {
+        let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+            .args(["widths", "sincos", "--budget", "1.0", "--dir", d.join("work").to_str().unwrap()])
+            .env("BUMPRTL_SYNTH_CACHE", &cache)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        // the table without its first line (which says how long the sweep took)
+        String::from_utf8_lossy(&o.stdout).lines().skip(1).collect::<Vec<_>>().join("\n")
+    };
+    let first = run();
+    let kept: Vec<String> = std::fs::read_dir(&cache).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    // one result per setting of the sweep, each named by a 128-bit hash and its kind
+    assert_eq!(kept.len(), vectors::sincos::LUT_SIZES.len(), "{kept:?}");
+    assert!(kept.iter().all(|n| n.len() == 32 + ".cells".len() && n.ends_with(".cells")), "{kept:?}");
+    // the second run reads them back: the same table, and no new entry
+    assert_eq!(run(), first);
+    assert_eq!(std::fs::read_dir(&cache).unwrap().count(), kept.len());
+    // and it reads them rather than synthesising again: an entry changed by hand shows in the table
+    std::fs::write(cache.join(&kept[0]), "4242 4343 0 0 0").unwrap();
+    let third = run();
+    assert!(third.contains("4242") && third.contains("4343") && !first.contains("4242"), "{third}");
+}

@@ -6,6 +6,7 @@
 //! pins): the wrapper's `hold` register sits between the input shift chain and the unit, so that yosys cannot
 //! merge pipeline flops into the chain. nextpnr gives the logic cells used and the fmax of the real clock.
 
+use crate::cache;
 use crate::export::{export, write_atomic};
 use crate::tools;
 use rtl::StreamUnit;
@@ -278,23 +279,26 @@ fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Optio
     std::fs::read_to_string(dir.join(&log)).map_err(|e| format!("no yosys log: {e}"))
 }
 
-/// yosys figures of the unit alone in one family's cells (no place-and-route), kept in `dir` and reused while the
-/// unit's Verilog is unchanged.
+/// yosys figures of the unit alone in one family's cells (no place-and-route), written into `dir` and kept in the
+/// synthesis cache (`crate::cache`) under the hash of the unit's Verilog, the flow and yosys's version.
 pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
     let v = export::<U>();
     v.write(dir)?;
-    let key = format!("{}\n{KEEP_OPERAND_COPIES}\nblocks by type\n{}", family.synth_command(), v.text);
-    let (stamp, saved) = (dir.join(format!("{family:?}.cells.stamp")), dir.join(format!("{family:?}.cells")));
-    if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
-        let n: Vec<u64> = std::fs::read_to_string(&saved).unwrap_or_default().split_whitespace().filter_map(|x| x.parse().ok()).collect();
-        if let [lut4, ff, dsp, bram, carry] = n[..] {
-            return Ok(Cells { lut4, ff, dsp, bram, carry });
-        }
+    let key = cache::key(&format!("cells\n{}\n{KEEP_OPERAND_COPIES}\nblocks by type\n{}", family.synth_command(), v.text), &["yosys"]);
+    let saved = dir.join(format!("{family:?}.cells"));
+    let read = |t: &str| match t.split_whitespace().filter_map(|x| x.parse().ok()).collect::<Vec<u64>>()[..] {
+        [lut4, ff, dsp, bram, carry] => Some(Cells { lut4, ff, dsp, bram, carry }),
+        _ => None,
+    };
+    if let Some(c) = cache::get(&key, "cells").as_deref().and_then(read) {
+        write_atomic(&saved, format!("{} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry).as_bytes())?;
+        return Ok(c);
     }
     let log = yosys(dir, family, U::NAME, &[&format!("{}.v", U::NAME)], None)?;
     let c = cells(family, &log);
-    write_atomic(&saved, format!("{} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry).as_bytes())?;
-    write_atomic(&stamp, key.as_bytes())?;
+    let text = format!("{} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry);
+    write_atomic(&saved, text.as_bytes())?;
+    cache::put(&key, "cells", &text)?;
     Ok(c)
 }
 
@@ -481,20 +485,25 @@ impl SynthReport {
     }
 }
 
-/// `synth_and_place`, reusing the figures of an earlier run in `dir` when the unit's Verilog, the wrapper, the part
-/// and the target frequency are all unchanged (place-and-route takes minutes; the demo asks for it on every run).
+/// `synth_and_place`, reusing an earlier run's figures from the synthesis cache (`crate::cache`) when the unit's
+/// Verilog, the wrapper, the part, the target frequency and the tools' versions are all unchanged (place-and-route
+/// takes minutes; the demo asks for it on every run). The report is written into `dir` either way.
 pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
-    let key = format!("{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}\nblocks by type", export::<U>().text, wrapper::<U>(), part.name);
-    let (stamp, saved) = (dir.join("report.stamp"), dir.join("report.txt"));
-    if std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str()) {
-        if let Some(r) = std::fs::read_to_string(&saved).ok().as_deref().and_then(SynthReport::from_text) {
-            return Ok(r);
-        }
-    }
+    let inputs = format!("place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}\nblocks by type", export::<U>().text, wrapper::<U>(), part.name);
+    let pnr = match part.family {
+        Family::Ice40 => "nextpnr-ice40".to_string(),
+        Family::Ecp5 => tools::nextpnr_ecp5().unwrap_or_else(|| "nextpnr-ecp5".into()),
+    };
+    let key = cache::key(&inputs, &["yosys", &pnr]);
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let saved = dir.join("report.txt");
+    if let Some(r) = cache::get(&key, "report").as_deref().and_then(SynthReport::from_text) {
+        write_atomic(&saved, r.to_text().as_bytes())?;
+        return Ok(r);
+    }
     let r = synth_and_place::<U>(dir, part, freq_mhz, "")?;
     write_atomic(&saved, r.to_text().as_bytes())?;
-    write_atomic(&stamp, key.as_bytes())?;
+    cache::put(&key, "report", &r.to_text())?;
     Ok(r)
 }
 
