@@ -191,8 +191,10 @@ pub fn run(rtl: &dyn Fn(&str, &[Vec<i64>]) -> Result<Vec<Vec<i64>>, String>) -> 
     let rows = rows(rtl)?;
     println!("| unit | hard case | what the seeds ask | what the rtl does | |");
     println!("| --- | --- | --- | --- | --- |");
+    // a cell's own `|` (|x|, |L|) escaped, so that the Markdown table keeps its columns
+    let cell = |t: &str| t.replace('|', "\\|");
     for r in &rows {
-        println!("| {} | {} | {} | {} | {} |", r.unit, r.case, r.ask, r.seen, if r.pass { "pass" } else { "FAIL" });
+        println!("| {} | {} | {} | {} | {} |", r.unit, cell(&r.case), cell(r.ask), cell(&r.seen), if r.pass { "pass" } else { "FAIL" });
     }
     let failed: Vec<String> = rows.iter().filter(|r| !r.pass).map(|r| format!("{}: {}", r.unit, r.case)).collect();
     let units: std::collections::BTreeSet<&str> = rows.iter().map(|r| r.unit).collect();

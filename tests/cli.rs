@@ -498,6 +498,10 @@ fn hardcases_prints_every_row_passing_and_covers_what_the_seeds_warn_about() {
         assert!(rows.iter().any(|r| r.contains(covered)), "no row for {covered}");
     }
     assert!(out.contains(&format!("{} hard cases over", rows.len())) && out.contains(" 0 fail"), "{out}");
+    // five columns a row: every `|` inside a cell is escaped
+    for r in &rows {
+        assert_eq!(r.replace("\\|", "").matches('|').count(), 6, "{r}");
+    }
 }
 
 #[test]
