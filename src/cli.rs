@@ -28,7 +28,11 @@ enum Cmd {
     /// Export a unit's Verilog into DIR/<unit>.v, with a self-checking testbench of its golden vectors
     /// (DIR/<unit>_tb.v, DIR/<unit>_in.hex, DIR/<unit>_out.hex)
     Verilog {
-        unit: String,
+        #[arg(required_unless_present = "scene")]
+        unit: Option<String>,
+        /// instead of a unit: the pipeline this scene file is rendered by (its module alone)
+        #[arg(long, conflicts_with = "unit")]
+        scene: Option<PathBuf>,
         /// output folder; `-` prints the module alone to standard output
         #[arg(long)]
         out: PathBuf,
@@ -308,7 +312,21 @@ pub fn main() -> Result<(), String> {
                 _ => print!("{text}"),
             }
         }
-        Cmd::Verilog { unit: name, out } => {
+        Cmd::Verilog { scene: Some(scene), out, .. } => {
+            let spec = sim::scene_file::load(&scene)?;
+            let pipe = crate::render::pipeline(&spec);
+            let text = pipe.rtl().verilog();
+            if out.as_os_str() == "-" {
+                print!("{text}");
+            } else {
+                writable_folder(&out)?;
+                let p = out.join(format!("{}.v", pipe.model().name));
+                synth::export::write_atomic(&p, text.as_bytes())?;
+                println!("{} ({}: {})", p.display(), spec.name, pipe.units().join(" → "));
+            }
+        }
+        Cmd::Verilog { unit: None, .. } => return Err("verilog: name a unit or --scene FILE".into()),
+        Cmd::Verilog { unit: Some(name), out, .. } => {
             let u = unit(&name)?;
             if out.as_os_str() == "-" {
                 // the module alone: a testbench and its vector files cannot share one stream

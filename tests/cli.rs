@@ -579,3 +579,25 @@ fn synthesis_results_are_cached_under_a_content_hash_and_reused() {
     let third = run();
     assert!(third.contains("4242") && third.contains("4343") && !first.contains("4242"), "{third}");
 }
+
+#[test]
+fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
+    let d = scratch("verilog-scene");
+    let (code, out, err) = bumprtl(&["verilog", "--scene", scenes().join("torus.toml").to_str().unwrap(), "--out", d.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("cart_pipeline.v") && out.contains("bilinear → cart_decode"), "{out}");
+    let (_, module, _) = bumprtl(&["verilog", "cart_pipeline", "--out", "-"]);
+    assert_eq!(std::fs::read_to_string(d.join("cart_pipeline.v")).unwrap(), module);
+    let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("sphere_polar.toml").to_str().unwrap(), "--out", "-"]);
+    assert_eq!(code, 0);
+    assert!(text.contains("module polar_pipeline("), "{}", &text[..text.len().min(200)]);
+    // a bad scene, and a unit and a scene at once: one line, non-zero, nothing written
+    let bad = d.join("bad.toml");
+    std::fs::write(&bad, "size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"seedy\"\n").unwrap();
+    let e = d.join("out-bad");
+    let (code, _, err) = bumprtl(&["verilog", "--scene", bad.to_str().unwrap(), "--out", e.to_str().unwrap()]);
+    assert!(code != 0 && err.lines().count() == 1 && err.contains("bad.toml:4:12:"), "{err}");
+    assert!(!e.exists());
+    let (code, _, err) = bumprtl(&["verilog", "gloss", "--scene", bad.to_str().unwrap(), "--out", "-"]);
+    assert!(code != 0 && err.lines().count() == 1, "{err}");
+}

@@ -109,6 +109,8 @@ pub trait RtlPaths: Sync {
     /// The prepared vectors through rust-hdl with every signal traced to `path`: the outputs past the prologue.
     fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String>;
     fn export(&self, dir: &Path) -> Result<(), String>;
+    /// The exported module's text.
+    fn verilog(&self) -> String;
     fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String>;
 }
 
@@ -141,6 +143,9 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
     }
     fn export(&self, dir: &Path) -> Result<(), String> {
         synth::export::<U>().write(dir).map(|_| ())
+    }
+    fn verilog(&self) -> String {
+        synth::export::<U>().text
     }
     fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
         synth::fpga::measure::<U>(dir, parts, say)
