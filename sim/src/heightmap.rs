@@ -46,6 +46,18 @@ fn bilinear(g: &[f64], w: usize, h: usize, x: f64, y: f64) -> f64 {
     vectors::bilinear::ideal_channel(at(i0, j0), at(i1, j0), at(i0, j1), at(i1, j1), fx, fy)
 }
 
+/// A w × h grid brought to side × side, bilinear between the texel centres (the pixel centres of the new grid
+/// mapped onto the old one).
+fn resample(g: &[f64], w: usize, h: usize, side: usize) -> Vec<f64> {
+    let s = side as f64;
+    (0..side * side)
+        .map(|k| {
+            let (x, y) = ((k % side) as f64 + 0.5, (k / side) as f64 + 0.5);
+            bilinear(g, w, h, x * w as f64 / s - 0.5, y * h as f64 / s - 0.5)
+        })
+        .collect()
+}
+
 const PNG_SIGNATURE: &[u8] = b"\x89PNG\r\n\x1a\n";
 
 /// A PNG of at least 2 × 2 pixels, or one line naming the file and what is wrong (`what`: "height map", …).
@@ -156,14 +168,7 @@ pub fn load(path: &Path) -> Result<Loaded, String> {
         notes.push(format!(
             "{name}: {w} × {h} resampled (bilinear) to {side} × {side}: the height path holds square maps of 2^n texels up to {MAX_SIDE}"
         ));
-        let s = side as f64;
-        let h2 = (0..side * side)
-            .map(|k| {
-                let (x, y) = ((k % side) as f64 + 0.5, (k / side) as f64 + 0.5);
-                bilinear(&grey, w, h, x * w as f64 / s - 0.5, y * h as f64 / s - 0.5)
-            })
-            .collect();
-        HeightMap { side, h: h2 }
+        HeightMap { side, h: resample(&grey, w, h, side) }
     };
     Ok(Loaded { map, depth, notes })
 }
@@ -197,12 +202,10 @@ pub fn load_normal_map(path: &Path, green_down: bool) -> Result<LoadedNormals, S
         return Ok(LoadedNormals { map: crate::scene::NormalMap { side, n }, notes });
     }
     notes.push(format!("{name}: {w} × {h} resampled (bilinear, renormalised) to {side} × {side}: maps are square, 2^n texels up to {MAX_SIDE}"));
-    let s = side as f64;
-    let comp: Vec<Vec<f64>> = (0..3).map(|c| n.iter().map(|v| v[c]).collect()).collect();
+    let comp: Vec<Vec<f64>> = (0..3).map(|c| resample(&n.iter().map(|v| v[c]).collect::<Vec<_>>(), w, h, side)).collect();
     let out = (0..side * side)
         .map(|k| {
-            let (x, y) = ((k % side) as f64 + 0.5, (k / side) as f64 + 0.5);
-            let v: [f64; 3] = std::array::from_fn(|c| bilinear(&comp[c], w, h, x * w as f64 / s - 0.5, y * h as f64 / s - 0.5));
+            let v = [comp[0][k], comp[1][k], comp[2][k]];
             let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
             if l < 1e-9 { [0.0, 1.0, 0.0] } else { v.map(|c| c / l) }
         })

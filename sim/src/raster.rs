@@ -103,11 +103,16 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
     let t = scene.tex;
     let mesh: Mesh = surface::tessellate(c.shape, c.segments[0], c.segments[1]);
     let light_at = |u: f64, v: f64| c.shape.frame(u, v).to_tangent(scene.light_from(c.shape.point(u, v)));
+    // each triangle's one light, at its centre; and its corners' lights (that one again, with one light per surface)
+    let centre: Vec<[f64; 3]> = mesh
+        .tris
+        .iter()
+        .map(|tri| light_at(tri.iter().map(|&i| mesh.uv[i][0]).sum::<f64>() / 3.0, tri.iter().map(|&i| mesh.uv[i][1]).sum::<f64>() / 3.0))
+        .collect();
     let mut lights = Vec::with_capacity(mesh.tris.len() * 3);
-    for tri in &mesh.tris {
+    for (tri, &own) in mesh.tris.iter().zip(&centre) {
         if scene.per_surface {
-            let (u, v) = (tri.iter().map(|&i| mesh.uv[i][0]).sum::<f64>() / 3.0, tri.iter().map(|&i| mesh.uv[i][1]).sum::<f64>() / 3.0);
-            lights.extend([light_at(u, v); 3]);
+            lights.extend([own; 3]);
         } else {
             lights.extend(tri.map(|i| light_at(mesh.uv[i][0], mesh.uv[i][1])));
         }
@@ -137,8 +142,7 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
         let (w1, w2) = (cv.bary[1], cv.bary[2]);
         let normal = filtered(normals, t, corners, ub, vb);
         let light = interpolated([lights[k], lights[k + 1], lights[k + 2]], w1, w2);
-        let (cu, cv_) = (tri.iter().map(|&i| mesh.uv[i][0]).sum::<f64>() / 3.0, tri.iter().map(|&i| mesh.uv[i][1]).sum::<f64>() / 3.0);
-        out.push(Pixel { corners, ub, vb, tri: [k, k + 1, k + 2], w1, w2, normal, light, at: cv.at, surface: light_at(cu, cv_) });
+        out.push(Pixel { corners, ub, vb, tri: [k, k + 1, k + 2], w1, w2, normal, light, at: cv.at, surface: centre[cv.tri] });
     }
     Frame { pixels: out, lights }
 }

@@ -370,8 +370,6 @@ pub struct SceneSpec {
     pub name: String,
     pub scene: Scene,
     pub pipeline: PipelineKind,
-    /// one light for the whole surface (the pipeline's own, or asked for)
-    pub per_surface: bool,
     pub notes: Vec<String>,
 }
 
@@ -494,9 +492,6 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     if encoding == Encoding::Heights && source == Source::NormalMap {
         return Err(at.err(bump.encoding.as_ref().map_or(bump_span.clone(), |e| e.span()), "[bump] encoding = \"heights\": a normal map has no heights (seed 001's path needs a height map or a procedural one)"));
     }
-    if encoding == Encoding::Heights && scene.tex > crate::heightmap::MAX_SIDE {
-        return Err(at.err(bump_span, format!("[bump] the height path holds maps up to {0} × {0}", crate::heightmap::MAX_SIDE)));
-    }
 
     // the light
     let kind = light.kind.as_ref().map_or(LightKind::Point, |k| *k.get_ref());
@@ -517,9 +512,8 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     }
     // the surface
     let surf = &f.surface;
-    let span = |o: &Option<Spanned<Segments>>| o.as_ref().map(|x| x.span());
     if surf.shape == Shape::Quad {
-        unused(span(&surf.segments), "[surface] segments: the quad is two triangles (segments are for a sphere or a torus)")?;
+        unused(surf.segments.as_ref().map(|x| x.span()), "[surface] segments: the quad is two triangles (segments are for a sphere or a torus)")?;
         unused(surf.repeat.as_ref().map(|x| x.span()), "[surface] repeat: the quad holds the map once")?;
         unused(surf.tilt.as_ref().map(|x| x.span()), "[surface] tilt: the quad fills the screen (no camera)")?;
         unused(surf.spin.as_ref().map(|x| x.span()), "[surface] spin: the quad fills the screen (no camera)")?;
@@ -607,10 +601,9 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     if let Some(c) = mat.dst {
         scene.dst = c.map(|b| b.0);
     }
-    let per_surface = !matches!(pipeline, PipelineKind::Cartesian(_)) || per == Some(Per::Surface);
-    scene.per_surface = per_surface;
+    scene.per_surface = !matches!(pipeline, PipelineKind::Cartesian(_)) || per == Some(Per::Surface);
     let name = f.name.unwrap_or_else(|| at.file.to_string());
-    Ok(SceneSpec { name, scene, pipeline, per_surface, notes })
+    Ok(SceneSpec { name, scene, pipeline, notes })
 }
 
 #[cfg(test)]

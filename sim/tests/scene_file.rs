@@ -37,7 +37,7 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     let s = &demo.scene;
     assert_eq!((s.size, s.tex, s.light_pos, s.conc, s.src, s.dst, s.relief), (d.size, d.tex, d.light_pos, d.conc, d.src, d.dst, d.relief));
     assert_eq!(demo.pipeline, PipelineKind::Cartesian(Decode::Seed));
-    assert!(!demo.per_surface);
+    assert!(!demo.scene.per_surface);
     // each pipeline has its scene
     let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline;
     assert_eq!(kind("hemi_oct.toml"), PipelineKind::Cartesian(Decode::HemiOct));
