@@ -584,6 +584,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             PipelineKind::Height
         }
         Encoding::Palette => {
+            one_light("palette")?;
             no(power, "power", "palette")?;
             no(weight, "weight", "palette")?;
             let Some(n) = &bump.palette else {

@@ -124,6 +124,7 @@ fn bad_scene_text_is_one_line_at_its_line_and_column() {
     refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"polar\"\n[light]\nper = \"vertex\"\n", "s.toml:6:7:", &["one light"]);
     refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"heights\"\n[light]\nper = \"surface\"\n[material]\ngloss = 4\n", "s.toml:8:9:", &["no gloss"]);
     refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\n", "s.toml:", &["palette = s_N"]);
+    refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\npalette = 16\n[light]\nper = \"vertex\"\n", "s.toml:7:7:", &["palette pipeline lights a surface with one light"]);
     refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\npalette = 5000\n", "s.toml:5:11:", &["1 to 4096"]);
 }
 
