@@ -72,9 +72,9 @@ enum Cmd {
         /// also write the table as CSV
         #[arg(long)]
         csv: Option<PathBuf>,
-        /// instead of the signals: sweep the unit's width parameters (normalise, sincos, bilinear), print error
-        /// against cost with its Pareto set, and mark the cheapest setting whose max error is within this budget
-        /// (Sq1.10 LSB of the worst component for normalise, 8-bit LSB for sincos and bilinear)
+        /// instead of the signals: sweep the unit's width parameters (normalise, sincos, bilinear, power), print
+        /// error against cost with its Pareto set, and mark the cheapest setting whose max error is within this
+        /// budget (Sq1.10 LSB of the worst component for normalise, 8-bit LSB for the others)
         #[arg(long, value_parser = budget, conflicts_with = "csv")]
         budget: Option<f64>,
         /// with --budget: the part whose cells yosys counts (its family): up5k, ecp5-25f, ecp5-45f or ecp5-85f
