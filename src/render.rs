@@ -74,6 +74,11 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         Window { x: corner(x), y: corner(y), w: WINDOW, h: WINDOW }
     });
 
+    // the window's pixels, refused before any simulation when the surface covers none of them
+    let wprep = win.of(&prep);
+    if wprep.ideal.is_empty() {
+        return Err(format!("--window {},{},{},{}: the surface covers no pixel of it", win.x, win.y, win.w, win.h));
+    }
     // Verilator, the whole frame
     let vl = if verilator && no_vl.is_empty() {
         Some(rtl.verilator(m, &prep, &out.join("verilator").join(m.name), 2)?)
@@ -81,10 +86,6 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         None
     };
     // rust-hdl, the window, traced
-    let wprep = win.of(&prep);
-    if wprep.ideal.is_empty() {
-        return Err(format!("--window {},{},{},{}: the surface covers no pixel of it", win.x, win.y, win.w, win.h));
-    }
     let vcd = out.join(format!("{stem}_window.vcd"));
     let t = Instant::now();
     let hdl = rtl.traced(m, &wprep, &vcd)?;

@@ -524,6 +524,11 @@ fn render_draws_a_torus_and_a_sphere_on_a_background_and_the_rtl_equals_the_mode
         }
         // the default window sits on the surface
         assert!(out.lines().any(|l| l.starts_with("rust-hdl, window 8×8") && l.trim_end().ends_with(" 0")), "{out}");
+        // a window on the background only: one line, before any simulation, nothing written
+        let e = scratch(&format!("render-{stem}-corner"));
+        let (code, _, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", e.to_str().unwrap(), "--window", "0,0,8,8"]);
+        assert!(code != 0 && err.lines().count() == 1 && err.contains("covers no pixel"), "{err}");
+        assert!(std::fs::read_dir(&e).unwrap().next().is_none(), "{stem}: files written");
     }
 }
 
