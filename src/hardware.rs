@@ -71,7 +71,7 @@ pub fn mode_views(unit: &str, family: synth::fpga::Family, synth_tied: TiedSynth
         println!("    {tag:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}", c.lut4, c.ff, c.dsp, c.bram);
         crate::report::blocks_line(&b, family, 13);
         if !ties.is_empty() {
-            sum = synth::fpga::Cells { lut4: sum.lut4 + c.lut4, ff: sum.ff + c.ff, dsp: sum.dsp + c.dsp, bram: sum.bram + c.bram, carry: sum.carry + c.carry };
+            sum = synth::fpga::Cells { lut4: sum.lut4 + c.lut4, ff: sum.ff + c.ff, dsp: sum.dsp + c.dsp, bram: sum.bram + c.bram, carry: sum.carry + c.carry, soft: sum.soft + c.soft };
         }
     }
     println!("    {:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}   (one block per mode)", "sum", sum.lut4, sum.ff, sum.dsp, sum.bram);

@@ -362,7 +362,7 @@ mod tests {
     use super::*;
 
     fn p(max: f64, lut4: u64, bram: u64) -> Point {
-        Point { setting: String::new(), own: false, mean: max / 2.0, max, also: None, cells: synth::fpga::Cells { lut4, ff: 10, dsp: 0, bram, carry: 0 } }
+        Point { setting: String::new(), own: false, mean: max / 2.0, max, also: None, cells: synth::fpga::Cells { lut4, ff: 10, dsp: 0, bram, carry: 0, soft: 0 } }
     }
 
     #[test]

@@ -28,6 +28,7 @@ pub mod cartesian {
     pub mod cart_decode;
     pub mod cart_decode_hemi_oct;
     pub mod cart_pipeline;
+    pub mod cart_surface;
     pub mod light_iter;
 }
 
@@ -72,7 +73,7 @@ pub mod source {
 }
 
 // every unit also at the crate root, by its own name, whatever its family
-pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, light_iter};
+pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, cart_surface, light_iter};
 pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};

@@ -111,6 +111,10 @@ impl Part {
             .into_iter()
             .find(|(_, need, have)| need > have)
             .map(|(name, need, have)| format!("it needs {need} {name}, the {} has {have}", self.title))
+            .map(|o| match r.soft {
+                0 => o,
+                n => format!("{o} (with {n} of its products built in logic to leave {} for the DSP blocks)", r.dsp),
+            })
     }
 }
 
@@ -122,6 +126,8 @@ pub struct Cells {
     pub dsp: u64,
     pub bram: u64,
     pub carry: u64,
+    /// products built in logic rather than DSP blocks (`FABRIC_PRODUCTS`)
+    pub soft: u64,
 }
 
 /// The hard blocks (DSP, block RAM) synthesis kept inside each of a design's top-level instances, read from the
@@ -250,6 +256,7 @@ fn cells(family: Family, log: &str) -> Cells {
         dsp: stat_count(log, dsp, false),
         bram: stat_count(log, bram, false),
         carry: stat_count(log, carry, false),
+        soft: 0,
     }
 }
 
@@ -259,14 +266,77 @@ fn cells(family: Family, log: &str) -> Cells {
 /// selection names.
 pub const KEEP_OPERAND_COPIES: &str = "proc; setattr -set keep 1 *$mop_*/t:$dff";
 
-fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>) -> Result<String, String> {
-    yosys_with(dir, family, top, files, json, KEEP_OPERAND_COPIES)
+/// The iCE40 flow's rule for a design with more products than the UP5K has SB_MAC16 blocks, and the yosys steps
+/// that prepare it: the design flattened and its widths reduced (`opt -full` strips the constant-zero tops of the
+/// 16-bit operands rust-hdl multiplies), the products mutually exclusive under a mux merged (`share`); then each
+/// `$mul` left is a DSP candidate, and the smallest (A × B operand bits, then name) beyond the part's count are
+/// built in logic, through yosys's own path for products too small for a DSP (`$__soft_mul`). A design with no
+/// more products than the part has blocks is synthesised as before, unprepared.
+pub const FABRIC_PRODUCTS: &str = "iCE40: products beyond 8, smallest first, in logic";
+const PREPARE: &str = "flatten; opt -full; wreduce; opt_clean; share; opt_clean";
+
+/// A multiplier cell of a prepared design: its name and operand widths.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Product {
+    pub name: String,
+    pub a: u64,
+    pub b: u64,
 }
 
-fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>, before: &str) -> Result<String, String> {
+/// The `$mul` cells of yosys's `dump` output.
+fn products(dump: &str) -> Vec<Product> {
+    let mut out: Vec<Product> = vec![];
+    for l in dump.lines().map(str::trim) {
+        if let Some(name) = l.strip_prefix("cell $mul ") {
+            out.push(Product { name: name.trim().to_string(), a: 0, b: 0 });
+        } else if let (Some(p), Some(w)) = (out.last_mut(), l.strip_prefix("parameter \\")) {
+            let mut f = w.split_whitespace();
+            match (f.next(), f.next().and_then(|x| x.parse().ok())) {
+                (Some("A_WIDTH"), Some(n)) => p.a = n,
+                (Some("B_WIDTH"), Some(n)) => p.b = n,
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
+/// The products to build in logic so that at most `limit` are left for DSP blocks: the smallest first.
+fn to_fabric(mut all: Vec<Product>, limit: usize) -> Vec<Product> {
+    let n = all.len().saturating_sub(limit);
+    all.sort_by(|x, y| (x.a * x.b, &x.name).cmp(&(y.a * y.b, &y.name)));
+    all.truncate(n);
+    all
+}
+
+/// yosys on a design, returning its log and how many of its products were built in logic (`FABRIC_PRODUCTS`).
+fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>) -> Result<(String, u64), String> {
+    if family == Family::Ice40 {
+        let mut script = String::new();
+        for f in files {
+            let _ = write!(script, "read_verilog {f}; ");
+        }
+        let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; write_rtlil {top}.prepared.il; tee -q -o {top}.products dump t:$mul");
+        tools::run(dir, "yosys", &["-q", "-p", &script])?;
+        let dump = std::fs::read_to_string(dir.join(format!("{top}.products"))).map_err(|e| format!("no yosys product list: {e}"))?;
+        let soft = to_fabric(products(&dump), UP5K.dsp as usize);
+        if !soft.is_empty() {
+            let cells: Vec<String> = soft.iter().map(|p| format!("{top}/{}", p.name)).collect();
+            let before = format!("chtype -set $__soft_mul {}", cells.join(" "));
+            let log = yosys_with(dir, family, top, &[], json, &before, Some(&format!("{top}.prepared.il")))?;
+            return Ok((log, soft.len() as u64));
+        }
+    }
+    Ok((yosys_with(dir, family, top, files, json, KEEP_OPERAND_COPIES, None)?, 0))
+}
+
+fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>, before: &str, rtlil: Option<&str>) -> Result<String, String> {
     let mut script = String::new();
     for f in files {
         let _ = write!(script, "read_verilog {f}; ");
+    }
+    if let Some(il) = rtlil {
+        let _ = write!(script, "read_rtlil {il}; ");
     }
     let _ = write!(script, "hierarchy -top {top}; {before}; {} -top {top}", family.synth_command());
     if let Some(j) = json {
@@ -284,19 +354,20 @@ fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Optio
 pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
     let v = export::<U>();
     v.write(dir)?;
-    let key = cache::key(&format!("cells\n{}\n{KEEP_OPERAND_COPIES}\nblocks by type\n{}", family.synth_command(), v.text), &["yosys"]);
+    let key = cache::key(&format!("cells\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\nblocks by type\n{}", family.synth_command(), v.text), &["yosys"]);
     let saved = dir.join(format!("{family:?}.cells"));
     let read = |t: &str| match t.split_whitespace().filter_map(|x| x.parse().ok()).collect::<Vec<u64>>()[..] {
-        [lut4, ff, dsp, bram, carry] => Some(Cells { lut4, ff, dsp, bram, carry }),
+        [lut4, ff, dsp, bram, carry, soft] => Some(Cells { lut4, ff, dsp, bram, carry, soft }),
         _ => None,
     };
+    let text = |c: &Cells| format!("{} {} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft);
     if let Some(c) = cache::get(&key, "cells").as_deref().and_then(read) {
-        write_atomic(&saved, format!("{} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry).as_bytes())?;
+        write_atomic(&saved, text(&c).as_bytes())?;
         return Ok(c);
     }
-    let log = yosys(dir, family, U::NAME, &[&format!("{}.v", U::NAME)], None)?;
-    let c = cells(family, &log);
-    let text = format!("{} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry);
+    let (log, soft) = yosys(dir, family, U::NAME, &[&format!("{}.v", U::NAME)], None)?;
+    let c = Cells { soft, ..cells(family, &log) };
+    let text = text(&c);
     write_atomic(&saved, text.as_bytes())?;
     cache::put(&key, "cells", &text)?;
     Ok(c)
@@ -335,7 +406,7 @@ pub fn synth_tied<U: StreamUnit>(dir: &Path, family: Family, tag: &str, ties: &[
     );
     let w = format!("{top}.v");
     write_atomic(&dir.join(&w), text.as_bytes())?;
-    let log = yosys_with(dir, family, &top, &[&format!("{}.v", U::NAME), &w], None, "proc")?;
+    let log = yosys_with(dir, family, &top, &[&format!("{}.v", U::NAME), &w], None, "proc", None)?;
     Ok((cells(family, &log), Blocks::read_under(dir, &top, family, "dut.")))
 }
 
@@ -452,8 +523,8 @@ impl SynthReport {
         let o = |x: Option<String>| x.unwrap_or_default();
         let c = &self.cells;
         format!(
-            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nblocks={}\n",
-            self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, self.latency, self.choice.replace('\n', " "),
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nblocks={}\n",
+            self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, self.latency, self.choice.replace('\n', " "),
             o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
             o(self.critical.clone()), o(self.place_error.clone()), self.blocks.to_text()
         )
@@ -473,6 +544,7 @@ impl SynthReport {
                 dsp: get("dsp")?.parse().ok()?,
                 bram: get("bram")?.parse().ok()?,
                 carry: get("carry")?.parse().ok()?,
+                soft: get("soft")?.parse().ok()?,
             },
             latency: get("latency")?.parse().ok()?,
             choice: get("choice")?.to_string(),
@@ -489,7 +561,7 @@ impl SynthReport {
 /// Verilog, the wrapper, the part, the target frequency and the tools' versions are all unchanged (place-and-route
 /// takes minutes; the demo asks for it on every run). The report is written into `dir` either way.
 pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
-    let inputs = format!("place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{freq_mhz}\nblocks by type", export::<U>().text, wrapper::<U>(), part.name);
+    let inputs = format!("place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\n{freq_mhz}\nblocks by type", export::<U>().text, wrapper::<U>(), part.name);
     let pnr = match part.family {
         Family::Ice40 => "nextpnr-ice40".to_string(),
         Family::Ecp5 => tools::nextpnr_ecp5().unwrap_or_else(|| "nextpnr-ecp5".into()),
@@ -514,7 +586,7 @@ mod tests {
     #[test]
     fn a_saved_report_reads_back_whole() {
         let r = SynthReport {
-            unit: "u".into(), part: "ecp5-45f".into(), cells: Cells { lut4: 1, ff: 3, dsp: 4, bram: 5, carry: 2 },
+            unit: "u".into(), part: "ecp5-45f".into(), cells: Cells { lut4: 1, ff: 3, dsp: 4, bram: 5, carry: 2, soft: 9 },
             latency: 8, choice: "not up5k: it needs 9 SB_MAC16".into(), lc: Some(6), fmax_mhz: Some(7.5),
             critical: Some("a → b (1 ns logic, 2 ns routing)".into()), place_error: Some("ERROR: no BELs".into()),
             blocks: Blocks { by_instance: vec![("unit$0".into(), 3, 0), ("norm".into(), 6, 1)] },
@@ -541,7 +613,7 @@ mod tests {
 
     #[test]
     fn overflow_names_the_first_resource_past_the_part() {
-        let c = Cells { lut4: 2269, ff: 3341, dsp: 36, bram: 4, carry: 300 };
+        let c = Cells { lut4: 2269, ff: 3341, dsp: 36, bram: 4, carry: 300, soft: 0 };
         let o = ECP5_25F.overflow(&c).unwrap();
         assert!(o.contains("36 MULT18X18D") && o.contains("has 28"), "{o}");
         assert_eq!(ECP5_45F.overflow(&c), None);
@@ -552,6 +624,23 @@ mod tests {
         // two CCU2C are four LUT4s of the part
         assert!(ECP5_25F.overflow(&Cells { lut4: 24285, carry: 2, ..Default::default() }).is_some());
         assert_eq!(ECP5_25F.overflow(&Cells { lut4: 24284, carry: 2, ..Default::default() }), None);
+    }
+
+    #[test]
+    fn the_smallest_products_beyond_the_dsp_count_go_into_logic() {
+        // yosys's dump of three $mul cells (the shape `dump t:$mul` writes), one of them 8 × 8
+        let dump = "  cell $mul $flatten\\dot.$mul$u.v:7$3\n    parameter \\A_SIGNED 0\n    parameter \\A_WIDTH 12\n    parameter \\B_WIDTH 12\n    connect \\A x\n  end\n\
+                    cell $mul $flatten\\blend.$mul$u.v:9$5\n    parameter \\A_WIDTH 8\n    parameter \\B_WIDTH 8\n  end\n\
+                    cell $mul $flatten\\norm.$mul$u.v:4$1\n    parameter \\A_WIDTH 10\n    parameter \\B_WIDTH 13\n  end\n";
+        let all = products(dump);
+        assert_eq!(all.iter().map(|p| (p.a, p.b)).collect::<Vec<_>>(), [(12, 12), (8, 8), (10, 13)]);
+        assert_eq!(all[1].name, "$flatten\\blend.$mul$u.v:9$5");
+        assert!(to_fabric(all.clone(), 3).is_empty());
+        let soft = to_fabric(all.clone(), 1);
+        assert_eq!(soft.iter().map(|p| p.a * p.b).collect::<Vec<_>>(), [64, 130]);
+        assert_eq!(to_fabric(all, 0).len(), 3);
+        let o = UP5K.overflow(&Cells { lut4: 6000, dsp: 8, soft: 25, ..Default::default() }).unwrap();
+        assert!(o.contains("6000 SB_LUT4") && o.contains("25 of its products built in logic"), "{o}");
     }
 
     #[test]

@@ -19,6 +19,7 @@ pub mod cartesian {
     pub mod cart_decode_hemi_oct;
     pub mod cart_encode;
     pub mod cart_pipeline;
+    pub mod cart_surface;
     pub mod light_iter;
 }
 
@@ -63,7 +64,7 @@ pub mod stats;
 pub mod unit;
 
 // every unit also at the crate root, by its own name, whatever its family
-pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, light_iter};
+pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, cart_surface, light_iter};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
 pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, texture_filter};

@@ -185,6 +185,26 @@ macro_rules! unit_table {
                     ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];
+                cart_surface: $crate::cart_surface::MODEL, rtl::cart_surface::CartSurface, [
+                    ("filter$0$wide", "as in cart_pipeline"),
+                    ("filter$1$wide", "as filter$0$wide"),
+                ];
+                cart_surface_matte: $crate::cart_surface::MODEL_MATTE, rtl::cart_surface::CartSurfaceMatte, [
+                    ("filter$0$wide", "as in cart_pipeline"),
+                    ("filter$1$wide", "as filter$0$wide"),
+                ];
+                cart_surface_hemi_oct: $crate::cart_surface::MODEL_HEMI_OCT, rtl::cart_surface::CartSurfaceHemiOct, [
+                    ("filter$0$wide", "as in cart_pipeline"),
+                    ("filter$1$wide", "as filter$0$wide"),
+                ];
+                cart_surface_hemi_oct_matte: $crate::cart_surface::MODEL_HEMI_OCT_MATTE, rtl::cart_surface::CartSurfaceHemiOctMatte, [
+                    ("filter$0$wide", "as in cart_pipeline"),
+                    ("filter$1$wide", "as filter$0$wide"),
+                ];
+                cart_surface_nearest: $crate::cart_surface::MODEL_NEAREST, rtl::cart_surface::CartSurfaceNearest, [];
+                cart_surface_nearest_matte: $crate::cart_surface::MODEL_NEAREST_MATTE, rtl::cart_surface::CartSurfaceNearestMatte, [];
+                cart_surface_nearest_hemi_oct: $crate::cart_surface::MODEL_NEAREST_HEMI_OCT, rtl::cart_surface::CartSurfaceNearestHemiOct, [];
+                cart_surface_nearest_hemi_oct_matte: $crate::cart_surface::MODEL_NEAREST_HEMI_OCT_MATTE, rtl::cart_surface::CartSurfaceNearestHemiOctMatte, [];
                 height_addr: $crate::height_addr::MODEL, rtl::height_addr::HeightAddr, [];
                 height_fetch: $crate::height_fetch::MODEL, rtl::height_fetch::HeightFetch, [];
                 replicate: $crate::replicate::MODEL, rtl::replicate::Replicate, [];

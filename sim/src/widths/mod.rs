@@ -232,7 +232,10 @@ fn signal(dir: &str, t: Ty) -> Ty {
 
 /// The invocations, in the same text, of each `macro_rules!` the text defines, expanded by substituting their
 /// arguments for the first rule's plain `$name:kind` parameters (repetitions such as `$(#[$doc:meta])*` are left
-/// out on both sides): enough for the rtl's own macros that declare blocks.
+/// out on both sides), and for the parameters of its optional groups (`$(, marker: $a:ident, $b:ident)?`), which an
+/// invocation binds by naming the marker (`marker: x, y`): a group of the body (`$( ... )?`) is kept when the
+/// invocation bound every parameter it names and dropped when not. Enough for the rtl's own macros that declare
+/// blocks.
 fn expand_local_macros(s: &str) -> Vec<String> {
     let mut out = vec![];
     for (k, _) in s.match_indices("macro_rules!") {
@@ -253,21 +256,27 @@ fn expand_local_macros(s: &str) -> Vec<String> {
             continue;
         }
         let Some(body) = p.balanced(b'{', b'}') else { continue };
-        // the matcher without its repetitions, then its parameters in order
+        // the matcher without its repetitions, then its parameters in order; the optional groups' markers and
+        // parameters apart
+        let names = |t: &str| -> Vec<String> { t.split('$').skip(1).filter_map(|t| t.split_once(':').map(|(n, _)| n.trim().to_string())).collect() };
         let mut plain = String::new();
+        let mut groups: Vec<(String, Vec<String>)> = vec![];
         let mut m = Parser { s: matcher.as_bytes(), i: 0 };
         while m.i < m.s.len() {
             if m.s[m.i..].starts_with(b"$(") {
                 m.i += 2;
-                let _ = m.balanced(b'(', b')');
+                let inner = m.balanced(b'(', b')').unwrap_or_default();
+                if m.s.get(m.i + 1) == Some(&b'?') {
+                    let marker = inner.split('$').next().unwrap_or("").trim_matches(|c: char| c == ',' || c.is_whitespace()).trim_end_matches(':');
+                    groups.push((marker.to_string(), names(&inner)));
+                }
                 m.i += 2; // `)` and the repetition's `*`, `+` or `?`
                 continue;
             }
             plain.push(m.s[m.i] as char);
             m.i += 1;
         }
-        let mut params: Vec<String> =
-            plain.split('$').skip(1).filter_map(|t| t.split_once(':').map(|(n, _)| n.trim().to_string())).collect();
+        let mut params: Vec<String> = names(&plain);
         // invocations `name!(args)` / `name! { args }`
         for (j, _) in s.match_indices(&format!("{name}!")) {
             if j > 0 && (s.as_bytes()[j - 1].is_ascii_alphanumeric() || s.as_bytes()[j - 1] == b'_') {
@@ -282,14 +291,28 @@ fn expand_local_macros(s: &str) -> Vec<String> {
             q.i += 1;
             let Some(args) = q.balanced(open, close) else { continue };
             let args = top_level_commas(&args);
-            if args.len() != params.len() {
+            if args.len() < params.len() {
                 continue;
             }
+            let mut bound: Vec<(String, String)> = params.iter().cloned().zip(args.iter().cloned()).collect();
+            let mut rest = &args[params.len()..];
+            for (marker, group) in &groups {
+                let Some(first) = rest.first().and_then(|a| a.strip_prefix(marker.as_str())).and_then(|a| a.trim_start().strip_prefix(':')) else { continue };
+                if marker.is_empty() || rest.len() < group.len() {
+                    break;
+                }
+                let mut values = vec![first.trim().to_string()];
+                values.extend(rest[1..group.len()].iter().cloned());
+                bound.extend(group.iter().cloned().zip(values));
+                rest = &rest[group.len()..];
+            }
+            if !rest.is_empty() {
+                continue;
+            }
+            let mut text = optional_groups(&body, &bound);
             // the longest names first, so that `$dec_mod` is not read as `$dec` + `_mod`
-            let mut pairs: Vec<(&String, &String)> = params.iter().zip(&args).collect();
-            pairs.sort_by_key(|(n, _)| std::cmp::Reverse(n.len()));
-            let mut text = body.clone();
-            for (n, a) in pairs {
+            bound.sort_by_key(|(n, _)| std::cmp::Reverse(n.len()));
+            for (n, a) in &bound {
                 text = text.replace(&format!("${n}"), a.trim_matches('"'));
             }
             out.push(text);
@@ -297,6 +320,36 @@ fn expand_local_macros(s: &str) -> Vec<String> {
         params.clear();
     }
     out
+}
+
+/// A macro body with each optional group `$( ... )?` kept (its content alone) when every `$name` in it is bound,
+/// and dropped when not; other repetitions are left as they are.
+fn optional_groups(body: &str, bound: &[(String, String)]) -> String {
+    let mut out: Vec<u8> = vec![];
+    let mut p = Parser { s: body.as_bytes(), i: 0 };
+    while p.i < p.s.len() {
+        if p.s[p.i..].starts_with(b"$(") {
+            let start = p.i;
+            p.i += 2;
+            let inner = p.balanced(b'(', b')').unwrap_or_default();
+            if p.s.get(p.i + 1) == Some(&b'?') {
+                let used = inner.split('$').skip(1).map(|t| t.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect::<String>());
+                let all_bound = used.filter(|n| !n.is_empty()).all(|n| bound.iter().any(|(b, _)| *b == n));
+                if all_bound {
+                    out.extend_from_slice(inner.as_bytes());
+                    out.push(b' ');
+                }
+                p.i += 2;
+            } else {
+                p.i = start + 2;
+                out.extend_from_slice(b"$(");
+            }
+            continue;
+        }
+        out.push(p.s[p.i]);
+        p.i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
 }
 
 /// Every struct of the rtl's source (and of the library blocks it uses), by name; every type alias; and every
@@ -713,6 +766,21 @@ pub fn sites(f: &Formats, proof: &bounds::Proof) -> Vec<Site> {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn a_macro_s_optional_groups_are_kept_where_the_invocation_names_them() {
+        let src = "macro_rules! m { ($t:ident, $n:literal $(, gloss: $g:ident, $c:ident)? $(, filter: $f:ident)?) => { \
+                   struct $t { a: U8, $($c: U8,)? $(pub $g: Gloss,)? $(pub $f: [Bilinear; 2],)? } }; }\n\
+                   m!(A, 1);\nm!(B, 2, gloss: gl, conc);\nm!(C, 3, filter: filt);\nm!(D, 4, gloss: gl, conc, filter: filt);";
+        let x = expand_local_macros(src);
+        let squash = |t: &str| t.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert_eq!(x.len(), 4, "{x:?}");
+        assert_eq!(squash(&x[0]), "struct A { a: U8, }");
+        assert_eq!(squash(&x[1]), "struct B { a: U8, conc: U8, pub gl: Gloss, }");
+        assert_eq!(squash(&x[2]), "struct C { a: U8, pub filt: [Bilinear; 2], }");
+        assert_eq!(squash(&x[3]), "struct D { a: U8, conc: U8, pub gl: Gloss, pub filt: [Bilinear; 2], }");
+    }
+
     use super::*;
 
     #[test]

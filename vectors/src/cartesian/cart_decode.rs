@@ -50,8 +50,13 @@ pub fn exact_with_l1(texel_x: u8, texel_z: u8, l1: i64) -> Bump {
 /// What the texel means: the L1-scaled direction (x/127, 1 − |x| − |z|, z/127), projected onto the diamond the same
 /// way when outside it, as a unit vector.
 pub fn ideal(texel_x: u8, texel_z: u8) -> [f64; 3] {
-    let x = ((texel_x as f64).min(254.0) - 127.0) / 127.0;
-    let z = ((texel_z as f64).min(254.0) - 127.0) / 127.0;
+    ideal_real(texel_x as f64, texel_z as f64)
+}
+
+/// The same meaning of a texel read between codes (a filtered texel in reals).
+pub fn ideal_real(texel_x: f64, texel_z: f64) -> [f64; 3] {
+    let x = (texel_x.min(254.0) - 127.0) / 127.0;
+    let z = (texel_z.min(254.0) - 127.0) / 127.0;
     let (mut ax, mut az) = (x.abs(), z.abs());
     if ax + az > 1.0 {
         let d = (ax + az - 1.0) / 2.0;

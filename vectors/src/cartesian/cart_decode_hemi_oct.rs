@@ -27,8 +27,13 @@ pub fn exact(u: u8, v: u8) -> [i64; 3] {
 /// What the texel means: a = U/127.5 − 1 = xs + zs, b = V/127.5 − 1 = xs − zs, so xs = (a + b)/2, zs = (a − b)/2,
 /// y = 1 − |xs| − |zs|; as a unit vector.
 pub fn ideal(u: u8, v: u8) -> [f64; 3] {
-    let a = u as f64 / 127.5 - 1.0;
-    let b = v as f64 / 127.5 - 1.0;
+    ideal_real(u as f64, v as f64)
+}
+
+/// The same meaning of (U, V) read between codes (a filtered texel in reals).
+pub fn ideal_real(u: f64, v: f64) -> [f64; 3] {
+    let a = u / 127.5 - 1.0;
+    let b = v / 127.5 - 1.0;
     let (xs, zs) = ((a + b) / 2.0, (a - b) / 2.0);
     let d = [xs, 1.0 - xs.abs() - zs.abs(), zs];
     let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
