@@ -49,7 +49,11 @@ enum Cmd {
     /// Synthesise and place a unit (through a serial I/O wrapper): LUT, FF, DSP, BRAM, fmax, each as a share of
     /// the part
     Synth {
-        unit: String,
+        #[arg(required_unless_present = "scene")]
+        unit: Option<String>,
+        /// instead of a unit: the pipeline this scene file is rendered by
+        #[arg(long, conflicts_with = "unit")]
+        scene: Option<PathBuf>,
         /// up5k, ecp5-25f, ecp5-45f or ecp5-85f; default: the UP5K if the unit fits it, else the smallest ECP5
         #[arg(long)]
         target: Option<String>,
@@ -373,7 +377,17 @@ pub fn main() -> Result<(), String> {
             }
             with_unit!(name.as_str(), U => crate::widths::run::<U>(m, count, seed, csv.as_deref()))?;
         }
-        Cmd::Synth { unit: name, target, dir, freq } => {
+        Cmd::Synth { unit: name, scene, target, dir, freq } => {
+            let name = match (name, scene) {
+                (Some(n), _) => n,
+                (None, Some(scene)) => {
+                    let spec = sim::scene_file::load(&scene)?;
+                    let pipe = crate::render::pipeline(&spec);
+                    println!("{}: {} ({})", spec.name, pipe.model().name, pipe.units().join(" → "));
+                    pipe.model().name.to_string()
+                }
+                (None, None) => return Err("synth: name a unit or --scene FILE".into()),
+            };
             unit(&name)?;
             let part = target.as_deref().map(synth::fpga::part).transpose()?;
             if let Some(f) = freq {

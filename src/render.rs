@@ -3,7 +3,7 @@
 //! for a window, traced to a VCD. The rtl paths must equal the model on every pixel they render; the command fails
 //! if they do not. The scene is read (or refused) before anything is written.
 
-use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar};
+use sim::pipeline::{CartSurface, Cartesian, Height, Palette, Pipeline, Polar};
 use sim::render::{self, Window};
 use sim::scene_file::{PipelineKind, SceneSpec};
 use std::path::Path;
@@ -29,6 +29,7 @@ pub fn parse_window(s: &str) -> Result<Window, String> {
 pub fn pipeline(spec: &SceneSpec) -> Box<dyn Pipeline> {
     match spec.pipeline {
         PipelineKind::Cartesian(decode) => Box::new(Cartesian { decode }),
+        PipelineKind::CartSurface(variant) => Box::new(CartSurface { variant }),
         PipelineKind::Polar { scale, pw, h } => Box::new(Polar { scale, pw, h }),
         PipelineKind::Height => Box::new(Height::new(&spec.scene)),
         PipelineKind::Palette(n) => Box::new(Palette::new(n, &spec.scene)),

@@ -118,6 +118,9 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
     println!("  {dsp:<12} {}", share(r.cells.dsp, p.dsp));
     println!("  {bram:<12} {}", share(r.cells.bram, p.bram));
     println!("  {carry:<12} {:>6}", r.cells.carry);
+    if r.cells.soft > 0 {
+        println!("  {} of its products built in logic, the smallest first, to fit the {} {dsp}", r.cells.soft, p.dsp);
+    }
     match (&r.place_error, r.lc, r.fmax_mhz) {
         (Some(e), _, _) => println!("  does not place: {e}"),
         (None, lc, f) => {

@@ -13,7 +13,7 @@ use synth::fpga::{Fit, Part};
 use vectors::cart_encode::{self, Encoder};
 use vectors::cart_pipeline::{self, Decode};
 use vectors::polar_encode::{self, Scale};
-use vectors::{bilinear, blend, gloss, height_addr, height_pipeline, light_iter, palette_pipeline, polar_pipeline, UnitModel};
+use vectors::{bilinear, blend, cart_surface, gloss, height_addr, height_pipeline, light_iter, palette_pipeline, polar_pipeline, UnitModel};
 
 /// The f64 ideal of one pixel.
 #[derive(Clone, Copy, Debug)]
@@ -192,21 +192,9 @@ impl Pipeline for Cartesian {
     }
     fn prepare(&self, scene: &Scene) -> Prepared {
         use cart_pipeline::input;
-        let encoder = match self.decode {
-            Decode::Seed => Encoder::Seed,
-            Decode::HemiOct => Encoder::HemiOct,
-        };
-        let t = scene.tex;
-        let normals = scene.normals();
-        let texels: Vec<(u8, u8)> = normals.iter().map(|&n| cart_encode::encode(encoder, n)).collect();
-        let frame = raster::frame(scene, &normals);
-        let q: Vec<[i64; 3]> = frame.lights.iter().map(|&d| light_iter::quantise_vertex(d)).collect();
-        let mut p = Prepared::new(scene.size);
-        for px in frame.pixels {
-            p.at.push(px.at);
-            let mut x = vec![0; cart_pipeline::INPUTS.len()];
-            for (slot, (i, j)) in cart_pipeline::TEXELS.iter().zip(px.corners) {
-                (x[slot[0]], x[slot[1]]) = (texels[j * t + i].0 as i64, texels[j * t + i].1 as i64);
+        cartesian_prepare(scene, self.decode, cart_pipeline::INPUTS.len(), &|x, texel, px, q| {
+            for (slot, k) in cart_pipeline::TEXELS.iter().zip(0..4) {
+                (x[slot[0]], x[slot[1]]) = texel(k);
             }
             (x[input::ublend], x[input::vblend]) = (px.ub, px.vb);
             for (l, k) in cart_pipeline::LIGHTS.iter().zip(px.tri) {
@@ -220,14 +208,7 @@ impl Pipeline for Cartesian {
             for c in 0..3 {
                 (x[cart_pipeline::SRC[c]], x[cart_pipeline::DST[c]]) = (scene.src[c], scene.dst[c]);
             }
-            p.inputs.push(x);
-            let (nrm, ld) = (px.normal, px.light);
-            let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
-            let pi = gloss::ideal_real(scene.conc, xd);
-            let shade = pi / 1023.0 * 255.0;
-            p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: ld });
-        }
-        p
+        })
     }
     fn shade(&self, out: &[i64]) -> f64 {
         out[cart_pipeline::output::p] as f64 / 4.0
@@ -241,6 +222,137 @@ impl Pipeline for Cartesian {
     }
     fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
         Some(cart_pipeline::exact_trace_with(self.decode, input).normal.map(|c| c as f64))
+    }
+}
+
+/// A Cartesian pipeline's pixels: the scene's normals encoded as texels, the frame rasterised, and for each covered
+/// pixel its input vector (`fill` sets the ports from the pixel, its four texels by the bilinear unit's order and
+/// the frame's vertex lights quantised) beside the ideal: the filtered float normal against the pixel's own light,
+/// through the gloss curve in reals.
+type FillCartesian<'a> = &'a dyn Fn(&mut [i64], &dyn Fn(usize) -> (i64, i64), &raster::Pixel, &[[i64; 3]]);
+
+fn cartesian_prepare(scene: &Scene, decode: Decode, ports: usize, fill: FillCartesian) -> Prepared {
+    let encoder = match decode {
+        Decode::Seed => Encoder::Seed,
+        Decode::HemiOct => Encoder::HemiOct,
+    };
+    let t = scene.tex;
+    let normals = scene.normals();
+    let texels: Vec<(u8, u8)> = normals.iter().map(|&n| cart_encode::encode(encoder, n)).collect();
+    let frame = raster::frame(scene, &normals);
+    let q: Vec<[i64; 3]> = frame.lights.iter().map(|&d| light_iter::quantise_vertex(d)).collect();
+    let mut p = Prepared::new(scene.size);
+    for px in frame.pixels {
+        p.at.push(px.at);
+        let mut x = vec![0; ports];
+        let texel = |k: usize| {
+            let (i, j) = px.corners[k];
+            (texels[j * t + i].0 as i64, texels[j * t + i].1 as i64)
+        };
+        fill(&mut x, &texel, &px, &q);
+        p.inputs.push(x);
+        let (nrm, ld) = (px.normal, px.light);
+        let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
+        let shade = gloss::ideal_real(scene.conc, xd) / 1023.0 * 255.0;
+        p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: ld });
+    }
+    p
+}
+
+/// Seed 000's Cartesian pipeline built for a scene with one light per surface (`cart_surface` and its variants):
+/// the surface's light made a unit vector once (as the full pipeline's light path would make it) and sent with
+/// each pixel; no gloss unit when C = 0; the texels bilinear or the nearest one.
+pub struct CartSurface {
+    pub variant: cart_surface::Variant,
+}
+
+impl Pipeline for CartSurface {
+    fn label(&self) -> &'static str {
+        // `Variant::ALL`'s order
+        const LABELS: [&str; 8] = [
+            "Cartesian, one light", "Cartesian, one light, matte", "hemi-oct, one light", "hemi-oct, one light, matte",
+            "Cartesian, nearest, one light", "Cartesian, nearest, one light, matte", "hemi-oct, nearest, one light",
+            "hemi-oct, nearest, one light, matte",
+        ];
+        LABELS[cart_surface::Variant::ALL.iter().position(|v| *v == self.variant).unwrap_or(0)]
+    }
+    fn model(&self) -> &'static UnitModel {
+        self.variant.model()
+    }
+    fn rtl(&self) -> &'static dyn RtlPaths {
+        use rtl::cart_surface::*;
+        match self.model().name {
+            "cart_surface" => &Rtl::<CartSurface>::PATHS,
+            "cart_surface_matte" => &Rtl::<CartSurfaceMatte>::PATHS,
+            "cart_surface_hemi_oct" => &Rtl::<CartSurfaceHemiOct>::PATHS,
+            "cart_surface_hemi_oct_matte" => &Rtl::<CartSurfaceHemiOctMatte>::PATHS,
+            "cart_surface_nearest" => &Rtl::<CartSurfaceNearest>::PATHS,
+            "cart_surface_nearest_matte" => &Rtl::<CartSurfaceNearestMatte>::PATHS,
+            "cart_surface_nearest_hemi_oct" => &Rtl::<CartSurfaceNearestHemiOct>::PATHS,
+            _ => &Rtl::<CartSurfaceNearestHemiOctMatte>::PATHS,
+        }
+    }
+    fn units(&self) -> &'static [&'static str] {
+        let v = self.variant;
+        // [filter?] decode, normalise, dot3, [gloss], blend
+        const ALL: [[[&[&str]; 2]; 2]; 2] = [
+            [
+                [&["bilinear", "cart_decode", "normalise", "dot3", "blend"], &["bilinear", "cart_decode", "normalise", "dot3", "gloss", "blend"]],
+                [&["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "blend"], &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"]],
+            ],
+            [
+                [&["cart_decode", "normalise", "dot3", "blend"], &["cart_decode", "normalise", "dot3", "gloss", "blend"]],
+                [&["cart_decode_hemi_oct", "normalise", "dot3", "blend"], &["cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"]],
+            ],
+        ];
+        ALL[v.nearest as usize][(v.decode == Decode::HemiOct) as usize][v.gloss as usize]
+    }
+    fn describe(&self, scene: &Scene) -> String {
+        let v = self.variant;
+        format!(
+            "{} texels, {}, one light per surface (a unit vector per surface, no light interpolation or light normaliser), {}",
+            if v.decode == Decode::Seed { "seed-encoded" } else { "hemi-octahedral" },
+            if v.nearest { "the nearest texel (no filter)" } else { "bilinear" },
+            if v.gloss { format!("gloss C = {}", scene.conc) } else { "matte (C = 0: no gloss unit)".into() }
+        )
+    }
+    fn prepare(&self, scene: &Scene) -> Prepared {
+        let at = self.variant.layout();
+        cartesian_prepare(scene, self.variant.decode, at.inputs.len(), &|x, texel, px, _| {
+            match at.texels {
+                cart_surface::Texels::Bilinear { corners, ublend, vblend } => {
+                    for (slot, k) in corners.iter().zip(0..4) {
+                        (x[slot[0]], x[slot[1]]) = texel(k);
+                    }
+                    (x[ublend], x[vblend]) = (px.ub, px.vb);
+                }
+                // the texel nearest the sample: the corner the blend factors round to
+                cart_surface::Texels::Nearest(t) => (x[t[0]], x[t[1]]) = texel((px.ub >= 128) as usize + 2 * (px.vb >= 128) as usize),
+            }
+            for (k, c) in at.light.iter().zip(cart_surface::light(light_iter::quantise_vertex(px.surface))) {
+                x[*k] = c;
+            }
+            if let Some(c) = at.conc {
+                x[c] = scene.conc;
+            }
+            x[at.mode] = 1;
+            for c in 0..3 {
+                (x[at.src[c]], x[at.dst[c]]) = (scene.src[c], scene.dst[c]);
+            }
+        })
+    }
+    fn shade(&self, out: &[i64]) -> f64 {
+        out[cart_surface::output::p] as f64 / 4.0
+    }
+    fn shade_name(&self) -> &'static str {
+        "P/4"
+    }
+    fn colour(&self, out: &[i64]) -> [u8; 3] {
+        use cart_surface::output;
+        [out[output::out_r], out[output::out_g], out[output::out_b]].map(|c| c as u8)
+    }
+    fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
+        Some(cart_surface::exact_trace(self.variant, input).normal.map(|c| c as f64))
     }
 }
 
@@ -564,7 +676,6 @@ impl Pipeline for Palette {
         let b = self.built()?;
         Some(vectors::normalise::exact(b.codes[input[palette_pipeline::input::idx] as usize]).map(|c| c as f64 / 1024.0))
     }
-    /// ⌈log2 s_N⌉
     fn surface_ideal(&self, scene: &Scene, ideal: &Ideal) -> Option<f64> {
         let (n, l) = (ideal.normal, scene.light_dir(0.5, 0.5));
         Some(gloss::ideal_real(scene.conc, (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]).max(0.0) * 1023.0) / 1023.0 * 255.0)
@@ -578,6 +689,7 @@ impl Pipeline for Palette {
         let builds = p.inputs[..p.prologue].iter().filter(|x| read.contains(&x[input::b_idx]));
         builds.chain(first).cloned().collect()
     }
+    /// ⌈log2 s_N⌉
     fn bits_per_texel(&self) -> u32 {
         vectors::palette::quantize::index_bits(self.s_n)
     }
@@ -588,7 +700,7 @@ mod tests {
     use super::*;
 
     fn all() -> Vec<Box<dyn Pipeline>> {
-        vec![
+        let mut v: Vec<Box<dyn Pipeline>> = vec![
             Box::new(Cartesian { decode: Decode::Seed }),
             Box::new(Cartesian { decode: Decode::HemiOct }),
             Box::new(Polar { scale: Scale::Seed, pw: 16, h: 1.0 }),
@@ -596,7 +708,24 @@ mod tests {
             Box::new(Height::new(&Scene::default())),
             Box::new(Palette::new(256, &Scene::default())),
             Box::new(Palette::new(4096, &Scene::default())),
-        ]
+        ];
+        v.extend(cart_surface::Variant::ALL.map(|variant| Box::new(CartSurface { variant }) as Box<dyn Pipeline>));
+        v
+    }
+
+    #[test]
+    fn a_surface_pipeline_holds_the_units_its_variant_needs_and_no_others() {
+        let mut labels = std::collections::BTreeSet::new();
+        for variant in cart_surface::Variant::ALL {
+            let p = CartSurface { variant };
+            let has = |u: &str| p.units().contains(&u);
+            assert_eq!(has("gloss"), variant.gloss, "{variant:?}");
+            assert_eq!(has("bilinear"), !variant.nearest, "{variant:?}");
+            assert_eq!((has("cart_decode_hemi_oct"), has("cart_decode")), (variant.decode == Decode::HemiOct, variant.decode == Decode::Seed));
+            assert!(!has("light_iter") && p.units().iter().filter(|u| **u == "normalise").count() == 1, "{variant:?}");
+            labels.insert(p.label());
+        }
+        assert_eq!(labels.len(), 8);
     }
 
     #[test]

@@ -276,6 +276,8 @@ pub enum Encoding {
 #[serde(rename_all = "snake_case")]
 pub enum Filter {
     Bilinear,
+    /// the texel nearest the sample, no filter (the Cartesian pipelines with one light per surface)
+    Nearest,
 }
 
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
@@ -357,7 +359,10 @@ pub struct SceneFile {
 /// The pipeline a scene is rendered by, with its settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PipelineKind {
+    /// lights per vertex, interpolated per pixel
     Cartesian(Decode),
+    /// one light per surface: `cart_surface` and its variants (no gloss unit at C = 0, bilinear or nearest)
+    CartSurface(vectors::cart_surface::Variant),
     /// the angle scale, the power unit's pw = 4p, and the weight h
     Polar { scale: Scale, pw: i64, h: f64 },
     Height,
@@ -563,11 +568,24 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     let no = |field: Option<Range<usize>>, what: &str, name: &str| unused(field, &format!("[material] {what}: the {name} pipeline has no {what}"));
     let gloss = mat.gloss.as_ref().map(|g| g.span());
     let (power, weight) = (mat.power.as_ref().map(|p| p.span()), mat.weight.as_ref().map(|w| w.span()));
+    let nearest = bump.filter.as_ref().is_some_and(|f| *f.get_ref() == Filter::Nearest);
+    let filter_span = bump.filter.as_ref().map(|f| f.span());
+    if nearest && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
+        return Err(at.err(filter_span.clone().unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": only the Cartesian encodings (seed, hemi_oct) have a nearest-texel pipeline"));
+    }
     let pipeline = match encoding {
         Encoding::Seed | Encoding::HemiOct => {
             no(power, "power", "Cartesian")?;
             no(weight, "weight", "Cartesian")?;
-            PipelineKind::Cartesian(if encoding == Encoding::Seed { Decode::Seed } else { Decode::HemiOct })
+            let decode = if encoding == Encoding::Seed { Decode::Seed } else { Decode::HemiOct };
+            if per == Some(Per::Surface) {
+                let conc = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0);
+                PipelineKind::CartSurface(vectors::cart_surface::Variant { decode, nearest, gloss: conc != 0 })
+            } else if nearest {
+                return Err(at.err(filter_span.unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": the nearest-texel pipelines light a surface with one light (per = \"surface\" under [light])"));
+            } else {
+                PipelineKind::Cartesian(decode)
+            }
         }
         Encoding::Polar | Encoding::PolarDc255 => {
             one_light("polar")?;
@@ -602,7 +620,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     if let Some(c) = mat.dst {
         scene.dst = c.map(|b| b.0);
     }
-    scene.per_surface = !matches!(pipeline, PipelineKind::Cartesian(_)) || per == Some(Per::Surface);
+    scene.per_surface = !matches!(pipeline, PipelineKind::Cartesian(_));
     let name = f.name.unwrap_or_else(|| at.file.to_string());
     Ok(SceneSpec { name, scene, pipeline, notes })
 }

@@ -79,6 +79,27 @@ fn a_directional_light_for_the_surface_lights_every_vertex_alike() {
     assert!((0..3).all(|c| (l[0][c] - d[c] / n).abs() < 1e-12), "{:?}", l[0]);
 }
 
+#[test]
+fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_material_and_filter_need() {
+    use vectors::cart_surface::Variant;
+    let scene = |enc: &str, filter: &str, per: &str, gloss: &str| {
+        format!("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"{enc}\"\n{filter}[light]\nper = \"{per}\"\n[material]\n{gloss}")
+    };
+    let kind = |t: String| parse(&t).unwrap_or_else(|e| panic!("{e}")).pipeline;
+    let v = |decode, nearest, gloss| PipelineKind::CartSurface(Variant { decode, nearest, gloss });
+    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 0\n")), PipelineKind::Cartesian(Decode::Seed));
+    assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
+    assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
+    assert_eq!(kind(scene("seed", "", "surface", "")), v(Decode::Seed, false, true), "the default gloss is 96");
+    assert_eq!(kind(scene("hemi_oct", "filter = \"nearest\"\n", "surface", "gloss = 0\n")), v(Decode::HemiOct, true, false));
+    assert_eq!(kind(scene("seed", "filter = \"bilinear\"\n", "surface", "gloss = 5\n")), v(Decode::Seed, false, true));
+    refused(&scene("seed", "filter = \"nearest\"\n", "vertex", ""), "s.toml:5:10:", &["one light", "per = \"surface\""]);
+    refused(&scene("polar", "filter = \"nearest\"\n", "surface", ""), "s.toml:5:10:", &["only the Cartesian encodings"]);
+    refused(&scene("seed", "filter = \"cubic\"\n", "surface", ""), "s.toml:5:10:", &["bilinear", "nearest"]);
+    assert_eq!(scene_file::load(&scenes_dir().join("up5k.toml")).unwrap().pipeline, v(Decode::Seed, true, false));
+    assert_eq!(scene_file::load(&scenes_dir().join("directional.toml")).unwrap().pipeline, v(Decode::Seed, false, false));
+}
+
 const GOOD: &str = "size = 64\n[bump]\nsource = \"procedural\"\ntexels = 16\n[light]\nposition = [0.5, 0.5, 0.5]\n";
 
 /// One line, naming the place, saying the words.
