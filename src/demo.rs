@@ -15,12 +15,19 @@ use vectors::cart_pipeline::Decode;
 use vectors::polar_encode::Scale;
 use vectors::stats::ErrorStats;
 
-/// The demo's scene, embedded: `scenes/demo.toml`.
+/// The demo's scene, embedded: `scenes/demo.toml`, a torus.
 pub const DEMO_SCENE: &str = include_str!("../scenes/demo.toml");
+/// The quad every pipeline is compared on (the height-map and palette pipelines draw the quad only): `scenes/quad.toml`.
+pub const QUAD_SCENE: &str = include_str!("../scenes/quad.toml");
 
 /// The embedded scene, read as any scene file is.
 pub fn demo_scene() -> Result<Scene, String> {
     Ok(sim::scene_file::parse(DEMO_SCENE, "scenes/demo.toml (embedded)", Path::new("."))?.scene)
+}
+
+/// The embedded quad.
+pub fn quad_scene() -> Result<Scene, String> {
+    Ok(sim::scene_file::parse(QUAD_SCENE, "scenes/quad.toml (embedded)", Path::new("."))?.scene)
 }
 
 /// The polar surface of the demo: h = 1 (a pure dot product, k1 = 0) and p = 4.
@@ -85,14 +92,18 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
 pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Option<&Path>, relief: Option<f64>) -> Result<(), String> {
     let wall = Instant::now();
     // a user's map is read (or refused) before anything is written
-    let mut scene = Scene { size, ..demo_scene()? };
+    let mut scene = Scene { size, ..quad_scene()? };
+    let mut torus = Scene { size, ..demo_scene()? };
     if let Some(path) = height_map {
         let loaded = sim::heightmap::load(path)?;
         for n in &loaded.notes {
             println!("{n}");
         }
         let side = loaded.map.side;
-        scene = Scene { tex: side, relief: relief.unwrap_or(side as f64 / 16.0), map: Some(std::sync::Arc::new(loaded.map)), ..scene };
+        let map = Some(std::sync::Arc::new(loaded.map));
+        let relief = relief.unwrap_or(side as f64 / 16.0);
+        scene = Scene { tex: side, relief, map: map.clone(), ..scene };
+        torus = Scene { tex: side, relief, map, ..torus };
     }
     crate::cli::writable_folder(out)?;
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
@@ -109,6 +120,9 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     let (pal256, pal4096) = (Palette::new(256, &scene), Palette::new(4096, &scene));
     let pipes: [(&dyn Pipeline, bool); 6] =
         [(&cart, true), (&hemi, false), (&polar, true), (&height, true), (&pal256, true), (&pal4096, false)];
+    // the demo's own scene first: the torus through the Cartesian pipeline (the model and Verilator; rust-hdl runs
+    // the same block on the quad)
+    let on_torus = run_pipeline(&cart, &torus, out, false, no_vl.is_empty())?;
     let runs = pipes
         .iter()
         .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
@@ -120,11 +134,12 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;
     let png = |name: &str, f: &dyn Fn(usize) -> [u8; 3]| render::write_png(&out.join(name), size, f);
     let mut written = vec![];
-    for r in &runs {
-        let name = r.pipe.model().name;
+    for (r, name) in std::iter::once((&on_torus, "torus")).chain(runs.iter().map(|r| (r, r.pipe.model().name))) {
+        // pixel k of the run at its place in the frame; places the surface does not cover are background
+        let by = r.prep.by_place();
         let mut each = |what: &str, f: &dyn Fn(usize) -> [u8; 3]| -> Result<(), String> {
             written.push(format!("{name}_{what}.png"));
-            png(&format!("{name}_{what}.png"), f)
+            png(&format!("{name}_{what}.png"), &|at| by[at].map_or(render::BACKGROUND, f))
         };
         each("ideal", &|k| r.prep.ideal[k].rgb.map(to8))?;
         each("model", &|k| r.pipe.colour(&r.model.outs[k]))?;
@@ -181,7 +196,17 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         Some(p) => format!("{} ({}x{}, white {:.2} texels above black)", p.display(), scene.tex, scene.tex, scene.relief),
         None => format!("procedural {t}x{t} height map", t = scene.tex),
     };
-    println!("scene: {size}x{size} quad, {source}, 4 vertex lights towards a point light");
+    let covered = on_torus.prep.ideal.len();
+    println!("scene: {size}x{size}, a torus ({covered} pixels), {source} repeated 6 × 2 round it, the point light's direction");
+    println!("  at each triangle's corners interpolated per pixel: {} ({})", on_torus.pipe.model().name, on_torus.pipe.describe(&torus));
+    let e = &on_torus;
+    let vl = e.vl.as_ref().map(|v| format!(", Verilator {:.0} px/s ({} mismatches)", v.image.pixels_per_second(), e.mism_vl)).unwrap_or_default();
+    println!(
+        "  model {:.0} px/s{vl}; colour error {:.3} / {:.3} 8-bit LSB mean / max, normal {} ° mean / max",
+        e.model.pixels_per_second(), e.colour.mean(), e.colour.max,
+        e.normal.as_ref().map(|n| format!("{:.3} / {:.3}", n.mean(), n.max)).unwrap_or("-".into())
+    );
+    println!("every pipeline on the quad: {size}x{size}, {source}, 4 vertex lights towards a point light");
     for r in &runs {
         println!("  {} ({}): {}", r.pipe.label(), r.pipe.model().name, r.pipe.describe(&scene));
         println!("    units: {}", r.pipe.units().join(" → "));
@@ -262,8 +287,8 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     let vcds: Vec<String> = runs.iter().map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
     println!("      {}; verilog/{}", vcds.join(", "), if synth { "; synth/" } else { "" });
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
-    let bad: Vec<String> = runs
-        .iter()
+    let bad: Vec<String> = std::iter::once(&on_torus)
+        .chain(&runs)
         .filter(|r| r.mism_hdl + r.mism_vl != 0)
         .map(|r| format!("{} rust-hdl {} / Verilator {}", r.pipe.model().name, r.mism_hdl, r.mism_vl))
         .collect();

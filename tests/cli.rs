@@ -435,7 +435,8 @@ fn render_runs_a_scene_file_on_every_path_and_the_rtl_equals_the_model() {
     let w = synth::tools::missing(&["verilator", "make", "g++"]).is_empty();
     let (code, out, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", d.to_str().unwrap(), "--window", "100,60,6,5"]);
     assert_eq!(code, 0, "{err}");
-    assert!(out.contains("pipeline: cart_pipeline") && out.contains("units: bilinear → cart_decode"), "{out}");
+    // one directional light per surface and C = 0: no light interpolator, no light normaliser, no gloss unit
+    assert!(out.contains("pipeline: cart_surface_matte") && out.contains("units: bilinear → cart_decode → normalise → dot3 → blend\n"), "{out}");
     assert!(out.contains("rust-hdl, window 6×5 at (100, 60)"), "{out}");
     for f in ["directional_ideal.png", "directional_model.png", "directional_shade.png", "directional_error_heat.png", "directional_window.vcd"] {
         assert!(d.join(f).is_file(), "{f}");
@@ -580,7 +581,7 @@ fn synthesis_results_are_cached_under_a_content_hash_and_reused() {
     assert_eq!(run(), first);
     assert_eq!(std::fs::read_dir(&cache).unwrap().count(), kept.len());
     // and it reads them rather than synthesising again: an entry changed by hand shows in the table
-    std::fs::write(cache.join(&kept[0]), "4242 4343 0 0 0").unwrap();
+    std::fs::write(cache.join(&kept[0]), "4242 4343 0 0 0 0").unwrap();
     let third = run();
     assert!(third.contains("4242") && third.contains("4343") && !first.contains("4242"), "{third}");
 }
@@ -590,9 +591,15 @@ fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
     let d = scratch("verilog-scene");
     let (code, out, err) = bumprtl(&["verilog", "--scene", scenes().join("torus.toml").to_str().unwrap(), "--out", d.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
-    assert!(out.contains("cart_pipeline.v") && out.contains("bilinear → cart_decode"), "{out}");
-    let (_, module, _) = bumprtl(&["verilog", "cart_pipeline", "--out", "-"]);
-    assert_eq!(std::fs::read_to_string(d.join("cart_pipeline.v")).unwrap(), module);
+    // the torus with one light per triangle and a little gloss: cart_surface, which holds a gloss unit and no
+    // light interpolator
+    assert!(out.contains("cart_surface.v") && out.contains("bilinear → cart_decode → normalise → dot3 → gloss → blend)"), "{out}");
+    let (_, module, _) = bumprtl(&["verilog", "cart_surface", "--out", "-"]);
+    assert_eq!(std::fs::read_to_string(d.join("cart_surface.v")).unwrap(), module);
+    assert!(!module.contains("l0_x") && !module.contains("$light_norm") && module.contains("module cart_surface("));
+    let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("demo.toml").to_str().unwrap(), "--out", "-"]);
+    assert_eq!(code, 0);
+    assert!(text.contains("module cart_pipeline(") && text.contains("l0_x") && text.contains("$light_norm"), "{}", &text[..text.len().min(200)]);
     let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("sphere_polar.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0);
     assert!(text.contains("module polar_pipeline("), "{}", &text[..text.len().min(200)]);

@@ -32,12 +32,16 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         }
     }
     assert!(seen >= 6, "{seen} scenes");
-    let demo = scene_file::load(&scenes_dir().join("demo.toml")).unwrap();
+    // the quad every pipeline is compared on is the default scene; the demo's own is a torus, lit per vertex
+    let quad = scene_file::load(&scenes_dir().join("quad.toml")).unwrap();
     let d = Scene::default();
-    let s = &demo.scene;
+    let s = &quad.scene;
     assert_eq!((s.size, s.tex, s.light_pos, s.conc, s.src, s.dst, s.relief), (d.size, d.tex, d.light_pos, d.conc, d.src, d.dst, d.relief));
+    assert_eq!(quad.pipeline, PipelineKind::Cartesian(Decode::Seed));
+    assert!(!quad.scene.per_surface && quad.scene.curved.is_none());
+    let demo = scene_file::load(&scenes_dir().join("demo.toml")).unwrap();
     assert_eq!(demo.pipeline, PipelineKind::Cartesian(Decode::Seed));
-    assert!(!demo.scene.per_surface);
+    assert!(matches!(demo.scene.curved.map(|c| c.shape), Some(sim::surface::Shape::Torus { .. })));
     // each pipeline has its scene
     let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline;
     assert_eq!(kind("hemi_oct.toml"), PipelineKind::Cartesian(Decode::HemiOct));
@@ -48,7 +52,8 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     let torus = scene_file::load(&scenes_dir().join("torus.toml")).unwrap().scene;
     let c = torus.curved.expect("a torus");
     assert_eq!(c.shape, sim::surface::Shape::Torus { minor: 0.32 });
-    assert_eq!((c.segments, c.repeat), ([72, 36], [4, 1]));
+    assert_eq!((c.segments, c.repeat), ([72, 36], [6, 2]));
+    assert_eq!(kind("torus.toml"), PipelineKind::CartSurface(vectors::cart_surface::Variant { decode: Decode::Seed, nearest: false, gloss: true }));
     assert!(scene_file::load(&scenes_dir().join("sphere_polar.toml")).unwrap().scene.curved.is_some());
 }
 
