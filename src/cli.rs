@@ -151,6 +151,38 @@ enum Cmd {
         #[arg(long)]
         no_verilator: bool,
     },
+    /// The design knobs swept over scenes: each point's error against the scene's ideal (colour, shade, normal
+    /// angle; for the Cartesian pipelines the shade's error split into encoding, method and datapath) beside its
+    /// cost (iCE40 cells, placement, latency) and the model's speed; a Markdown table (DIR/report.md), a Pareto
+    /// plot (DIR/pareto.png) and the cheapest configuration within each --budget. Every point is independent:
+    /// --plan writes one command per point and a merge step (GNU parallel, ssh, a Slurm array)
+    Report {
+        /// a scene to sweep over (repeatable): `demo`, `quad` (the embedded ones) or a scene file; default both
+        /// embedded
+        #[arg(long = "scene")]
+        scenes: Vec<String>,
+        #[arg(long, default_value = "out/report")]
+        out: PathBuf,
+        /// an error budget, mean colour error in 8-bit LSB (repeatable): the cheapest point within it, per scene
+        #[arg(long = "budget", value_parser = budget)]
+        budgets: Vec<f64>,
+        /// skip nextpnr (yosys cells only; no logic cells or fmax)
+        #[arg(long)]
+        no_place: bool,
+        /// only the points whose id contains this text
+        #[arg(long)]
+        only: Option<String>,
+        /// instead of running: write one command per point into this file, the merge step into FILE.merge and a
+        /// Slurm job array into FILE.slurm
+        #[arg(long, conflicts_with_all = ["point", "merge"])]
+        plan: Option<PathBuf>,
+        /// run one point of the plan and save it under DIR/points/
+        #[arg(long, conflicts_with = "merge")]
+        point: Option<String>,
+        /// read the saved points under DIR/points/ and write the report
+        #[arg(long)]
+        merge: bool,
+    },
     /// The hard cases the seeds warn about, unit by unit: what they ask, what the rtl does (rust-hdl, held to the
     /// model), pass or fail, as a Markdown table; fails if any row fails
     Hardcases,
@@ -414,6 +446,19 @@ pub fn main() -> Result<(), String> {
             };
             crate::hardware::mode_views(&name, family, &tied)?;
         }
+        Cmd::Report { scenes, out, budgets, no_place, only, plan, point, merge } => {
+            let scenes = if scenes.is_empty() { crate::sweep::DEFAULT_SCENES.map(String::from).to_vec() } else { scenes };
+            let place = !no_place;
+            match (plan, point, merge) {
+                (Some(file), _, _) => {
+                    writable_file(&file)?;
+                    crate::sweep::plan(&scenes, &file, &out, &budgets, place, only.as_deref())?
+                }
+                (None, Some(id), _) => crate::sweep::one(&scenes, &id, &out, place)?,
+                (None, None, true) => crate::sweep::merge(&scenes, &out, &budgets, only.as_deref())?,
+                (None, None, false) => crate::sweep::run(&scenes, &out, &budgets, place, only.as_deref())?,
+            }
+        }
         Cmd::Accuracy { directions, samples, lut_cost, dir } => {
             crate::report::accuracy(directions, samples);
             crate::report::lut_sizes(lut_cost, &dir)?;
@@ -459,4 +504,22 @@ pub fn main() -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// A unit's iCE40 cells from yosys (cached), by name.
+pub fn synth_cells(name: &str, dir: &std::path::Path) -> Result<synth::fpga::Cells, String> {
+    with_unit!(name, U => synth::fpga::synth_unit::<U>(dir, synth::fpga::Family::Ice40))
+}
+
+/// A unit placed on the smallest part it fits at that part's default clock target (cached); None where that part
+/// is an ECP5 and nextpnr-ecp5 is not installed.
+pub fn place_cached(name: &str, dir: &std::path::Path) -> Result<Option<synth::fpga::SynthReport>, String> {
+    with_unit!(name, U => {
+        let (part, _, _) = synth::fpga::choose::<U>(dir)?;
+        if part.family == synth::fpga::Family::Ecp5 && synth::tools::nextpnr_ecp5().is_none() {
+            Ok(None)
+        } else {
+            synth::fpga::synth_and_place_cached::<U>(dir, part, part.default_freq()).map(Some)
+        }
+    })
 }

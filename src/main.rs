@@ -2,12 +2,14 @@
 
 mod cli;
 mod demo;
+mod fonts;
 mod hardcases;
 mod hardware;
 mod palette_table;
 mod quantize;
 mod render;
 mod report;
+mod sweep;
 mod widths;
 
 fn main() {

@@ -238,6 +238,16 @@ const POWER_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::power_sizes
 const NORMALISE_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::normalise_table_sizes!(normalise_blocks);
 const BILINEAR_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::bilinear_sizes!(bilinear_blocks);
 
+/// The synthesis of `Normalise<t, n>`, where the sweep builds it.
+pub fn normalise_block(t: u32, n: u32) -> Option<crate::report::SynthFn> {
+    NORMALISE_BLOCKS.iter().find(|b| (b.0, b.1) == (t, n)).map(|b| b.2)
+}
+
+/// The synthesis of `Bilinear<f, d>` (four channels), where the sweep builds it.
+pub fn bilinear_block(f: u32, d: u32) -> Option<crate::report::SynthFn> {
+    BILINEAR_BLOCKS.iter().find(|b| (b.0, b.1) == (f, d)).map(|b| b.2)
+}
+
 /// The units with width parameters the sweep knows, and the unit of their budget. The normaliser's is the worst
 /// component's error (Sq1.10 LSB), not the angle: its table sets the length of the result, hardly its direction
 /// (a scale error of 1/√m moves every component alike), and N·L reads the length; the angle is printed beside.

@@ -613,3 +613,48 @@ fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
     let (code, _, err) = bumprtl(&["verilog", "gloss", "--scene", bad.to_str().unwrap(), "--out", "-"]);
     assert!(code != 0 && err.lines().count() == 1, "{err}");
 }
+
+/// The report's table with the model's speed (its last column, the one figure a rerun changes) cut off.
+fn without_speed(md: &str) -> String {
+    md.lines().map(|l| if l.starts_with("| ") { l.rsplitn(3, '|').nth(2).unwrap_or(l) } else { l }).collect::<Vec<_>>().join("\n")
+}
+
+#[test]
+fn a_report_plan_run_through_gnu_parallel_merges_into_the_report_run_in_one_process() {
+    if synth::tools::missing(&["yosys", "parallel"]).len() > 0 {
+        eprintln!("skipped: yosys or GNU parallel not installed (`bash .ci/run` installs them)");
+        return;
+    }
+    let d = scratch("report-plan");
+    let (one, many) = (d.join("one"), d.join("many"));
+    let only = ["--only", "quad.cart_surface_nearest", "--no-place", "--budget", "20", "--budget", "0.5"];
+    let mut args = vec!["report", "--out", one.to_str().unwrap()];
+    args.extend(only);
+    let (code, out, err) = bumprtl(&args);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("quad.cart_surface_nearest_hemi_oct") && one.join("pareto.png").is_file(), "{out}");
+    // the plan: one command per point, the merge step, the Slurm array
+    let plan = d.join("plan.txt");
+    let mut args = vec!["report", "--out", many.to_str().unwrap(), "--plan", plan.to_str().unwrap()];
+    args.extend(only);
+    let (code, _, err) = bumprtl(&args);
+    assert_eq!(code, 0, "{err}");
+    let lines = std::fs::read_to_string(&plan).unwrap();
+    assert_eq!(lines.lines().count(), 2, "{lines}");
+    assert!(lines.lines().all(|l| l.contains(" report ") && l.contains(" --point ")), "{lines}");
+    let slurm = std::fs::read_to_string(d.join("plan.txt.slurm")).unwrap();
+    assert!(slurm.contains("#SBATCH --array=1-2") && slurm.contains("SLURM_ARRAY_TASK_ID"), "{slurm}");
+    let p = Command::new("parallel").args(["-j", "2", "--halt", "now,fail=1"]).stdin(std::fs::File::open(&plan).unwrap()).output().unwrap();
+    assert!(p.status.success(), "{}", String::from_utf8_lossy(&p.stderr));
+    let m = Command::new("bash").arg(d.join("plan.txt.merge")).output().unwrap();
+    assert!(m.status.success(), "{}", String::from_utf8_lossy(&m.stderr));
+    let (a, b) = (std::fs::read_to_string(one.join("report.md")).unwrap(), std::fs::read_to_string(many.join("report.md")).unwrap());
+    assert_eq!(without_speed(&a), without_speed(&b));
+    assert!(a.contains("Budget 20 8-bit LSB") && a.contains("- quad: quad.cart_surface_nearest") && a.contains("no configuration meets it"), "{a}");
+    assert!(many.join("pareto.png").is_file());
+    // a point not computed is named when merging, in one line
+    std::fs::remove_file(many.join("points").join("quad.cart_surface_nearest.txt")).unwrap();
+    let m = Command::new("bash").arg(d.join("plan.txt.merge")).output().unwrap();
+    let err = String::from_utf8_lossy(&m.stderr);
+    assert!(!m.status.success() && err.lines().count() == 1 && err.contains("quad.cart_surface_nearest"), "{err}");
+}

@@ -90,6 +90,30 @@ pub fn exact_trace_with(decode: Decode, i: &[i64]) -> Trace {
     Trace { texel, bump, normal, light, light_n, x, p, alpha, out }
 }
 
+/// The same method in reals on the same codes: the texels filtered without rounding and read as a unit vector
+/// (the decode's `ideal_real`), the vertex lights' codes interpolated in reals and made unit length, N·L clamped,
+/// the gloss curve in reals; P in 10-bit units. Against `exact_trace`'s P it is what the datapath's arithmetic adds.
+pub fn float_p(decode: Decode, i: &[i64]) -> f64 {
+    let t: [f64; 2] = std::array::from_fn(|c| {
+        let [t00, t10, t01, t11] = TEXELS.map(|t| i[t[c]] as f64);
+        bilinear::ideal_channel(t00, t10, t01, t11, i[input::ublend] as f64 / 256.0, i[input::vblend] as f64 / 256.0)
+    });
+    let n = match decode {
+        Decode::Seed => cart_decode::ideal_real(t[0], t[1]),
+        Decode::HemiOct => cart_decode_hemi_oct::ideal_real(t[0], t[1]),
+    };
+    let l: [f64; 3] = std::array::from_fn(|c| {
+        let [l0, l1, l2] = LIGHTS.map(|l| i[l[c]] as f64);
+        light_iter::ideal_component(l0, l1, l2, i[input::w1] as f64, i[input::w2] as f64)
+    });
+    let len = (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]).sqrt();
+    if len == 0.0 {
+        return 0.0; // no light: the normaliser's zero
+    }
+    let x = ((n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) / len).max(0.0) * 1023.0;
+    gloss::ideal_real(i[input::conc], x)
+}
+
 fn exact_ports(i: &[i64]) -> Vec<i64> {
     let t = exact_trace(i);
     vec![t.p, t.out[0], t.out[1], t.out[2]]

@@ -177,12 +177,31 @@ pub struct Trace {
     pub out: [i64; 3],
 }
 
+/// The width knobs of the units inside: the bump normaliser's seed table (2^table_bits entries) and Newton steps,
+/// the bilinear units' blend-factor bits (the top `blend_bits` of each 8-bit factor, floor) and the bits dropped
+/// between their stages. The rtl blocks are built at `UNIT_KNOBS`; the others are the units' own swept settings
+/// (`Normalise<T, N>`, `Bilinear<F, D>`), here in the pipeline's model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Knobs {
+    pub table_bits: u32,
+    pub newton: u32,
+    pub blend_bits: u32,
+    pub drop: u32,
+}
+
+pub const UNIT_KNOBS: Knobs = Knobs { table_bits: 10, newton: 0, blend_bits: bilinear::F, drop: 0 };
+
 pub fn exact_trace(v: Variant, i: &[i64]) -> Trace {
+    exact_trace_knobs(v, UNIT_KNOBS, i)
+}
+
+pub fn exact_trace_knobs(v: Variant, k: Knobs, i: &[i64]) -> Trace {
     let at = v.layout();
     let texel = match at.texels {
         Texels::Bilinear { corners, ublend, vblend } => std::array::from_fn(|c| {
             let [t00, t10, t01, t11] = corners.map(|t| i[t[c]]);
-            bilinear::exact_channel(t00, t10, t01, t11, i[ublend], i[vblend], bilinear::F)
+            let (u, w) = (i[ublend] >> (8 - k.blend_bits), i[vblend] >> (8 - k.blend_bits)); // U8 → U(blend_bits), floor
+            bilinear::exact_channel_with(t00, t10, t01, t11, u, w, k.blend_bits, k.drop)
         }),
         Texels::Nearest(t) => t.map(|k| i[k]),
     };
@@ -193,7 +212,7 @@ pub fn exact_trace(v: Variant, i: &[i64]) -> Trace {
         }
         Decode::HemiOct => cart_decode_hemi_oct::exact(texel[0] as u8, texel[1] as u8),
     };
-    let normal = normalise::exact(bump);
+    let normal = normalise::exact_with(bump, k.table_bits, k.newton);
     let x = dot3::exact(normal, at.light.map(|k| i[k]));
     let p = match at.conc {
         Some(c) => gloss::exact(i[c], x),
@@ -429,6 +448,32 @@ mod tests {
                 assert_eq!(ports(v, &m), ports(g, &x));
             }
         }
+    }
+
+    #[test]
+    fn the_unit_knobs_are_the_blocks_own_arithmetic() {
+        // the rtl is checked against `exact_trace`; its knobs must be what the plain unit calls compute
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(47);
+        for _ in 0..20_000 {
+            let i = (MODEL.random)(&mut rng);
+            let t = exact_trace(Variant::ALL[0], &i);
+            let at = GLOSSY;
+            let Texels::Bilinear { corners, ublend, vblend } = at.texels else { unreachable!() };
+            let f = |c: usize| {
+                let [a, b, cc, d] = corners.map(|k| i[k[c]]);
+                bilinear::exact_channel(a, b, cc, d, i[ublend], i[vblend], bilinear::F)
+            };
+            assert_eq!(t.texel, [f(0), f(1)]);
+            assert_eq!(t.normal, normalise::exact(t.bump));
+        }
+        // and a coarser table moves some pixels
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(48);
+        let coarse = Knobs { table_bits: 6, ..UNIT_KNOBS };
+        let moved = (0..2_000).filter(|_| {
+            let i = (MODEL_MATTE.random)(&mut rng);
+            exact_trace_knobs(Variant::ALL[1], coarse, &i).p != exact_trace(Variant::ALL[1], &i).p
+        });
+        assert!(moved.count() > 100);
     }
 
     #[test]
