@@ -83,6 +83,16 @@ pub fn rtl_cases() -> Vec<Case> {
         let n = if what.starts_with("the most") { [-2048, -2048, -2048] } else { up };
         v.push(case("dot3", what, ask, vec![[n.to_vec(), l.to_vec()].concat()], move |o| (format!("{}", o[0][0]), o[0][0] == want)));
     }
+    // one light per surface, the smallest pipeline: the light made once, at its ends
+    let surface = |t: [i64; 2], l: [i64; 3]| [t.to_vec(), l.to_vec(), vec![1, 200, 150, 100, 10, 20, 30]].concat();
+    for (what, t, l, ask, pass) in [
+        ("flat texel (127, 127), the surface light straight above", [127, 127], [0, 1024, 0], "full: P ≥ 1020 of 1023 (the decode's 255 and the light's 1024 normalised)", (|p: i64| p >= 1020) as fn(i64) -> bool),
+        ("flat texel, the surface light below the horizon", [127, 127], [0, -1024, 0], "dark: P = 0", |p| p == 0),
+        ("flat texel, the zero light (a zero-length light made once)", [127, 127], [0, 0, 0], "no light: P = 0", |p| p == 0),
+        ("texel 255 (guarded to (127, 1, 127)), lit along +x", [255, 255], [1024, 0, 0], "half lit: P = 1023·127/√(2·127² + 1) ≈ 723, within 2", |p| (p - 723).abs() <= 2),
+    ] {
+        v.push(case("cart_surface_nearest_matte", what, ask, vec![surface(t, l)], move |o| (format!("P = {}", o[0][0]), pass(o[0][0]))));
+    }
     // R's wrap: R − Q is taken mod 256 [16]
     let light = vectors::polar_encode::encode_light(vectors::polar_encode::Scale::Seed, [0.3, 0.8, 0.2], 1.0);
     let at = |r: i64, q: i64| vec![100, r, q, light.k1, light.k2, light.k3];
