@@ -364,7 +364,8 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
     r.part = synth::fpga::UP5K.name.into();
     if place && p.knobs == UNIT_KNOBS {
         if let Some(rep) = crate::cli::place_cached(m.name, &udir)? {
-            r.part = rep.part.clone();
+            // a design whose cells fit the part but whose placement fails says so where its figures would be
+            r.part = if rep.place_error.is_some() { format!("{} (does not place)", rep.part) } else { rep.part.clone() };
             r.lc = rep.lc;
             r.fmax = rep.fmax_mhz;
         }
@@ -449,18 +450,21 @@ pub fn plot(rs: &[Result_], path: &Path) -> Result<(), String> {
         let e = |x: String| x;
         root.fill(&WHITE).map_err(|x| e(x.to_string()))?;
         let xmax = rs.iter().map(|r| r.cost()).max().unwrap_or(1) as f64 * 1.08;
-        let ymax = rs.iter().map(|r| r.colour.0).fold(0.1f64, f64::max) * 1.1;
+        // the errors span two orders of magnitude (a quantized palette against one light for a whole surface):
+        // a logarithmic axis
+        let ymax = rs.iter().map(|r| r.colour.0).fold(0.1f64, f64::max) * 1.3;
+        let ymin = rs.iter().map(|r| r.colour.0).filter(|e| *e > 0.0).fold(ymax, f64::min) * 0.7;
         let mut chart = ChartBuilder::on(&root)
             .caption("bumprtl: mean colour error against cost", (font, 22))
             .margin(16)
             .x_label_area_size(44)
             .y_label_area_size(60)
-            .build_cartesian_2d(0f64..xmax, 0f64..ymax)
+            .build_cartesian_2d(0f64..xmax, (ymin..ymax).log_scale())
             .map_err(|x| e(x.to_string()))?;
         chart
             .configure_mesh()
             .x_desc(format!("cost: iCE40 SB_LUT4 + {LUT4_PER_MAC16}·SB_MAC16"))
-            .y_desc("mean colour error, 8-bit LSB")
+            .y_desc("mean colour error, 8-bit LSB (log scale)")
             .label_style((font, 14))
             .draw()
             .map_err(|x| e(x.to_string()))?;
