@@ -5,7 +5,7 @@
 //! pipeline with one of its units at another of its swept widths (the normaliser's table and Newton steps, the
 //! bilinear units' blend-factor bits). For each point:
 //! - the error against the scene's f64 ideal: the blended colour and the shade in 8-bit LSB, the normal's angle;
-//!   for the Cartesian pipelines split three ways, each the mean (and max) of a shade difference, 8-bit LSB:
+//!   for the Cartesian and polar pipelines split three ways, each the mean (and max) of a shade difference, 8-bit LSB:
 //!   **encoding** (the texel codes read as the directions they mean, filtered as the ideal filters, against the
 //!   ideal), **method** (the pipeline's own method in reals on those codes, against the codes read as directions:
 //!   filtering codes rather than normals, one light per surface, the nearest texel) and **datapath** (the bit-exact
@@ -115,7 +115,13 @@ pub struct Point {
     pub scene: String,
     pub choice: Choice,
     pub knobs: Knobs,
+    /// the polar shading unit's elevation table, 2^lut entries (the unit's own: `sincos::TABLE_BITS`)
+    pub lut: u32,
 }
+
+/// The polar elevation table sizes swept beside the unit's 2^8 (those `SinCos<tb, 8>` is built at).
+const LUT_SETTINGS: [u32; 1] = [6];
+const OWN_LUT: u32 = vectors::sincos::TABLE_BITS;
 
 /// Every point for these scenes, in the report's order.
 pub fn points(scenes: &[String]) -> Result<Vec<Point>, String> {
@@ -125,12 +131,16 @@ pub fn points(scenes: &[String]) -> Result<Vec<Point>, String> {
         let key = scene_key(name);
         for c in Choice::all().into_iter().filter(|c| c.takes(&s)) {
             let pipe = c.build(&s);
-            out.push(Point { id: format!("{key}.{}", pipe.model().name), scene: name.clone(), choice: c, knobs: UNIT_KNOBS });
+            out.push(Point { id: format!("{key}.{}", pipe.model().name), scene: name.clone(), choice: c, knobs: UNIT_KNOBS, lut: OWN_LUT });
         }
         // the width knobs, on the smallest bilinear pipeline the material allows
         let v = Variant { decode: Decode::Seed, nearest: false, gloss: s.conc != 0 };
         for k in knob_settings() {
-            out.push(Point { id: format!("{key}.{}.{}", v.model().name, knob_id(k)), scene: name.clone(), choice: Choice::Surface(v), knobs: k });
+            out.push(Point { id: format!("{key}.{}.{}", v.model().name, knob_id(k)), scene: name.clone(), choice: Choice::Surface(v), knobs: k, lut: OWN_LUT });
+        }
+        // the sin/cos table's size, on the polar pipeline
+        for tb in LUT_SETTINGS {
+            out.push(Point { id: format!("{key}.polar_pipeline.lut{tb}"), scene: name.clone(), choice: Choice::Polar(Scale::Seed), knobs: UNIT_KNOBS, lut: tb });
         }
     }
     Ok(out)
@@ -242,12 +252,28 @@ fn shade_of(conc: i64, n: [f64; 3], l: [f64; 3]) -> f64 {
     vectors::gloss::ideal_real(conc, x) / 1023.0 * 255.0
 }
 
-/// The Cartesian split: encoding (the codes' meaning filtered as the ideal filters, against the ideal), method
-/// (the pipeline's method in reals on the codes, against the codes' meaning) and datapath (the model against that).
-fn split(scene: &Scene, decode: Decode, prep: &Prepared, exact_shade: &[f64], float_p: &dyn Fn(&[i64]) -> f64) -> [(f64, f64); 3] {
+/// The split of a pipeline's shade error (8-bit units): encoding (the codes read as the directions they mean,
+/// filtered as the ideal filters, shaded by the ideal's own curve `curve(n, l)`, against the ideal), method (the
+/// pipeline's method in reals on those codes, `float(input)`, against the codes' meaning) and datapath (the model
+/// against that float run).
+fn split(scene: &Scene, meaning: &[[f64; 3]], prep: &Prepared, exact_shade: &[f64], curve: &dyn Fn([f64; 3], [f64; 3]) -> f64, float: &dyn Fn(&[i64]) -> f64) -> [(f64, f64); 3] {
+    let frame = sim::raster::frame(scene, meaning);
+    let (mut e, mut m, mut d) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
+    for (k, px) in frame.pixels.iter().enumerate() {
+        let s_enc = curve(px.normal, px.light);
+        let s_float = float(&prep.pixels()[k]);
+        e.add((s_enc - prep.ideal[k].shade).abs(), || format!("pixel {k}"));
+        m.add((s_float - s_enc).abs(), || format!("pixel {k}"));
+        d.add((exact_shade[k] - s_float).abs(), || format!("pixel {k}"));
+    }
+    [stats(&e), stats(&m), stats(&d)]
+}
+
+/// What each texel's Cartesian code means, as a unit vector.
+fn cartesian_meaning(scene: &Scene, decode: Decode) -> Vec<[f64; 3]> {
     use vectors::cart_encode::{self, Encoder};
     let enc = if decode == Decode::Seed { Encoder::Seed } else { Encoder::HemiOct };
-    let meaning: Vec<[f64; 3]> = scene
+    scene
         .normals()
         .iter()
         .map(|&n| {
@@ -257,17 +283,34 @@ fn split(scene: &Scene, decode: Decode, prep: &Prepared, exact_shade: &[f64], fl
                 Decode::HemiOct => vectors::cart_decode_hemi_oct::ideal(t.0, t.1),
             }
         })
-        .collect();
-    let frame = sim::raster::frame(scene, &meaning);
-    let (mut e, mut m, mut d) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
-    for (k, px) in frame.pixels.iter().enumerate() {
-        let s_enc = shade_of(scene.conc, px.normal, px.light);
-        let s_float = float_p(&prep.pixels()[k]) / 1023.0 * 255.0;
-        e.add((s_enc - prep.ideal[k].shade).abs(), || format!("pixel {k}"));
-        m.add((s_float - s_enc).abs(), || format!("pixel {k}"));
-        d.add((exact_shade[k] - s_float).abs(), || format!("pixel {k}"));
+        .collect()
+}
+
+/// The three parts for the pipelines that have a float run of their method: the Cartesian ones (N·L through the
+/// gloss curve) and the polar one (equation 3 on its own codes, then p's power, both in reals).
+fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f64]) -> Option<[(f64, f64); 3]> {
+    let gloss = |n: [f64; 3], l: [f64; 3]| shade_of(scene.conc, n, l);
+    let p10 = |p: f64| p / 1023.0 * 255.0;
+    match choice {
+        Choice::Cartesian(d) => Some(split(scene, &cartesian_meaning(scene, d), prep, exact_shade, &gloss, &|i| p10(vectors::cart_pipeline::float_p(d, i)))),
+        Choice::Surface(v) => Some(split(scene, &cartesian_meaning(scene, v.decode), prep, exact_shade, &gloss, &|i| p10(vectors::cart_surface::float_p(v, i)))),
+        Choice::Polar(sc) => {
+            use vectors::polar_encode;
+            use vectors::polar_pipeline::input;
+            let meaning: Vec<[f64; 3]> = scene.normals().iter().map(|&n| {
+                let (s, r) = polar_encode::encode_normal(sc, n);
+                polar_encode::decode_normal(sc, s, r)
+            }).collect();
+            let (h, p) = (crate::demo::POLAR_H, crate::demo::POLAR_PW as f64 / 4.0);
+            let curve = |n: [f64; 3], l: [f64; 3]| 255.0 * ((1.0 - h) + h * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2])).clamp(0.0, 1.0).powf(p);
+            let float = |i: &[i64]| {
+                let own = vectors::polar_shade::ideal(sc, i[input::s], i[input::r], i[input::q], i[input::k1], i[input::k2], i[input::k3]).clamp(0.0, 255.0);
+                vectors::power::ideal_real(own, i[input::pw])
+            };
+            Some(split(scene, &meaning, prep, exact_shade, &curve, &float))
+        }
+        _ => None,
     }
-    [stats(&e), stats(&m), stats(&d)]
 }
 
 /// The unit whose width a knob changes, and its cells at the knob and at the pipeline's own setting (the pipeline
@@ -299,7 +342,18 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
     let m = pipe.model();
     let prep = pipe.prepare(&scene);
     let t = Instant::now();
-    let model = if p.knobs == UNIT_KNOBS {
+    let model = if p.lut != OWN_LUT {
+        let Choice::Polar(sc) = p.choice else { return Err(format!("{}: the table size is swept on the polar pipeline only", p.id)) };
+        let outs: Vec<Vec<i64>> = prep
+            .pixels()
+            .iter()
+            .map(|i| {
+                let tr = vectors::polar_pipeline::exact_trace_sized(sc, p.lut, i);
+                vec![tr.alpha, tr.out[0], tr.out[1], tr.out[2]]
+            })
+            .collect();
+        sim::render::Image { size: prep.size, outs, seconds: t.elapsed().as_secs_f64() }
+    } else if p.knobs == UNIT_KNOBS {
         sim::render::model(m, &prep)
     } else {
         let Choice::Surface(v) = p.choice else { return Err(format!("{}: width knobs are swept on cart_surface only", p.id)) };
@@ -328,18 +382,14 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         Some(stats(&s))
     };
     let exact_shade: Vec<f64> = model.outs.iter().map(|o| pipe.shade(o)).collect();
-    let three = match p.choice {
-        Choice::Cartesian(d) => Some(split(&scene, d, &prep, &exact_shade, &|i| vectors::cart_pipeline::float_p(d, i))),
-        Choice::Surface(v) => Some(split(&scene, v.decode, &prep, &exact_shade, &|i| vectors::cart_surface::float_p(v, i))),
-        _ => None,
-    };
+    let three = three_parts(p.choice, &scene, &prep, &exact_shade);
     let n = prep.pixels().len();
     let mut r = Result_ {
         id: p.id.clone(),
         scene: p.scene.clone(),
         pipeline: m.name.to_string(),
         units: pipe.units().join(" → "),
-        knob: knob_text(p.knobs),
+        knob: if p.lut != OWN_LUT { format!("sin/cos table 2^{} × 8 (S's top {0} bits)", p.lut) } else { knob_text(p.knobs) },
         pixels: n,
         colour: stats(&errs.colour),
         shade: stats(&errs.shade),
@@ -355,14 +405,21 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
     let udir = dir.join("synth").join(m.name);
     let c = crate::cli::synth_cells(m.name, &udir)?;
     let [mut lut4, mut ff, mut dsp, mut bram, mut soft] = [c.lut4, c.ff, c.dsp, c.bram, c.soft].map(|x| x as i64);
-    if p.knobs != UNIT_KNOBS {
+    if p.lut != OWN_LUT {
+        // the pipeline's SinCos<8, 8> against SinCos<lut, 8>
+        let f = |tb: u32| crate::report::SINCOS_BLOCKS.iter().find(|b| (b.0, b.1) == (tb, 8)).map(|b| b.2).ok_or(format!("no SinCos<{tb}, 8>"));
+        let kd = dir.join("synth").join("knobs");
+        let (a, b) = (f(p.lut)?(&kd.join(format!("sincos_t{}w8", p.lut)), synth::fpga::Family::Ice40)?, f(OWN_LUT)?(&kd.join("sincos_t8w8"), synth::fpga::Family::Ice40)?);
+        (lut4, ff, dsp, bram) = (lut4 + a.lut4 as i64 - b.lut4 as i64, ff + a.ff as i64 - b.ff as i64, dsp + a.dsp as i64 - b.dsp as i64, bram + a.bram as i64 - b.bram as i64);
+        r.estimated = true;
+    } else if p.knobs != UNIT_KNOBS {
         let d = knob_delta(p.knobs, &dir.join("synth").join("knobs"))?;
         (lut4, ff, dsp, bram, soft) = (lut4 + d[0], ff + d[1], dsp + d[2], bram + d[3], soft + d[4]);
         r.estimated = true;
     }
     (r.lut4, r.ff, r.dsp, r.bram, r.soft) = (lut4.max(0) as u64, ff.max(0) as u64, dsp.max(0) as u64, bram.max(0) as u64, soft.max(0) as u64);
     r.part = synth::fpga::UP5K.name.into();
-    if place && p.knobs == UNIT_KNOBS {
+    if place && !r.estimated {
         if let Some(rep) = crate::cli::place_cached(m.name, &udir)? {
             // a design whose cells fit the part but whose placement fails says so where its figures would be
             r.part = if rep.place_error.is_some() { format!("{} (does not place)", rep.part) } else { rep.part.clone() };
@@ -407,7 +464,7 @@ pub fn markdown(rs: &[Result_], budgets: &[f64]) -> String {
     let _ = writeln!(
         s,
         "Error against each scene's f64 ideal, 8-bit LSB (mean / max; angle in degrees). The shade's error split: encoding, method, datapath \
-         (Cartesian pipelines; see `bumprtl report --help`). Cost: iCE40 yosys cells (products beyond the UP5K's 8 SB_MAC16 in logic); \
+         (Cartesian and polar pipelines; see `bumprtl report --help`). Cost: iCE40 yosys cells (products beyond the UP5K's 8 SB_MAC16 in logic); \
          `cost` = SB_LUT4 + {LUT4_PER_MAC16}·SB_MAC16; `est.`: the pipeline plus the swept unit's difference. P: on the scene's Pareto set of cost \
          against mean colour error.\n"
     );
@@ -647,6 +704,7 @@ mod tests {
         let ids: std::collections::BTreeSet<&str> = pts.iter().map(|p| p.id.as_str()).collect();
         assert_eq!(ids.len(), pts.len());
         assert!(pts.iter().all(|p| p.knobs == UNIT_KNOBS || matches!(p.choice, Choice::Surface(_))));
+        assert!(pts.iter().all(|p| p.lut == OWN_LUT || p.choice == Choice::Polar(Scale::Seed)));
         // the torus is matte and curved: no height or palette pipeline on it, the matte variants on it
         assert!(!ids.iter().any(|i| i.starts_with("demo.height") || i.starts_with("demo.palette")));
         assert!(ids.contains("demo.cart_surface_nearest_matte") && !ids.contains("quad.cart_surface_nearest_matte"));

@@ -26,7 +26,13 @@ pub struct Trace {
 }
 
 pub fn exact_trace(sc: Scale, i: &[i64]) -> Trace {
-    let (sum, shade) = polar_shade::exact(sc, i[input::s], i[input::r], i[input::q], i[input::k1], i[input::k2], i[input::k3]);
+    exact_trace_sized(sc, crate::sincos::TABLE_BITS, i)
+}
+
+/// The pipeline with a 2^tb-entry elevation table in its shading unit (`polar_shade::exact_trace_sized`).
+pub fn exact_trace_sized(sc: Scale, tb: u32, i: &[i64]) -> Trace {
+    let t = polar_shade::exact_trace_sized(sc, tb, i[input::s], i[input::r], i[input::q], i[input::k1], i[input::k2], i[input::k3]);
+    let (sum, shade) = (t.sum, t.shade);
     let alpha = power::exact(shade, i[input::pw]);
     let src = [input::src_r, input::src_g, input::src_b];
     let dst = [input::dst_r, input::dst_g, input::dst_b];

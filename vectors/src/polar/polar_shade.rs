@@ -15,7 +15,7 @@
 use crate::blend::div255;
 use crate::fixed::saturate;
 use crate::polar_encode::Scale;
-use crate::sincos::{cos_sign_table, elevation_table, TABLE_BITS, WIDTH};
+use crate::sincos::{cos_sign_table, elevation_entry, elevation_table, TABLE_BITS, WIDTH};
 use crate::unit::UnitModel;
 use std::sync::OnceLock;
 
@@ -57,8 +57,15 @@ pub struct Trace {
 }
 
 pub fn exact_trace(sc: Scale, s: i64, r: i64, q: i64, k1: i64, k2: i64, k3: i64) -> Trace {
+    exact_trace_sized(sc, TABLE_BITS, s, r, q, k1, k2, k3)
+}
+
+/// The same with an elevation table of 2^tb entries (tb ≤ 8), read at S's top tb bits (truncation): the sin/cos
+/// unit's swept table sizes in the shading unit. At tb = TABLE_BITS this is the unit.
+#[allow(clippy::too_many_arguments)]
+pub fn exact_trace_sized(sc: Scale, tb: u32, s: i64, r: i64, q: i64, k1: i64, k2: i64, k3: i64) -> Trace {
     let t = tables(sc);
-    let (sin_s, cos_s) = t.elevation[s as usize];
+    let (sin_s, cos_s) = if tb == TABLE_BITS { t.elevation[s as usize] } else { elevation_entry(sc, tb, WIDTH, s >> (8 - tb)) };
     let t12 = div255(k2 * sin_s); // U16 / 255, rounded: U8
     let t14 = div255(k3 * cos_s); // U16 / 255, rounded: U8
     let d = (r - q).rem_euclid(256); // U8, modulo-256 wrap
@@ -171,6 +178,21 @@ fn accuracy_dc(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn the_sized_table_path_reads_the_units_own_table_at_its_size_and_coarser_ones_at_the_top_bits() {
+        for sc in [Scale::Seed, Scale::Dc255] {
+            for s in 0..256 {
+                assert_eq!(elevation_entry(sc, TABLE_BITS, WIDTH, s), tables(sc).elevation[s as usize]);
+                // 64 entries: S and S with its two low bits cleared read the same entry
+                let a = exact_trace_sized(sc, 6, s, 40, 7, 30, 200, 180);
+                let b = exact_trace_sized(sc, 6, s & !3, 40, 7, 30, 200, 180);
+                assert_eq!(a, b);
+            }
+        }
+        let moved = (0..256).filter(|&s| exact_trace_sized(Scale::Seed, 6, s, 40, 7, 30, 200, 180) != exact_trace(Scale::Seed, s, 40, 7, 30, 200, 180));
+        assert!(moved.count() > 64);
+    }
+
     use super::*;
 
     #[test]
