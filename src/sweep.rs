@@ -5,7 +5,8 @@
 //! pipeline with one of its units at another of its swept widths (the normaliser's table and Newton steps, the
 //! bilinear units' blend-factor bits). For each point:
 //! - the error against the scene's f64 ideal: the blended colour and the shade in 8-bit LSB, the normal's angle;
-//!   for the Cartesian and polar pipelines split three ways, each the mean (and max) of a shade difference, 8-bit LSB:
+//!   split three ways (a palette texel's code is its index: the quantization is its encoding; a height map's
+//!   parts are taken through its B-spline, see `height_parts`), each the mean (and max) of a shade difference, 8-bit LSB:
 //!   **encoding** (the texel codes read as the directions they mean, filtered as the ideal filters, against the
 //!   ideal), **method** (the pipeline's own method in reals on those codes, against the codes read as directions:
 //!   filtering codes rather than normals, one light per surface, the nearest texel) and **datapath** (the bit-exact
@@ -38,7 +39,8 @@ pub enum Choice {
     Cartesian(Decode),
     Surface(Variant),
     Polar(Scale),
-    Height,
+    /// the map's height bits (8, or 4 read doubled: the same datapath)
+    Height(u32),
     Palette(usize),
 }
 
@@ -48,7 +50,7 @@ impl Choice {
             Choice::Cartesian(decode) => Box::new(Cartesian { decode }),
             Choice::Surface(variant) => Box::new(CartSurface { variant }),
             Choice::Polar(scale) => Box::new(Polar { scale, pw: crate::demo::POLAR_PW, h: crate::demo::POLAR_H }),
-            Choice::Height => Box::new(Height::new(scene)),
+            Choice::Height(bits) => Box::new(Height::with_bits(scene, bits)),
             Choice::Palette(n) => Box::new(Palette::new(n, scene)),
         }
     }
@@ -56,7 +58,7 @@ impl Choice {
     fn all() -> Vec<Choice> {
         let mut v = vec![Choice::Cartesian(Decode::Seed), Choice::Cartesian(Decode::HemiOct)];
         v.extend(Variant::ALL.map(Choice::Surface));
-        v.extend([Choice::Polar(Scale::Seed), Choice::Polar(Scale::Dc255), Choice::Height, Choice::Palette(256), Choice::Palette(4096)]);
+        v.extend([Choice::Polar(Scale::Seed), Choice::Polar(Scale::Dc255), Choice::Height(8), Choice::Height(4), Choice::Palette(256), Choice::Palette(4096)]);
         v
     }
 
@@ -64,7 +66,7 @@ impl Choice {
     /// without the gloss unit only for a matte material.
     fn takes(self, scene: &Scene) -> bool {
         match self {
-            Choice::Height | Choice::Palette(_) => scene.curved.is_none(),
+            Choice::Height(_) | Choice::Palette(_) => scene.curved.is_none(),
             Choice::Surface(v) => v.gloss || scene.conc == 0,
             _ => true,
         }
@@ -131,7 +133,9 @@ pub fn points(scenes: &[String]) -> Result<Vec<Point>, String> {
         let key = scene_key(name);
         for c in Choice::all().into_iter().filter(|c| c.takes(&s)) {
             let pipe = c.build(&s);
-            out.push(Point { id: format!("{key}.{}", pipe.model().name), scene: name.clone(), choice: c, knobs: UNIT_KNOBS, lut: OWN_LUT });
+            // the 4-bit map runs on the same block: its own id
+            let bits = if c == Choice::Height(4) { ".h4" } else { "" };
+            out.push(Point { id: format!("{key}.{}{bits}", pipe.model().name), scene: name.clone(), choice: c, knobs: UNIT_KNOBS, lut: OWN_LUT });
         }
         // the width knobs, on the smallest bilinear pipeline the material allows
         let v = Variant { decode: Decode::Seed, nearest: false, gloss: s.conc != 0 };
@@ -309,8 +313,57 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
             };
             Some(split(scene, &meaning, prep, exact_shade, &curve, &float))
         }
-        _ => None,
+        Choice::Height(bits) => Some(height_parts(scene, bits, prep, exact_shade)),
+        Choice::Palette(s_n) => {
+            // a texel's index means its entry: the S10 code the table builder takes, as a unit vector
+            let normals = scene.normals();
+            let q = vectors::palette::quantize::quantize(&normals, s_n);
+            let entry: Vec<[f64; 3]> = q.palette.iter().map(|n| vectors::stats::unit(n.map(|c| ((c * 511.0).round()).clamp(-512.0, 511.0)))).collect();
+            let meaning: Vec<[f64; 3]> = q.index.iter().map(|&k| entry[k as usize]).collect();
+            let l = vectors::table_builder::sq1_10(scene.light_dir(0.5, 0.5)).map(|c| c as f64 / 1024.0);
+            let float = |i: &[i64]| shade_of(scene.conc, entry[i[vectors::palette_pipeline::input::idx] as usize], l);
+            Some(split(scene, &meaning, prep, exact_shade, &gloss, &float))
+        }
     }
+}
+
+/// The height pipeline's three parts. Its texel codes are heights, whose normal needs a method, so the parts are
+/// taken through the method: encoding (the B-spline in reals on the codes against the B-spline in reals on the
+/// true heights), method (the B-spline in reals on the true heights against the ideal, the true surface's normal)
+/// and datapath (the model against the B-spline in reals on the codes).
+fn height_parts(scene: &Scene, bits: u32, prep: &Prepared, exact_shade: &[f64]) -> [(f64, f64); 3] {
+    let (t, n) = (scene.tex, scene.size);
+    let h = Height::heights(scene);
+    let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+    let (codes, k) = Height::codes_in(scene, bits);
+    // the true heights in the codes' units (UQ6.2 steps: 4·m per texel of height, m = 16/k)
+    let m = 16.0 / k as f64;
+    let real: Vec<f64> = h.iter().map(|x| (x - lo) * 4.0 * m).collect();
+    let _ = hi;
+    let pipe = Height::with_bits(scene, bits);
+    let size_log2 = t.trailing_zeros() as i64;
+    let kf = k as f64 / 16.0;
+    let normal = |w: [f64; 9], ub: i64, vb: i64| {
+        let (_, hu, hv) = vectors::height_pipeline::bspline(&w, ub as f64 / 256.0, vb as f64 / 256.0);
+        vectors::height_normal::ideal(hu / 2.0, hv / 2.0, kf)
+    };
+    let (mut e, mut me, mut d) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
+    for py in 0..n {
+        for px in 0..n {
+            let k_ = py * n + px;
+            let (i, ub, j, vb) = Height::sample(px, py, n, t);
+            let (xs, ys) = (vectors::height_fetch::axis(i, size_log2, false), vectors::height_fetch::axis(j, size_log2, false));
+            let at = |q: usize| ys[q / 3] as usize * t + xs[q % 3] as usize;
+            let (wt, wc): ([f64; 9], [f64; 9]) = (std::array::from_fn(|q| real[at(q)]), std::array::from_fn(|q| codes[at(q)] as f64));
+            // the same window the pipeline was given
+            assert_eq!(wc.map(|c| c as i64).to_vec(), prep.pixels()[k_][..9].to_vec(), "pixel ({px}, {py})");
+            let (s_true, s_codes) = (pipe.shade_of(normal(wt, ub, vb)), pipe.shade_of(normal(wc, ub, vb)));
+            e.add((s_codes - s_true).abs(), || format!("pixel ({px}, {py})"));
+            me.add((s_true - prep.ideal[k_].shade).abs(), || format!("pixel ({px}, {py})"));
+            d.add((exact_shade[k_] - s_codes).abs(), || format!("pixel ({px}, {py})"));
+        }
+    }
+    [stats(&e), stats(&me), stats(&d)]
 }
 
 /// The unit whose width a knob changes, and its cells at the knob and at the pipeline's own setting (the pipeline
@@ -389,7 +442,9 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         scene: p.scene.clone(),
         pipeline: m.name.to_string(),
         units: pipe.units().join(" → "),
-        knob: if p.lut != OWN_LUT { format!("sin/cos table 2^{} × 8 (S's top {0} bits)", p.lut) } else { knob_text(p.knobs) },
+        knob: if p.choice == Choice::Height(4) {
+            "4-bit heights (UQ3.1), read doubled".into()
+        } else if p.lut != OWN_LUT { format!("sin/cos table 2^{} × 8 (S's top {0} bits)", p.lut) } else { knob_text(p.knobs) },
         pixels: n,
         colour: stats(&errs.colour),
         shade: stats(&errs.shade),
@@ -418,7 +473,7 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         r.estimated = true;
     }
     (r.lut4, r.ff, r.dsp, r.bram, r.soft) = (lut4.max(0) as u64, ff.max(0) as u64, dsp.max(0) as u64, bram.max(0) as u64, soft.max(0) as u64);
-    r.part = synth::fpga::UP5K.name.into();
+    r.part = "-".into();
     if place && !r.estimated {
         if let Some(rep) = crate::cli::place_cached(m.name, &udir)? {
             // a design whose cells fit the part but whose placement fails says so where its figures would be
@@ -464,7 +519,7 @@ pub fn markdown(rs: &[Result_], budgets: &[f64]) -> String {
     let _ = writeln!(
         s,
         "Error against each scene's f64 ideal, 8-bit LSB (mean / max; angle in degrees). The shade's error split: encoding, method, datapath \
-         (Cartesian and polar pipelines; see `bumprtl report --help`). Cost: iCE40 yosys cells (products beyond the UP5K's 8 SB_MAC16 in logic); \
+         (a palette's quantization is its encoding; a height map's parts are taken through its B-spline). Cost: iCE40 yosys cells (products beyond the UP5K's 8 SB_MAC16 in logic); \
          `cost` = SB_LUT4 + {LUT4_PER_MAC16}·SB_MAC16; `est.`: the pipeline plus the swept unit's difference. P: on the scene's Pareto set of cost \
          against mean colour error.\n"
     );

@@ -465,24 +465,52 @@ pub struct Height {
     pub light: [f64; 3],
     pub src: [i64; 3],
     pub dst: [i64; 3],
+    /// the map's height bits: 8 (UQ6.2), or 4 (UQ3.1, ¶50), whose codes q enter the 8-bit datapath as 2q
+    pub bits: u32,
 }
 
 impl Height {
     pub fn new(scene: &Scene) -> Height {
-        Height { light: scene.light_dir(0.5, 0.5), src: scene.src, dst: scene.dst }
+        Height::with_bits(scene, 8)
+    }
+
+    pub fn with_bits(scene: &Scene, bits: u32) -> Height {
+        Height { light: scene.light_dir(0.5, 0.5), src: scene.src, dst: scene.dst, bits }
+    }
+
+    /// The scene's true heights at the texel centres (row-major), in texels.
+    pub fn heights(scene: &Scene) -> Vec<f64> {
+        let t = scene.tex;
+        (0..t * t).map(|k| scene.height_at(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64)).collect()
     }
 
     /// The 8-bit heights of the scene's map (row-major, one per texel) and the scale factor (UQ4.4) that brings
     /// them back to texel units.
     pub fn codes(scene: &Scene) -> (Vec<i64>, i64) {
-        let t = scene.tex;
-        let h: Vec<f64> =
-            (0..t * t).map(|k| scene.height_at(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64)).collect();
-        let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
-        vectors::height_normal::encode_heights(&h, lo, hi)
+        Height::codes_in(scene, 8)
     }
 
-    fn shade_of(&self, n: [f64; 3]) -> f64 {
+    /// The same in `bits` (8 or 4), as the 8-bit datapath reads them (4-bit codes doubled).
+    pub fn codes_in(scene: &Scene, bits: u32) -> (Vec<i64>, i64) {
+        let h = Height::heights(scene);
+        let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+        let (codes, k) = vectors::height_normal::encode_heights_in(&h, lo, hi, bits);
+        (codes.into_iter().map(|q| if bits == 4 { 2 * q } else { q }).collect(), k)
+    }
+
+    /// Where pixel (px, py) of an n × n frame samples a map of side t: the address unit [150] in height mode,
+    /// clamped (texel i, blend factor ub; texel j, vb).
+    pub fn sample(px: usize, py: usize, n: usize, t: usize) -> (i64, i64, i64, i64) {
+        let (u, v) = ((px as f64 + 0.5) / n as f64, (py as f64 + 0.5) / n as f64);
+        // UQ8.8 texel coordinates
+        let coord = |x: f64| ((x * t as f64 * 256.0).round() as i64).clamp(0, 65_535);
+        let size_log2 = t.trailing_zeros() as i64;
+        let (i, ub) = height_addr::exact(coord(u), size_log2, false, true);
+        let (j, vb) = height_addr::exact(coord(v), size_log2, false, true);
+        (i, ub, j, vb)
+    }
+
+    pub fn shade_of(&self, n: [f64; 3]) -> f64 {
         255.0 * (n[0] * self.light[0] + n[1] * self.light[1] + n[2] * self.light[2]).max(0.0)
     }
 }
@@ -501,12 +529,12 @@ impl Pipeline for Height {
         &["replicate", "blend_adjust", "bilinear", "tangent", "height_normal", "normalise"]
     }
     fn describe(&self, scene: &Scene) -> String {
-        let (_, k) = Height::codes(scene);
-        format!("8-bit heights (k = {k}/16), B-spline normals on the bilinear units, one light per surface, N·L")
+        let (_, k) = Height::codes_in(scene, self.bits);
+        format!("{}-bit heights (k = {k}/16), B-spline normals on the bilinear units, one light per surface, N·L", self.bits)
     }
     fn prepare(&self, scene: &Scene) -> Prepared {
         let t = scene.tex;
-        let (codes, k) = Height::codes(scene);
+        let (codes, k) = Height::codes_in(scene, self.bits);
         let size_log2 = t.trailing_zeros() as i64;
         assert!(t.is_power_of_two(), "the height path's address unit takes power-of-two textures");
         let n = scene.size;
@@ -514,11 +542,7 @@ impl Pipeline for Height {
         let mut p = Prepared::new(n);
         for py in 0..n {
             for px in 0..n {
-                let (u, v) = ((px as f64 + 0.5) / n as f64, (py as f64 + 0.5) / n as f64);
-                // the address unit [150] in height mode, clamped: UQ8.8 texel coordinates
-                let coord = |x: f64| ((x * t as f64 * 256.0).round() as i64).clamp(0, 65_535);
-                let (i, ub) = height_addr::exact(coord(u), size_log2, false, true);
-                let (j, vb) = height_addr::exact(coord(v), size_log2, false, true);
+                let (i, ub, j, vb) = Height::sample(px, py, n, t);
                 // the fetch [151]: the 3×3 window around (i, j) from the 2×2-interleaved map, clamped at the borders
                 let mut x = map.window(i, j, size_log2, size_log2, false, false).to_vec();
                 x.extend([ub, vb, k]);
@@ -551,7 +575,7 @@ impl Pipeline for Height {
         Some(height_pipeline::exact_trace(input).normal.map(|c| c as f64))
     }
     fn bits_per_texel(&self) -> u32 {
-        8
+        self.bits
     }
 }
 
