@@ -266,13 +266,13 @@ fn cells(family: Family, log: &str) -> Cells {
 /// selection names.
 pub const KEEP_OPERAND_COPIES: &str = "proc; setattr -set keep 1 *$mop_*/t:$dff";
 
-/// The iCE40 flow's rule for a design with more products than the UP5K has SB_MAC16 blocks, and the yosys steps
-/// that prepare it: the design flattened and its widths reduced (`opt -full` strips the constant-zero tops of the
-/// 16-bit operands rust-hdl multiplies), the products mutually exclusive under a mux merged (`share`); then each
-/// `$mul` left is a DSP candidate, and the smallest (A × B operand bits, then name) beyond the part's count are
-/// built in logic, through yosys's own path for products too small for a DSP (`$__soft_mul`). A design with no
-/// more products than the part has blocks is synthesised as before, unprepared.
-pub const FABRIC_PRODUCTS: &str = "iCE40: products beyond 8, smallest first, in logic";
+/// The iCE40 flow's rule for a design that needs more SB_MAC16 blocks than the UP5K's 8: it is synthesised as
+/// always first, and only when its DSP count is over 8 are some of its products built in logic instead. The design
+/// is flattened and its widths reduced (`opt -full` strips the constant-zero tops of the 16-bit operands rust-hdl
+/// multiplies), its `$mul` cells listed, and the smallest (A × B operand bits, then name) retyped `$__soft_mul`,
+/// the cell yosys's own DSP mapping leaves to logic: first as many as the blocks over 8, then more while the count
+/// is still over (two products can share a block, so moving one does not always free one).
+pub const FABRIC_PRODUCTS: &str = "iCE40: over 8 SB_MAC16, the fewest smallest products in logic that bring it to 8";
 const PREPARE: &str = "flatten; opt -full; wreduce; opt_clean; share; opt_clean";
 
 /// A multiplier cell of a prepared design: its name and operand widths.
@@ -301,9 +301,8 @@ fn products(dump: &str) -> Vec<Product> {
     out
 }
 
-/// The products to build in logic so that at most `limit` are left for DSP blocks: the smallest first.
-fn to_fabric(mut all: Vec<Product>, limit: usize) -> Vec<Product> {
-    let n = all.len().saturating_sub(limit);
+/// The `n` smallest products (A × B operand bits, then name): the first to build in logic.
+fn to_fabric(mut all: Vec<Product>, n: usize) -> Vec<Product> {
     all.sort_by(|x, y| (x.a * x.b, &x.name).cmp(&(y.a * y.b, &y.name)));
     all.truncate(n);
     all
@@ -311,23 +310,32 @@ fn to_fabric(mut all: Vec<Product>, limit: usize) -> Vec<Product> {
 
 /// yosys on a design, returning its log and how many of its products were built in logic (`FABRIC_PRODUCTS`).
 fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>) -> Result<(String, u64), String> {
-    if family == Family::Ice40 {
-        let mut script = String::new();
-        for f in files {
-            let _ = write!(script, "read_verilog {f}; ");
-        }
-        let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; write_rtlil {top}.prepared.il; tee -q -o {top}.products dump t:$mul");
-        tools::run(dir, "yosys", &["-q", "-p", &script])?;
-        let dump = std::fs::read_to_string(dir.join(format!("{top}.products"))).map_err(|e| format!("no yosys product list: {e}"))?;
-        let soft = to_fabric(products(&dump), UP5K.dsp as usize);
-        if !soft.is_empty() {
-            let cells: Vec<String> = soft.iter().map(|p| format!("{top}/{}", p.name)).collect();
-            let before = format!("chtype -set $__soft_mul {}", cells.join(" "));
-            let log = yosys_with(dir, family, top, &[], json, &before, Some(&format!("{top}.prepared.il")))?;
-            return Ok((log, soft.len() as u64));
+    let log = yosys_with(dir, family, top, files, json, KEEP_OPERAND_COPIES, None)?;
+    let limit = UP5K.dsp;
+    let mut over = cells(family, &log).dsp.saturating_sub(limit);
+    if family != Family::Ice40 || over == 0 {
+        return Ok((log, 0));
+    }
+    let mut script = String::new();
+    for f in files {
+        let _ = write!(script, "read_verilog {f}; ");
+    }
+    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; write_rtlil {top}.prepared.il; tee -q -o {top}.products dump t:$mul");
+    tools::run(dir, "yosys", &["-q", "-p", &script])?;
+    let dump = std::fs::read_to_string(dir.join(format!("{top}.products"))).map_err(|e| format!("no yosys product list: {e}"))?;
+    let all = products(&dump);
+    let mut n = 0usize;
+    loop {
+        n = (n + over as usize).min(all.len());
+        let soft = to_fabric(all.clone(), n);
+        let cells_list: Vec<String> = soft.iter().map(|p| format!("{top}/{}", p.name)).collect();
+        let before = format!("chtype -set $__soft_mul {}", cells_list.join(" "));
+        let log = yosys_with(dir, family, top, &[], json, &before, Some(&format!("{top}.prepared.il")))?;
+        over = cells(family, &log).dsp.saturating_sub(limit);
+        if over == 0 || n == all.len() {
+            return Ok((log, n as u64));
         }
     }
-    Ok((yosys_with(dir, family, top, files, json, KEEP_OPERAND_COPIES, None)?, 0))
 }
 
 fn yosys_with(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&str>, before: &str, rtlil: Option<&str>) -> Result<String, String> {
@@ -627,7 +635,7 @@ mod tests {
     }
 
     #[test]
-    fn the_smallest_products_beyond_the_dsp_count_go_into_logic() {
+    fn the_smallest_products_go_into_logic_first() {
         // yosys's dump of three $mul cells (the shape `dump t:$mul` writes), one of them 8 × 8
         let dump = "  cell $mul $flatten\\dot.$mul$u.v:7$3\n    parameter \\A_SIGNED 0\n    parameter \\A_WIDTH 12\n    parameter \\B_WIDTH 12\n    connect \\A x\n  end\n\
                     cell $mul $flatten\\blend.$mul$u.v:9$5\n    parameter \\A_WIDTH 8\n    parameter \\B_WIDTH 8\n  end\n\
@@ -635,10 +643,10 @@ mod tests {
         let all = products(dump);
         assert_eq!(all.iter().map(|p| (p.a, p.b)).collect::<Vec<_>>(), [(12, 12), (8, 8), (10, 13)]);
         assert_eq!(all[1].name, "$flatten\\blend.$mul$u.v:9$5");
-        assert!(to_fabric(all.clone(), 3).is_empty());
-        let soft = to_fabric(all.clone(), 1);
+        assert!(to_fabric(all.clone(), 0).is_empty());
+        let soft = to_fabric(all.clone(), 2);
         assert_eq!(soft.iter().map(|p| p.a * p.b).collect::<Vec<_>>(), [64, 130]);
-        assert_eq!(to_fabric(all, 0).len(), 3);
+        assert_eq!(to_fabric(all, 5).len(), 3);
         let o = UP5K.overflow(&Cells { lut4: 6000, dsp: 8, soft: 25, ..Default::default() }).unwrap();
         assert!(o.contains("6000 SB_LUT4") && o.contains("25 of its products built in logic"), "{o}");
     }
