@@ -334,12 +334,11 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
 fn height_parts(scene: &Scene, bits: u32, prep: &Prepared, exact_shade: &[f64]) -> [(f64, f64); 3] {
     let (t, n) = (scene.tex, scene.size);
     let h = Height::heights(scene);
-    let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+    let lo = h.iter().copied().fold(f64::MAX, f64::min);
     let (codes, k) = Height::codes_in(scene, bits);
     // the true heights in the codes' units (UQ6.2 steps: 4·m per texel of height, m = 16/k)
     let m = 16.0 / k as f64;
     let real: Vec<f64> = h.iter().map(|x| (x - lo) * 4.0 * m).collect();
-    let _ = hi;
     let pipe = Height::with_bits(scene, bits);
     let size_log2 = t.trailing_zeros() as i64;
     let kf = k as f64 / 16.0;
@@ -395,30 +394,26 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
     let m = pipe.model();
     let prep = pipe.prepare(&scene);
     let t = Instant::now();
+    // a knob's pixels through the model at that knob (the rtl block is built at the units' own widths)
+    let image = |f: &dyn Fn(&[i64]) -> Vec<i64>| sim::render::Image {
+        size: prep.size,
+        outs: prep.pixels().iter().map(|i| f(i)).collect(),
+        seconds: t.elapsed().as_secs_f64(),
+    };
     let model = if p.lut != OWN_LUT {
         let Choice::Polar(sc) = p.choice else { return Err(format!("{}: the table size is swept on the polar pipeline only", p.id)) };
-        let outs: Vec<Vec<i64>> = prep
-            .pixels()
-            .iter()
-            .map(|i| {
-                let tr = vectors::polar_pipeline::exact_trace_sized(sc, p.lut, i);
-                vec![tr.alpha, tr.out[0], tr.out[1], tr.out[2]]
-            })
-            .collect();
-        sim::render::Image { size: prep.size, outs, seconds: t.elapsed().as_secs_f64() }
+        image(&|i| {
+            let tr = vectors::polar_pipeline::exact_trace_sized(sc, p.lut, i);
+            vec![tr.alpha, tr.out[0], tr.out[1], tr.out[2]]
+        })
     } else if p.knobs == UNIT_KNOBS {
         sim::render::model(m, &prep)
     } else {
         let Choice::Surface(v) = p.choice else { return Err(format!("{}: width knobs are swept on cart_surface only", p.id)) };
-        let outs: Vec<Vec<i64>> = prep
-            .pixels()
-            .iter()
-            .map(|i| {
-                let tr = vectors::cart_surface::exact_trace_knobs(v, p.knobs, i);
-                vec![tr.p, tr.out[0], tr.out[1], tr.out[2]]
-            })
-            .collect();
-        sim::render::Image { size: prep.size, outs, seconds: t.elapsed().as_secs_f64() }
+        image(&|i| {
+            let tr = vectors::cart_surface::exact_trace_knobs(v, p.knobs, i);
+            vec![tr.p, tr.out[0], tr.out[1], tr.out[2]]
+        })
     };
     let secs = t.elapsed().as_secs_f64();
     let errs = sim::render::errors(pipe.as_ref(), &scene, &prep, &model);
