@@ -185,6 +185,18 @@ macro_rules! unit_table {
                     ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
                     ("light_norm$valid_out", "as light$valid_out"),
                 ];
+                cart_pipeline_matte: $crate::cart_pipeline::MODEL_MATTE, rtl::cart_pipeline::CartPipelineMatte, [
+                    ("filter$0$wide", "as in cart_pipeline"),
+                    ("filter$1$wide", "as filter$0$wide"),
+                    ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
+                    ("light_norm$valid_out", "as light$valid_out"),
+                ];
+                cart_pipeline_hemi_oct_matte: $crate::cart_pipeline::MODEL_HEMI_OCT_MATTE, rtl::cart_pipeline::CartPipelineHemiOctMatte, [
+                    ("filter$0$wide", "as in cart_pipeline"),
+                    ("filter$1$wide", "as filter$0$wide"),
+                    ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
+                    ("light_norm$valid_out", "as light$valid_out"),
+                ];
                 cart_surface: $crate::cart_surface::MODEL, rtl::cart_surface::CartSurface, [
                     ("filter$0$wide", "as in cart_pipeline"),
                     ("filter$1$wide", "as filter$0$wide"),

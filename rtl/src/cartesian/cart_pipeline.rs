@@ -5,12 +5,14 @@
 //! colours in the `DelayedBlend`, the light and P in short DFF chains.
 //! Latency 48 = bilinear 11 + cart_decode 4 + normalise 11 + dot3 6 + gloss 11 + blend 5.
 //!
-//! Two variants, the same wiring around a different texel decode (a macro writes both, so each exported Verilog
-//! holds only its own decoder):
+//! Four variants from one macro, so each exported Verilog holds only its own units:
 //! - `CartPipeline` (`cart_pipeline`): the seed's offset-binary texels through `cart_decode`;
 //! - `CartPipelineHemiOct` (`cart_pipeline_hemi_oct`): rotated hemi-octahedral texels (U on the red channel, V on
 //!   green) through `cart_decode_hemi_oct`, latency 47. Bilinear filtering of (U, V) is filtering of (x, z): the
 //!   map between them is linear.
+//! - `CartPipelineMatte` (`cart_pipeline_matte`) and `CartPipelineHemiOctMatte` (`cart_pipeline_hemi_oct_matte`):
+//!   the same for a material with C = 0, where the gloss unit's P = X: no gloss unit, no C port, no C delay line,
+//!   α = X >> 2 (latency 37 and 36).
 
 use crate::bilinear::BilinearUnit;
 use crate::cart_decode::CartDecode;
@@ -25,16 +27,17 @@ use rust_hdl::prelude::*;
 
 
 macro_rules! cart_pipeline {
-    ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident) => {
+    ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident, $g:literal
+        $(, gloss: $gl:ident, $conc:ident, $cd:ident)?) => {
 pub mod $m {
 use super::*;
 use crate::q::{S8, Sq7_2, Sq9_0, U8};
 
-/// Cycles from the pipeline's input to each unit's input (seed decode: 15, 8, 32, 43, 48).
+/// Cycles from the pipeline's input to each unit's input (seed decode: 15, 8, 32, 43, 48; matte: 15, 8, 32, 32, 37).
 pub const AT_NORMALISE: usize = crate::bilinear::LATENCY + crate::$dec_mod::LATENCY;
 pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY;
 pub const AT_GLOSS: usize = AT_NORMALISE + crate::normalise::LATENCY + crate::dot3::LATENCY;
-pub const AT_BLEND: usize = AT_GLOSS + crate::gloss::LATENCY;
+pub const AT_BLEND: usize = AT_GLOSS + $g * crate::gloss::LATENCY;
 pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY;
 
 crate::stream_block! {
@@ -62,7 +65,7 @@ crate::stream_block! {
             l2_z: S8,
             w1: Bits<9>,
             w2: Bits<9>,
-            conc: U8,
+            $($conc: U8,)?
             mode: Bits<1>,
             src_r: U8,
             src_g: U8,
@@ -84,20 +87,24 @@ crate::stream_block! {
         pub light: LightIter,
         pub light_norm: Normalise,
         pub dot: Dot3,
-        pub gloss: Gloss,
+        $(pub $gl: Gloss,
+        $cd: RamDelay<8, 6, AT_GLOSS>,)?
         light_dly: [Delay<Sq7_2, LIGHT_DELAY>; 3],
-        conc_dly: RamDelay<8, 6, AT_GLOSS>,
         pub blend: DelayedBlend<6, AT_BLEND>,
         p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
         bump_x10: Signal<Local, Sq9_0>,
         bump_z10: Signal<Local, Sq9_0>,
+        shade: Signal<Local, Bits<10>>, // P (U10): X when the pipeline has no gloss unit
+        shade_valid: Signal<Local, Bit>,
     }
 }
 
 impl Logic for $t {
     #[hdl_gen]
     fn update(&mut self) {
-        clock!(self, clock, filter_valid, decode, bump_norm, light, light_norm, dot, gloss, blend, conc_dly, p_dly);
+        clock!(self, clock, filter_valid, decode, bump_norm, light, light_norm, dot, blend, p_dly);
+        $(self.$gl.clock.next = self.clock.val();
+        self.$cd.clock.next = self.clock.val();)?
         for i in 0..3 {
             self.light_dly[i].clock.next = self.clock.val();
         }
@@ -161,11 +168,15 @@ impl Logic for $t {
         self.dot.l_x.next = self.light_norm.norm_x.val();
         self.dot.l_y.next = self.light_norm.norm_y.val();
         self.dot.l_z.next = self.light_norm.norm_z.val();
-        // glossiness
-        self.conc_dly.d.next = self.conc.val();
-        self.gloss.valid_in.next = self.dot.valid_out.val();
-        self.gloss.conc.next = self.conc_dly.q.val();
-        self.gloss.x.next = self.dot.x.val();
+        // glossiness, where the material has it; without, P = X (the gloss unit's own C = 0)
+        self.shade.next = self.dot.x.val();
+        self.shade_valid.next = self.dot.valid_out.val();
+        $(self.$cd.d.next = self.$conc.val();
+        self.$gl.valid_in.next = self.dot.valid_out.val();
+        self.$gl.conc.next = self.$cd.q.val();
+        self.$gl.x.next = self.dot.x.val();
+        self.shade.next = self.$gl.p.val();
+        self.shade_valid.next = self.$gl.valid_out.val();)?
         // blend: α = P >> 2 (U10 → U8, truncate)
         self.blend.mode.next = self.mode.val();
         self.blend.src_r.next = self.src_r.val();
@@ -174,9 +185,9 @@ impl Logic for $t {
         self.blend.dst_r.next = self.dst_r.val();
         self.blend.dst_g.next = self.dst_g.val();
         self.blend.dst_b.next = self.dst_b.val();
-        self.blend.valid_in.next = self.gloss.valid_out.val();
-        self.blend.alpha.next = self.gloss.p.val().get_bits::<8>(2);
-        self.p_dly.d.next = self.gloss.p.val();
+        self.blend.valid_in.next = self.shade_valid.val();
+        self.blend.alpha.next = self.shade.val().get_bits::<8>(2);
+        self.p_dly.d.next = self.shade.val();
         self.valid_out.next = self.blend.valid_out.val();
         self.p.next = self.p_dly.q.val();
         self.out_r.next = self.blend.out_r.val();
@@ -190,5 +201,7 @@ pub use $m::$t;
     };
 }
 
-cart_pipeline!(seed, CartPipeline, "cart_pipeline", CartDecode, cart_decode, texel_x, texel_z);
-cart_pipeline!(hemi_oct, CartPipelineHemiOct, "cart_pipeline_hemi_oct", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v);
+cart_pipeline!(seed, CartPipeline, "cart_pipeline", CartDecode, cart_decode, texel_x, texel_z, 1, gloss: gloss, conc, conc_dly);
+cart_pipeline!(matte, CartPipelineMatte, "cart_pipeline_matte", CartDecode, cart_decode, texel_x, texel_z, 0);
+cart_pipeline!(hemi_oct, CartPipelineHemiOct, "cart_pipeline_hemi_oct", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, 1, gloss: gloss, conc, conc_dly);
+cart_pipeline!(hemi_oct_matte, CartPipelineHemiOctMatte, "cart_pipeline_hemi_oct_matte", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, 0);

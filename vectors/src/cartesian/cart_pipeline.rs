@@ -4,6 +4,8 @@
 //! Every stage is the unit of the same name; this file only wires them, as the rtl top does.
 //! `cart_pipeline_hemi_oct` is the same pipeline with `cart_decode_hemi_oct` in place of `cart_decode`: its texel
 //! ports carry (U, V) where the seed's carry (TexelX, TexelZ).
+//! `cart_pipeline_matte` and `cart_pipeline_hemi_oct_matte` are the two for a material with C = 0: no gloss unit
+//! and no `conc` port (the ports of `matte`), P = X. Their model is the full one with C = 0.
 
 use crate::unit::UnitModel;
 use crate::{bilinear, blend, cart_decode, cart_decode_hemi_oct, dot3, gloss, light_iter, normalise};
@@ -18,6 +20,34 @@ crate::ports! {
     outputs: [
         p: u 10, out_r: u 8, out_g: u 8, out_b: u 8,
     ],
+}
+
+/// The matte pipelines' ports: the full pipeline's without `conc`.
+pub mod matte {
+    crate::ports! {
+        inputs: [
+            t00_x: u 8, t00_z: u 8, t10_x: u 8, t10_z: u 8, t01_x: u 8, t01_z: u 8, t11_x: u 8, t11_z: u 8,
+            ublend: u 8, vblend: u 8, l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8,
+            l2_y: s 8, l2_z: s 8, w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+            dst_r: u 8, dst_g: u 8, dst_b: u 8,
+        ],
+        outputs: [
+            p: u 10, out_r: u 8, out_g: u 8, out_b: u 8,
+        ],
+    }
+}
+
+/// A matte input vector as the full pipeline's: C = 0 put in at its port.
+pub fn with_zero_conc(i: &[i64]) -> Vec<i64> {
+    let mut v = i.to_vec();
+    v.insert(input::conc, 0);
+    v
+}
+
+/// A full input vector without its C (for the matte pipelines).
+pub fn without_conc(mut v: Vec<i64>) -> Vec<i64> {
+    v.remove(input::conc);
+    v
 }
 
 /// Every intermediate value, for waveforms and for reports.
@@ -184,6 +214,86 @@ pub fn hard_cases_hemi_oct() -> Vec<Vec<i64>> {
     v
 }
 
+fn exact_ports_matte(i: &[i64]) -> Vec<i64> {
+    exact_ports(&with_zero_conc(i))
+}
+
+fn exact_ports_hemi_oct_matte(i: &[i64]) -> Vec<i64> {
+    exact_ports_hemi_oct(&with_zero_conc(i))
+}
+
+fn random_matte(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    without_conc(random(rng))
+}
+
+/// The full pipeline's hard cases without their C; the cases that differ only in C become one.
+fn hard_cases_matte() -> Vec<Vec<i64>> {
+    dedup(hard_cases().into_iter().map(without_conc).collect())
+}
+
+fn hard_cases_hemi_oct_matte() -> Vec<Vec<i64>> {
+    dedup(hard_cases_hemi_oct().into_iter().map(without_conc).collect())
+}
+
+fn dedup(v: Vec<Vec<i64>>) -> Vec<Vec<i64>> {
+    let mut out: Vec<Vec<i64>> = Vec::with_capacity(v.len());
+    for x in v {
+        if !out.contains(&x) {
+            out.push(x);
+        }
+    }
+    out
+}
+
 pub static MODEL: UnitModel = UnitModel::new("cart_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases);
 
 pub static MODEL_HEMI_OCT: UnitModel = UnitModel::new("cart_pipeline_hemi_oct", (INPUTS, OUTPUTS), exact_ports_hemi_oct, random, hard_cases_hemi_oct);
+
+pub static MODEL_MATTE: UnitModel =
+    UnitModel::new("cart_pipeline_matte", (matte::INPUTS, matte::OUTPUTS), exact_ports_matte, random_matte, hard_cases_matte);
+
+pub static MODEL_HEMI_OCT_MATTE: UnitModel = UnitModel::new(
+    "cart_pipeline_hemi_oct_matte",
+    (matte::INPUTS, matte::OUTPUTS),
+    exact_ports_hemi_oct_matte,
+    random_matte,
+    hard_cases_hemi_oct_matte,
+);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+
+    #[test]
+    fn matte_ports_are_the_full_ones_without_c() {
+        let full: Vec<_> = INPUTS.iter().filter(|p| p.name != "conc").collect();
+        assert_eq!(full.len(), matte::INPUTS.len());
+        for (f, m) in full.iter().zip(matte::INPUTS) {
+            assert_eq!((f.name, f.bits, f.signed), (m.name, m.bits, m.signed));
+        }
+        assert_eq!(OUTPUTS.len(), matte::OUTPUTS.len());
+    }
+
+    /// At C = 0 the gloss unit gives P = X, so the pipeline without it must give the same P and colour; and a
+    /// glossy C must differ somewhere, or the comparison could not fail.
+    #[test]
+    fn matte_is_the_full_pipeline_at_c_zero() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(41);
+        let mut differs = 0;
+        for _ in 0..20_000 {
+            let mut f = random(&mut rng);
+            let m = without_conc(f.clone());
+            for (full, matte) in [(&MODEL, &MODEL_MATTE), (&MODEL_HEMI_OCT, &MODEL_HEMI_OCT_MATTE)] {
+                let c = f[input::conc];
+                f[input::conc] = 0;
+                assert_eq!((matte.exact)(&m), (full.exact)(&f), "{} at {m:?}", matte.name);
+                f[input::conc] = c;
+                differs += usize::from((matte.exact)(&m) != (full.exact)(&f));
+            }
+            let t = exact_trace(&with_zero_conc(&m));
+            assert_eq!(t.p, t.x);
+        }
+        assert!(differs > 1_000, "C made a difference on only {differs} pixels");
+    }
+}
