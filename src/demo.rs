@@ -22,7 +22,12 @@ pub const QUAD_SCENE: &str = include_str!("../scenes/quad.toml");
 
 /// The embedded scene, read as any scene file is.
 pub fn demo_scene() -> Result<Scene, String> {
-    Ok(sim::scene_file::parse(DEMO_SCENE, "scenes/demo.toml (embedded)", Path::new("."))?.scene)
+    Ok(demo_spec()?.scene)
+}
+
+/// The embedded demo scene as read, with the pipeline it names.
+pub fn demo_spec() -> Result<sim::scene_file::SceneSpec, String> {
+    sim::scene_file::parse(DEMO_SCENE, "scenes/demo.toml (embedded)", Path::new("."))
 }
 
 /// The embedded quad.
@@ -115,14 +120,14 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     // every pipeline, and whether rust-hdl renders it here (the hemi-oct variant's rust-hdl run is left to the
     // tests: the model and Verilator are the two fast paths)
     let polar = Polar { scale, pw: POLAR_PW, h: POLAR_H };
-    let (cart, hemi) = (Cartesian { decode: Decode::Seed }, Cartesian { decode: Decode::HemiOct });
+    let (cart, hemi) = (Cartesian::glossy(Decode::Seed), Cartesian::glossy(Decode::HemiOct));
     let height = Height::new(&scene);
     let (pal256, pal4096) = (Palette::new(256, &scene), Palette::new(4096, &scene));
     let pipes: [(&dyn Pipeline, bool); 6] =
         [(&cart, true), (&hemi, false), (&polar, true), (&height, true), (&pal256, true), (&pal4096, false)];
-    // the demo's own scene first: the torus through the Cartesian pipeline (the model and Verilator; rust-hdl runs
-    // the same block on the quad)
-    let on_torus = run_pipeline(&cart, &torus, out, false, no_vl.is_empty())?;
+    // the demo's own scene first: the torus through the pipeline its file names (the model and Verilator)
+    let torus_pipe = crate::render::pipeline(&demo_spec()?);
+    let on_torus = run_pipeline(torus_pipe.as_ref(), &torus, out, false, no_vl.is_empty())?;
     let runs = pipes
         .iter()
         .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
@@ -175,7 +180,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
 
     // waveforms of the first pixels, and the Verilog
     let vdir = out.join("verilog");
-    for r in &runs {
+    for r in std::iter::once(&on_torus).chain(&runs) {
         r.pipe.rtl().write_vcd(r.pipe.model(), &r.pipe.waveform(&r.prep), &out.join(format!("{}.vcd", r.pipe.model().name)))?;
         r.pipe.rtl().export(&vdir)?;
     }
@@ -186,7 +191,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         let parts: Vec<synth::fpga::Part> = crate::hardware::DEMO_PARTS.iter().copied().filter(|p| p.family == synth::fpga::Family::Ice40 || no_ecp5.is_none()).collect();
         let (hd, ps) = (&hdir, &parts);
         let jobs: Vec<crate::hardware::Job> =
-            runs.iter().map(|r| -> crate::hardware::Job { let rtl = r.pipe.rtl(); Box::new(move |say| rtl.measure(hd, ps, say)) }).collect();
+            std::iter::once(&on_torus).chain(&runs).map(|r| -> crate::hardware::Job { let rtl = r.pipe.rtl(); Box::new(move |say| rtl.measure(hd, ps, say)) }).collect();
         Some(crate::hardware::run_jobs(jobs)?)
     } else {
         None
@@ -242,7 +247,8 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         println!("ECP5 figures skipped: {e}\n");
     }
     if let Some(hw) = &hw {
-        let names: Vec<&str> = runs.iter().map(|r| r.pipe.label()).collect();
+        // the torus's pipeline first, then the quad's
+        let names: Vec<&str> = std::iter::once(&on_torus).chain(&runs).map(|r| r.pipe.label()).collect();
         hardware_table(&names, hw);
     }
     println!("{:<52} {:>9} {:>9}   {}", "error of the bit-exact models vs the scene's ideal", "mean", "max", "max at");
@@ -284,7 +290,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     println!("wrote {}: {};", out.display(), written.join(", "));
     println!("      polar_surface_light_error_heat, polar_wrap_pixels, below_horizon_{{ideal,cartesian,polar}} .png;");
     println!("      fig8a_blinn, fig8b_bspline, colour_{{reference,bilinear,bspline}} .png;");
-    let vcds: Vec<String> = runs.iter().map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
+    let vcds: Vec<String> = std::iter::once(&on_torus).chain(&runs).map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
     println!("      {}; verilog/{}", vcds.join(", "), if synth { "; synth/" } else { "" });
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
     let bad: Vec<String> = std::iter::once(&on_torus)

@@ -28,7 +28,7 @@ pub fn parse_window(s: &str) -> Result<Window, String> {
 /// The pipeline a scene names, built for it.
 pub fn pipeline(spec: &SceneSpec) -> Box<dyn Pipeline> {
     match spec.pipeline {
-        PipelineKind::Cartesian(decode) => Box::new(Cartesian { decode }),
+        PipelineKind::Cartesian { decode, gloss } => Box::new(Cartesian { decode, gloss }),
         PipelineKind::CartSurface(variant) => Box::new(CartSurface { variant }),
         PipelineKind::Polar { scale, pw, h } => Box::new(Polar { scale, pw, h }),
         PipelineKind::Height => Box::new(Height::new(&spec.scene)),

@@ -36,7 +36,8 @@ pub const LUT4_PER_MAC16: u64 = 265;
 /// A pipeline the project builds, as a report point names it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Choice {
-    Cartesian(Decode),
+    /// lights per vertex; with the gloss unit (true) or without
+    Cartesian(Decode, bool),
     Surface(Variant),
     Polar(Scale),
     /// the map's height bits (8, or 4 read doubled: the same datapath)
@@ -47,7 +48,7 @@ pub enum Choice {
 impl Choice {
     pub fn build(self, scene: &Scene) -> Box<dyn Pipeline> {
         match self {
-            Choice::Cartesian(decode) => Box::new(Cartesian { decode }),
+            Choice::Cartesian(decode, gloss) => Box::new(Cartesian { decode, gloss }),
             Choice::Surface(variant) => Box::new(CartSurface { variant }),
             Choice::Polar(scale) => Box::new(Polar { scale, pw: crate::demo::POLAR_PW, h: crate::demo::POLAR_H }),
             Choice::Height(bits) => Box::new(Height::with_bits(scene, bits)),
@@ -56,7 +57,8 @@ impl Choice {
     }
 
     fn all() -> Vec<Choice> {
-        let mut v = vec![Choice::Cartesian(Decode::Seed), Choice::Cartesian(Decode::HemiOct)];
+        let mut v = vec![Choice::Cartesian(Decode::Seed, true), Choice::Cartesian(Decode::HemiOct, true)];
+        v.extend([Choice::Cartesian(Decode::Seed, false), Choice::Cartesian(Decode::HemiOct, false)]);
         v.extend(Variant::ALL.map(Choice::Surface));
         v.extend([Choice::Polar(Scale::Seed), Choice::Polar(Scale::Dc255), Choice::Height(8), Choice::Height(4), Choice::Palette(256), Choice::Palette(4096)]);
         v
@@ -68,6 +70,7 @@ impl Choice {
         match self {
             Choice::Height(_) | Choice::Palette(_) => scene.curved.is_none(),
             Choice::Surface(v) => v.gloss || scene.conc == 0,
+            Choice::Cartesian(_, gloss) => gloss || scene.conc == 0,
             _ => true,
         }
     }
@@ -296,7 +299,14 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
     let gloss = |n: [f64; 3], l: [f64; 3]| shade_of(scene.conc, n, l);
     let p10 = |p: f64| p / 1023.0 * 255.0;
     match choice {
-        Choice::Cartesian(d) => Some(split(scene, &cartesian_meaning(scene, d), prep, exact_shade, &gloss, &|i| p10(vectors::cart_pipeline::float_p(d, i)))),
+        Choice::Cartesian(d, g) => {
+            // a matte pipeline's vectors are the full one's without C (which is 0)
+            let float = |i: &[i64]| {
+                let full = if g { i.to_vec() } else { vectors::cart_pipeline::with_zero_conc(i) };
+                p10(vectors::cart_pipeline::float_p(d, &full))
+            };
+            Some(split(scene, &cartesian_meaning(scene, d), prep, exact_shade, &gloss, &float))
+        }
         Choice::Surface(v) => Some(split(scene, &cartesian_meaning(scene, v.decode), prep, exact_shade, &gloss, &|i| p10(vectors::cart_surface::float_p(v, i)))),
         Choice::Polar(sc) => {
             use vectors::polar_encode;

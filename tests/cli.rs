@@ -111,7 +111,8 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
         "cart_pipeline.vcd", "polar_pipeline.vcd", "cart_pipeline_hemi_oct.vcd", "verilog/cart_pipeline.v",
         "fig8a_blinn.png", "fig8b_bspline.png", "colour_reference.png", "colour_bilinear.png", "colour_bspline.png",
         "palette_pipeline_model.png", "palette_pipeline_rust_hdl.png", "palette_pipeline_12_model.png", "palette_pipeline.vcd",
-        "palette_pipeline_12.vcd", "verilog/palette_pipeline_12.v",
+        "palette_pipeline_12.vcd", "verilog/palette_pipeline_12.v", "torus_model.png", "cart_pipeline_matte.vcd",
+        "verilog/cart_pipeline_matte.v",
     ] {
         assert!(d.join(f).is_file(), "{f} missing");
     }
@@ -597,9 +598,11 @@ fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
     let (_, module, _) = bumprtl(&["verilog", "cart_surface", "--out", "-"]);
     assert_eq!(std::fs::read_to_string(d.join("cart_surface.v")).unwrap(), module);
     assert!(!module.contains("l0_x") && !module.contains("$light_norm") && module.contains("module cart_surface("));
+    // the demo's torus: lights per vertex (so the light interpolator and its normaliser) and C = 0 (so no gloss unit)
     let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("demo.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0);
-    assert!(text.contains("module cart_pipeline(") && text.contains("l0_x") && text.contains("$light_norm"), "{}", &text[..text.len().min(200)]);
+    assert!(text.contains("module cart_pipeline_matte(") && text.contains("l0_x") && text.contains("$light_norm"), "{}", &text[..text.len().min(200)]);
+    assert!(!text.contains("gloss") && !text.contains("conc"), "the matte pipeline holds no gloss unit and no C port");
     let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("sphere_polar.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0);
     assert!(text.contains("module polar_pipeline("), "{}", &text[..text.len().min(200)]);

@@ -11,7 +11,7 @@ fn bench(c: &mut Criterion) {
     g.sample_size(10);
     let (height, palette) = (Height::new(&scene), Palette::new(256, &scene));
     let pipes: [&dyn Pipeline; 5] =
-        [&Cartesian { decode: Decode::Seed }, &Cartesian { decode: Decode::HemiOct }, &Polar { scale: Scale::Seed, pw: 16, h: 1.0 }, &height, &palette];
+        [&Cartesian::glossy(Decode::Seed), &Cartesian::glossy(Decode::HemiOct), &Polar { scale: Scale::Seed, pw: 16, h: 1.0 }, &height, &palette];
     for p in pipes {
         let prep = p.prepare(&scene);
         g.bench_function(format!("{} ideal (f64, scene set-up included)", p.model().name), |b| b.iter(|| p.prepare(&scene).ideal.len()));

@@ -24,7 +24,7 @@ fn frame<U: StreamUnit>(c: &mut Criterion, m: &UnitModel, inputs: &[Vec<i64>]) {
 fn bench(c: &mut Criterion) {
     use sim::pipeline::{Cartesian, Pipeline, Polar};
     let scene = sim::scene::Scene::default();
-    let cart = Cartesian { decode: vectors::cart_pipeline::Decode::Seed }.prepare(&scene);
+    let cart = Cartesian::glossy(vectors::cart_pipeline::Decode::Seed).prepare(&scene);
     frame::<rtl::cart_pipeline::CartPipeline>(c, &vectors::cart_pipeline::MODEL, &cart.inputs);
     let polar = Polar { scale: vectors::polar_encode::Scale::Seed, pw: 16, h: 1.0 }.prepare(&scene);
     frame::<rtl::polar_pipeline::PolarPipelineSeed>(c, &vectors::polar_pipeline::MODEL, &polar.inputs);

@@ -153,34 +153,56 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
 }
 
 /// Seed 000's second embodiment: the height map's normals encoded as Cartesian texels (the seed's offset binary,
-/// or hemi-octahedral with the decode that reads it), bilinear, the vertex lights interpolated per pixel.
+/// or hemi-octahedral with the decode that reads it), bilinear, the vertex lights interpolated per pixel; with the
+/// gloss unit, or for a material with C = 0 without it (`cart_pipeline_matte`, `cart_pipeline_hemi_oct_matte`).
 pub struct Cartesian {
     pub decode: Decode,
+    pub gloss: bool,
+}
+
+impl Cartesian {
+    /// The full pipeline, gloss unit and all.
+    pub const fn glossy(decode: Decode) -> Cartesian {
+        Cartesian { decode, gloss: true }
+    }
+    /// The pipeline for a scene: no gloss unit when its C is 0.
+    pub fn for_scene(decode: Decode, scene: &Scene) -> Cartesian {
+        Cartesian { decode, gloss: scene.conc != 0 }
+    }
 }
 
 impl Pipeline for Cartesian {
     fn label(&self) -> &'static str {
-        match self.decode {
-            Decode::Seed => "Cartesian",
-            Decode::HemiOct => "hemi-oct",
+        match (self.decode, self.gloss) {
+            (Decode::Seed, true) => "Cartesian",
+            (Decode::HemiOct, true) => "hemi-oct",
+            (Decode::Seed, false) => "Cartesian, matte",
+            (Decode::HemiOct, false) => "hemi-oct, matte",
         }
     }
     fn model(&self) -> &'static UnitModel {
-        match self.decode {
-            Decode::Seed => &cart_pipeline::MODEL,
-            Decode::HemiOct => &cart_pipeline::MODEL_HEMI_OCT,
+        match (self.decode, self.gloss) {
+            (Decode::Seed, true) => &cart_pipeline::MODEL,
+            (Decode::HemiOct, true) => &cart_pipeline::MODEL_HEMI_OCT,
+            (Decode::Seed, false) => &cart_pipeline::MODEL_MATTE,
+            (Decode::HemiOct, false) => &cart_pipeline::MODEL_HEMI_OCT_MATTE,
         }
     }
     fn rtl(&self) -> &'static dyn RtlPaths {
-        match self.decode {
-            Decode::Seed => &Rtl::<rtl::cart_pipeline::CartPipeline>::PATHS,
-            Decode::HemiOct => &Rtl::<rtl::cart_pipeline::CartPipelineHemiOct>::PATHS,
+        use rtl::cart_pipeline::*;
+        match (self.decode, self.gloss) {
+            (Decode::Seed, true) => &Rtl::<CartPipeline>::PATHS,
+            (Decode::HemiOct, true) => &Rtl::<CartPipelineHemiOct>::PATHS,
+            (Decode::Seed, false) => &Rtl::<CartPipelineMatte>::PATHS,
+            (Decode::HemiOct, false) => &Rtl::<CartPipelineHemiOctMatte>::PATHS,
         }
     }
     fn units(&self) -> &'static [&'static str] {
-        match self.decode {
-            Decode::Seed => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
-            Decode::HemiOct => &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"],
+        match (self.decode, self.gloss) {
+            (Decode::Seed, true) => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
+            (Decode::HemiOct, true) => &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"],
+            (Decode::Seed, false) => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
+            (Decode::HemiOct, false) => &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "blend"],
         }
     }
     fn describe(&self, scene: &Scene) -> String {
@@ -188,11 +210,14 @@ impl Pipeline for Cartesian {
             Decode::Seed => "seed-encoded texels",
             Decode::HemiOct => "hemi-octahedral texels",
         };
-        format!("{texels}, bilinear, lights interpolated per pixel, gloss C = {}", scene.conc)
+        let gloss = if self.gloss { format!("gloss C = {}", scene.conc) } else { "matte (C = 0: no gloss unit)".into() };
+        format!("{texels}, bilinear, lights interpolated per pixel, {gloss}")
     }
+    /// The full pipeline's vectors; the matte one's are the same without C (a matte pipeline's scene has C = 0, so
+    /// its pixels are the full pipeline's at C = 0).
     fn prepare(&self, scene: &Scene) -> Prepared {
         use cart_pipeline::input;
-        cartesian_prepare(scene, self.decode, cart_pipeline::INPUTS.len(), &|x, texel, px, q| {
+        let mut p = cartesian_prepare(scene, self.decode, cart_pipeline::INPUTS.len(), &|x, texel, px, q| {
             for (slot, k) in cart_pipeline::TEXELS.iter().zip(0..4) {
                 (x[slot[0]], x[slot[1]]) = texel(k);
             }
@@ -208,7 +233,12 @@ impl Pipeline for Cartesian {
             for c in 0..3 {
                 (x[cart_pipeline::SRC[c]], x[cart_pipeline::DST[c]]) = (scene.src[c], scene.dst[c]);
             }
-        })
+        });
+        if !self.gloss {
+            assert_eq!(scene.conc, 0, "the matte pipeline is built for C = 0 only");
+            p.inputs = p.inputs.into_iter().map(cart_pipeline::without_conc).collect();
+        }
+        p
     }
     fn shade(&self, out: &[i64]) -> f64 {
         out[cart_pipeline::output::p] as f64 / 4.0
@@ -221,7 +251,8 @@ impl Pipeline for Cartesian {
         [out[output::out_r], out[output::out_g], out[output::out_b]].map(|c| c as u8)
     }
     fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
-        Some(cart_pipeline::exact_trace_with(self.decode, input).normal.map(|c| c as f64))
+        let full = if self.gloss { input.to_vec() } else { cart_pipeline::with_zero_conc(input) };
+        Some(cart_pipeline::exact_trace_with(self.decode, &full).normal.map(|c| c as f64))
     }
 }
 
@@ -725,8 +756,10 @@ mod tests {
 
     fn all() -> Vec<Box<dyn Pipeline>> {
         let mut v: Vec<Box<dyn Pipeline>> = vec![
-            Box::new(Cartesian { decode: Decode::Seed }),
-            Box::new(Cartesian { decode: Decode::HemiOct }),
+            Box::new(Cartesian::glossy(Decode::Seed)),
+            Box::new(Cartesian::glossy(Decode::HemiOct)),
+            Box::new(Cartesian { decode: Decode::Seed, gloss: false }),
+            Box::new(Cartesian { decode: Decode::HemiOct, gloss: false }),
             Box::new(Polar { scale: Scale::Seed, pw: 16, h: 1.0 }),
             Box::new(Polar { scale: Scale::Dc255, pw: 16, h: 1.0 }),
             Box::new(Height::new(&Scene::default())),
@@ -752,6 +785,26 @@ mod tests {
         assert_eq!(labels.len(), 8);
     }
 
+    /// A per-vertex scene with C = 0 is built without the gloss unit, and renders as the full pipeline does.
+    #[test]
+    fn a_matte_scene_gets_the_per_vertex_pipeline_without_gloss_and_the_same_picture() {
+        for decode in [Decode::Seed, Decode::HemiOct] {
+            let scene = Scene { size: 24, conc: 0, ..Scene::default() };
+            let (m, g) = (Cartesian::for_scene(decode, &scene), Cartesian::glossy(decode));
+            assert!(!m.gloss && Cartesian::for_scene(decode, &Scene::default()).gloss);
+            assert!(!m.units().contains(&"gloss") && g.units().contains(&"gloss"));
+            assert_eq!(m.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>(), g.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>());
+            let (pm, pg) = (m.prepare(&scene), g.prepare(&scene));
+            assert_eq!(pm.pixels().len(), pg.pixels().len());
+            assert!(!pm.pixels().is_empty());
+            for (a, b) in pm.pixels().iter().zip(pg.pixels()) {
+                assert_eq!(a.len() + 1, b.len());
+                assert_eq!((m.model().exact)(a), (g.model().exact)(b));
+                assert_eq!(m.normal(a), g.normal(b));
+            }
+        }
+    }
+
     #[test]
     fn every_pipeline_names_units_of_the_table_and_its_rtl_is_its_model() {
         for p in all() {
@@ -765,8 +818,10 @@ mod tests {
 
     #[test]
     fn prepared_inputs_are_legal_for_the_model() {
-        let scene = Scene { size: 8, ..Scene::default() };
         for p in all() {
+            // a pipeline without a gloss unit is built for C = 0
+            let conc = if p.units().contains(&"gloss") { Scene::default().conc } else { 0 };
+            let scene = Scene { size: 8, conc, ..Scene::default() };
             let prep = p.prepare(&scene);
             assert_eq!((prep.pixels().len(), prep.ideal.len()), (64, 64));
             for x in &prep.inputs {

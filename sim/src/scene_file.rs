@@ -359,8 +359,8 @@ pub struct SceneFile {
 /// The pipeline a scene is rendered by, with its settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PipelineKind {
-    /// lights per vertex, interpolated per pixel
-    Cartesian(Decode),
+    /// lights per vertex, interpolated per pixel; with the gloss unit unless C = 0
+    Cartesian { decode: Decode, gloss: bool },
     /// one light per surface: `cart_surface` and its variants (no gloss unit at C = 0, bilinear or nearest)
     CartSurface(vectors::cart_surface::Variant),
     /// the angle scale, the power unit's pw = 4p, and the weight h
@@ -584,7 +584,8 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             } else if nearest {
                 return Err(at.err(filter_span.unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": the nearest-texel pipelines light a surface with one light (per = \"surface\" under [light])"));
             } else {
-                PipelineKind::Cartesian(decode)
+                let conc = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0);
+                PipelineKind::Cartesian { decode, gloss: conc != 0 }
             }
         }
         Encoding::Polar | Encoding::PolarDc255 => {
@@ -620,7 +621,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     if let Some(c) = mat.dst {
         scene.dst = c.map(|b| b.0);
     }
-    scene.per_surface = !matches!(pipeline, PipelineKind::Cartesian(_));
+    scene.per_surface = !matches!(pipeline, PipelineKind::Cartesian { .. });
     let name = f.name.unwrap_or_else(|| at.file.to_string());
     Ok(SceneSpec { name, scene, pipeline, notes })
 }

@@ -72,7 +72,7 @@ impl Shortcomings {
         // a light below the horizon. Both pipelines' N·L before their shading curves (Cartesian: dot3's X; polar: the
         // clamped shade with h = 1), 8-bit, against 255·max(0, N·L) with the pixel's true light
         let low = Scene { light_pos: [-0.6, -0.12, 0.5], ..scene.clone() };
-        let low_c = Cartesian { decode: Decode::Seed }.prepare(&low);
+        let low_c = Cartesian::glossy(Decode::Seed).prepare(&low);
         let low_p = Polar { h: 1.0, ..*polar }.set_up(&low);
         s.low_below_deg = -low_p.prepared.ideal[n / 2].light[1].asin().to_degrees();
         s.low_moved = low_p.light.moved;

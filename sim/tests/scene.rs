@@ -29,8 +29,8 @@ fn agree(p: &dyn Pipeline) {
 
 #[test]
 fn every_pipeline_renders_bit_identically_in_the_three_paths() {
-    agree(&Cartesian { decode: Decode::Seed });
-    agree(&Cartesian { decode: Decode::HemiOct });
+    agree(&Cartesian::glossy(Decode::Seed));
+    agree(&Cartesian::glossy(Decode::HemiOct));
     agree(&Polar { scale: Scale::Seed, pw: 16, h: 1.0 });
     agree(&Polar { scale: Scale::Dc255, pw: 16, h: 1.0 });
     agree(&Height::new(&scene()));
@@ -73,7 +73,7 @@ fn filtering_s_and_r_as_numbers_goes_wrong_across_the_wrap() {
 #[test]
 fn a_light_below_the_horizon_is_moved_onto_it_and_the_polar_path_pays_for_it() {
     let low = Scene { light_pos: [-0.6, -0.12, 0.5], ..scene() };
-    let c = Cartesian { decode: Decode::Seed }.prepare(&low);
+    let c = Cartesian::glossy(Decode::Seed).prepare(&low);
     let p = Polar { scale: Scale::Seed, pw: 4, h: 1.0 }.set_up(&low);
     assert!(p.light.moved && p.light.t == 0.0 && p.light.k2 == 0);
     let (mut ce, mut pe) = (0.0, 0.0);

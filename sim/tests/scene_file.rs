@@ -37,14 +37,15 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     let d = Scene::default();
     let s = &quad.scene;
     assert_eq!((s.size, s.tex, s.light_pos, s.conc, s.src, s.dst, s.relief), (d.size, d.tex, d.light_pos, d.conc, d.src, d.dst, d.relief));
-    assert_eq!(quad.pipeline, PipelineKind::Cartesian(Decode::Seed));
+    assert_eq!(quad.pipeline, PipelineKind::Cartesian { decode: Decode::Seed, gloss: true });
     assert!(!quad.scene.per_surface && quad.scene.curved.is_none());
     let demo = scene_file::load(&scenes_dir().join("demo.toml")).unwrap();
-    assert_eq!(demo.pipeline, PipelineKind::Cartesian(Decode::Seed));
+    // C = 0: the per-vertex pipeline without its gloss unit
+    assert_eq!(demo.pipeline, PipelineKind::Cartesian { decode: Decode::Seed, gloss: false });
     assert!(matches!(demo.scene.curved.map(|c| c.shape), Some(sim::surface::Shape::Torus { .. })));
     // each pipeline has its scene
     let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline;
-    assert_eq!(kind("hemi_oct.toml"), PipelineKind::Cartesian(Decode::HemiOct));
+    assert_eq!(kind("hemi_oct.toml"), PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: true });
     assert!(matches!(kind("polar.toml"), PipelineKind::Polar { pw: 16, .. }));
     assert_eq!(kind("height.toml"), PipelineKind::Height);
     assert_eq!(kind("palette.toml"), PipelineKind::Palette(256));
@@ -92,7 +93,10 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     };
     let kind = |t: String| parse(&t).unwrap_or_else(|e| panic!("{e}")).pipeline;
     let v = |decode, nearest, gloss| PipelineKind::CartSurface(Variant { decode, nearest, gloss });
-    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 0\n")), PipelineKind::Cartesian(Decode::Seed));
+    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 0\n")), PipelineKind::Cartesian { decode: Decode::Seed, gloss: false });
+    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 1\n")), PipelineKind::Cartesian { decode: Decode::Seed, gloss: true });
+    assert_eq!(kind(scene("hemi_oct", "", "vertex", "")), PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: true }, "the default gloss is 96");
+    assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: false });
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
     assert_eq!(kind(scene("seed", "", "surface", "")), v(Decode::Seed, false, true), "the default gloss is 96");
