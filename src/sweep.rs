@@ -593,6 +593,8 @@ pub fn plot(rs: &[Result_], path: &Path) -> Result<(), String> {
             }
         }
         let palette = [RGBColor(31, 119, 180), RGBColor(214, 39, 40), RGBColor(44, 160, 44), RGBColor(148, 103, 189)];
+        // (the point in pixels, its label, its scene's colour)
+        let mut labels: Vec<((i32, i32), String, RGBColor)> = vec![];
         for (k, sc) in scenes.iter().enumerate() {
             let col = palette[k % palette.len()];
             let pts: Vec<(f64, f64, bool, &str)> =
@@ -608,9 +610,31 @@ pub fn plot(rs: &[Result_], path: &Path) -> Result<(), String> {
             for &(x, y, p, id) in &pts {
                 if p {
                     let label = id.split_once('.').map_or(id, |(_, rest)| rest).to_string();
-                    chart.draw_series(std::iter::once(Text::new(label, (x, y), (font, 12).into_font().color(&BLACK)))).map_err(|x| e(x.to_string()))?;
+                    labels.push((chart.backend_coord(&(x, y)), label, col));
                 }
             }
+        }
+        // the Pareto points' labels, each beside its point where it overlaps no label placed before it (nearest
+        // first, up or down a line at a time), joined to its point by a thin line when moved
+        let style = (font, 12).into_font().color(&BLACK);
+        let area = chart.plotting_area().get_pixel_range();
+        labels.sort_by_key(|l| (l.0 .0, l.0 .1));
+        let mut placed: Vec<(i32, i32, i32, i32)> = vec![];
+        for ((px, py), label, col) in labels {
+            let (w, h) = root.estimate_text_size(&label, &style).map_err(|x| e(x.to_string()))?;
+            let (w, h) = (w as i32, h as i32 + 2);
+            // right of the point, or left of it where the right runs off the plot
+            let x0 = if px + 8 + w <= area.0.end { px + 8 } else { px - 8 - w };
+            let clear = |y0: i32| {
+                y0 >= area.1.start && y0 + h <= area.1.end && placed.iter().all(|b| x0 + w <= b.0 || b.2 <= x0 || y0 + h <= b.1 || b.3 <= y0)
+            };
+            let y0 = (0..40).flat_map(|k| [k, -k]).map(|k| py - h / 2 + k * h).find(|&y| clear(y)).unwrap_or(py - h / 2);
+            placed.push((x0, y0, x0 + w, y0 + h));
+            if (y0 + h / 2 - py).abs() > h / 2 {
+                let end = (if x0 > px { x0 - 1 } else { x0 + w + 1 }, y0 + h / 2);
+                root.draw(&PathElement::new(vec![(px, py), end], col.mix(0.5))).map_err(|x| e(x.to_string()))?;
+            }
+            root.draw(&Text::new(label, (x0, y0), style.clone())).map_err(|x| e(x.to_string()))?;
         }
         chart.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK).label_font((font, 14)).draw().map_err(|x| e(x.to_string()))?;
         root.present().map_err(|x| e(x.to_string()))?;
