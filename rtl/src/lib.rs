@@ -30,6 +30,7 @@ pub mod cartesian {
     pub mod cart_pipeline;
     pub mod cart_surface;
     pub mod light_iter;
+    pub mod wiring;
 }
 
 /// Seed 000's first embodiment (FIG. 3): polar texels, one light per surface.

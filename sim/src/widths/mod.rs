@@ -230,22 +230,27 @@ fn signal(dir: &str, t: Ty) -> Ty {
     Ty::Path("Signal".into(), vec![Ty::Path(dir.into(), vec![]), t])
 }
 
-/// The invocations, in the same text, of each `macro_rules!` the text defines, expanded by substituting their
+/// The invocations, in the same text, of each `macro_rules!` the text defines, expanded (`expand_macros`).
+fn expand_local_macros(s: &str) -> Vec<String> {
+    expand_macros(s, s)
+}
+
+/// The invocations, in `s`, of each `macro_rules!` that `defs` defines, expanded by substituting their
 /// arguments for the first rule's plain `$name:kind` parameters (repetitions such as `$(#[$doc:meta])*` are left
 /// out on both sides), and for the parameters of its optional groups (`$(, marker: $a:ident, $b:ident)?`), which an
 /// invocation binds by naming the marker (`marker: x, y`): a group of the body (`$( ... )?`) is kept when the
 /// invocation bound every parameter it names and dropped when not. Enough for the rtl's own macros that declare
 /// blocks.
-fn expand_local_macros(s: &str) -> Vec<String> {
+fn expand_macros(defs: &str, s: &str) -> Vec<String> {
     let mut out = vec![];
-    for (k, _) in s.match_indices("macro_rules!") {
-        let mut p = Parser { s: s.as_bytes(), i: k + 12 };
+    for (k, _) in defs.match_indices("macro_rules!") {
+        let mut p = Parser { s: defs.as_bytes(), i: k + 12 };
         p.ws();
         let start = p.i;
         while p.i < p.s.len() && (p.s[p.i].is_ascii_alphanumeric() || p.s[p.i] == b'_') {
             p.i += 1;
         }
-        let name = s[start..p.i].to_string();
+        let name = defs[start..p.i].to_string();
         // `{ (matcher) => { body } ... }`: the first rule
         if p.eat(b'{').is_none() || p.eat(b'(').is_none() {
             continue;
@@ -358,10 +363,15 @@ pub fn declarations() -> (HashMap<String, Decl>, HashMap<String, Ty>) {
     let (mut decls, mut aliases) = (HashMap::new(), HashMap::new());
     let mut consts: HashMap<String, Option<String>> = HashMap::new();
     let mut sources: Vec<String> = vec![strip(LIBRARY)];
-    for f in rtl::source::FILES {
-        let s = strip(f.1);
-        sources.extend(expand_local_macros(&s));
-        sources.push(s);
+    let files: Vec<String> = rtl::source::FILES.iter().map(|f| strip(f.1)).collect();
+    // a file whose macros are re-exported by path (`pub(crate) use name;`) lends them to every other file
+    let lenders: Vec<&String> = files.iter().filter(|s| s.contains("macro_rules!") && s.contains("pub(crate) use ")).collect();
+    for s in &files {
+        sources.extend(expand_local_macros(s));
+        for d in lenders.iter().filter(|d| !std::ptr::eq(**d, s)) {
+            sources.extend(expand_macros(d, s));
+        }
+        sources.push(s.clone());
     }
     for s in &sources {
         let b = s.as_bytes();

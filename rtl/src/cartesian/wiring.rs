@@ -1,0 +1,238 @@
+//! The wiring every Cartesian pipeline shares, written once: the texel (filtered or the nearest one) → the decode →
+//! the bump's normaliser ─┐ the light ─┴→ dot3 → [gloss] → α = P >> 2 → blend, with the side-band values (the
+//! light, C, the blend's mode and colours, P) riding beside the stages they skip.
+//!
+//! `cartesian_pipeline!` writes one block. Its fixed arguments name the module, the block, the unit, the decode (its
+//! block, its module, its two texel ports), the filter's latency (`$front`) and `$g`, 1 with a gloss unit and 0
+//! without. Its optional groups add what a variant holds:
+//! - `filter:` two bilinear units (TexelX or U, TexelZ or V), their valid chain and the blend factors' ports;
+//! - `nearest:` the two ports the nearest texel comes in on (no filter);
+//! - `vertex:` the three vertex lights and the barycentric weights (the ports the group names are the weights),
+//!   interpolated per pixel by `light_iter`, waiting for the bump path in three DFF chains, then normalised;
+//! - `surface:` one light per surface, already a unit vector (Sq1.10), packed into one 36-bit word that waits in
+//!   block RAM for the bump path (no light_iter, no light normaliser);
+//! - `gloss:` the gloss unit, C's port and C's block-RAM delay line.
+//!
+//! `cart_pipeline.rs` and `cart_surface.rs` invoke it for their blocks.
+
+// The block types the expansion names; each invoking file imports the decode it passes.
+#[allow(unused_imports)]
+pub(crate) use crate::bilinear::BilinearUnit;
+#[allow(unused_imports)]
+pub(crate) use crate::delay::Delay;
+#[allow(unused_imports)]
+pub(crate) use crate::dot3::Dot3;
+#[allow(unused_imports)]
+pub(crate) use crate::gloss::Gloss;
+#[allow(unused_imports)]
+pub(crate) use crate::light_iter::LightIter;
+#[allow(unused_imports)]
+pub(crate) use crate::normalise::Normalise;
+#[allow(unused_imports)]
+pub(crate) use crate::ram_delay::{DelayedBlend, RamDelay};
+
+macro_rules! cartesian_pipeline {
+    ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident, $front:expr, $g:literal
+        $(, filter: $fl:ident, $flv:ident, $ub:ident, $vb:ident)? $(, nearest: $nx:ident, $nz:ident)?
+        $(, vertex: $li:ident, $ln:ident, $lvd:ident, $w1:ident, $w2:ident)? $(, surface: $lx:ident, $ly:ident, $lz:ident, $lw:ident, $lsd:ident)?
+        $(, gloss: $gl:ident, $conc:ident, $cd:ident)?) => {
+pub mod $m {
+use super::*;
+#[allow(unused_imports)]
+use crate::cartesian::wiring::*;
+#[allow(unused_imports)]
+use crate::q::{S8, Sq1_10, Sq7_2, Sq9_0, U8};
+
+/// Cycles from the pipeline's input to each unit's input.
+pub const AT_NORMALISE: usize = $front + crate::$dec_mod::LATENCY;
+pub const AT_DOT: usize = AT_NORMALISE + crate::normalise::LATENCY;
+pub const AT_GLOSS: usize = AT_DOT + crate::dot3::LATENCY;
+pub const AT_BLEND: usize = AT_GLOSS + $g * crate::gloss::LATENCY;
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY;
+$(#[doc = concat!("Cycles the light from ", stringify!($li), " waits for the bump path before its normaliser.")]
+pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY;)?
+
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct $t: unit($name, LATENCY) {
+        in {
+            $(t00_x: U8,
+            t00_z: U8,
+            t10_x: U8,
+            t10_z: U8,
+            t01_x: U8,
+            t01_z: U8,
+            t11_x: U8,
+            t11_z: U8,
+            $ub: U8,
+            $vb: U8,)?
+            $($nx: U8,
+            $nz: U8,)?
+            $(l0_x: S8,
+            l0_y: S8,
+            l0_z: S8,
+            l1_x: S8,
+            l1_y: S8,
+            l1_z: S8,
+            l2_x: S8,
+            l2_y: S8,
+            l2_z: S8,
+            $w1: Bits<9>,
+            $w2: Bits<9>,)?
+            $($lx: Sq1_10,
+            $ly: Sq1_10,
+            $lz: Sq1_10,)?
+            $($conc: U8,)?
+            mode: Bits<1>,
+            src_r: U8,
+            src_g: U8,
+            src_b: U8,
+            dst_r: U8,
+            dst_g: U8,
+            dst_b: U8,
+        }
+        out {
+            p: Bits<10>,
+            out_r: U8,
+            out_g: U8,
+            out_b: U8,
+        }
+        $(pub $fl: [BilinearUnit<8, 8>; 2], // TexelX (or U), TexelZ (or V)
+        $flv: Delay<Bit, { crate::bilinear::LATENCY }>,)?
+        pub decode: $dec,
+        pub bump_norm: Normalise,
+        $(pub $li: LightIter,
+        pub $ln: Normalise,
+        $lvd: [Delay<Sq7_2, LIGHT_DELAY>; 3],)?
+        pub dot: Dot3,
+        $(pub $gl: Gloss,
+        $cd: RamDelay<8, 6, AT_GLOSS>,)?
+        $($lsd: RamDelay<36, 5, AT_DOT>, // (l_x, l_y, l_z) packed low to high
+        $lw: Signal<Local, Bits<36>>,)?
+        pub blend: DelayedBlend<6, AT_BLEND>,
+        p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
+        bump_x10: Signal<Local, Sq9_0>,
+        bump_z10: Signal<Local, Sq9_0>,
+        shade: Signal<Local, Bits<10>>, // P (U10): X when the pipeline has no gloss unit
+        shade_valid: Signal<Local, Bit>,
+    }
+}
+
+impl Logic for $t {
+    #[hdl_gen]
+    fn update(&mut self) {
+        clock!(self, clock, decode, bump_norm, dot, blend, p_dly);
+        $(self.$gl.clock.next = self.clock.val();
+        self.$cd.clock.next = self.clock.val();)?
+        // filter: two bilinear units, TexelX (or U) and TexelZ (or V); then decode the filtered texel
+        $(for i in 0..2 {
+            self.$fl[i].clock.next = self.clock.val();
+            self.$fl[i].ublend.next = self.$ub.val();
+            self.$fl[i].vblend.next = self.$vb.val();
+        }
+        self.$flv.clock.next = self.clock.val();
+        self.$flv.d.next = self.valid_in.val();
+        self.$fl[0].t00.next = self.t00_x.val();
+        self.$fl[0].t10.next = self.t10_x.val();
+        self.$fl[0].t01.next = self.t01_x.val();
+        self.$fl[0].t11.next = self.t11_x.val();
+        self.$fl[1].t00.next = self.t00_z.val();
+        self.$fl[1].t10.next = self.t10_z.val();
+        self.$fl[1].t01.next = self.t01_z.val();
+        self.$fl[1].t11.next = self.t11_z.val();
+        self.decode.valid_in.next = self.$flv.q.val();
+        self.decode.$tu.next = self.$fl[0].out.val();
+        self.decode.$tv.next = self.$fl[1].out.val();)?
+        // or decode the nearest texel as it comes
+        $(self.decode.valid_in.next = self.valid_in.val();
+        self.decode.$tu.next = self.$nx.val();
+        self.decode.$tv.next = self.$nz.val();)?
+        // normalise the bump: INT9 → S10 by sign extension, UINT8 → S10 by zero extension
+        self.bump_x10.next = bit_cast::<10, 9>(self.decode.bump_x.val());
+        if self.decode.bump_x.val().get_bit(8) {
+            self.bump_x10.next = self.bump_x10.val() | 0x200;
+        }
+        self.bump_z10.next = bit_cast::<10, 9>(self.decode.bump_z.val());
+        if self.decode.bump_z.val().get_bit(8) {
+            self.bump_z10.next = self.bump_z10.val() | 0x200;
+        }
+        self.bump_norm.valid_in.next = self.decode.valid_out.val();
+        self.bump_norm.vec_x.next = self.bump_x10.val();
+        self.bump_norm.vec_y.next = bit_cast::<10, 8>(self.decode.bump_y.val());
+        self.bump_norm.vec_z.next = self.bump_z10.val();
+        // the vertex lights: interpolate, wait for the bump path, normalise
+        $(self.$li.clock.next = self.clock.val();
+        self.$ln.clock.next = self.clock.val();
+        for i in 0..3 {
+            self.$lvd[i].clock.next = self.clock.val();
+        }
+        self.$li.valid_in.next = self.valid_in.val();
+        self.$li.l0_x.next = self.l0_x.val();
+        self.$li.l0_y.next = self.l0_y.val();
+        self.$li.l0_z.next = self.l0_z.val();
+        self.$li.l1_x.next = self.l1_x.val();
+        self.$li.l1_y.next = self.l1_y.val();
+        self.$li.l1_z.next = self.l1_z.val();
+        self.$li.l2_x.next = self.l2_x.val();
+        self.$li.l2_y.next = self.l2_y.val();
+        self.$li.l2_z.next = self.l2_z.val();
+        self.$li.w1.next = self.$w1.val();
+        self.$li.w2.next = self.$w2.val();
+        self.$lvd[0].d.next = self.$li.light_x.val();
+        self.$lvd[1].d.next = self.$li.light_y.val();
+        self.$lvd[2].d.next = self.$li.light_z.val();
+        self.$ln.valid_in.next = self.decode.valid_out.val();
+        self.$ln.vec_x.next = self.$lvd[0].q.val();
+        self.$ln.vec_y.next = self.$lvd[1].q.val();
+        self.$ln.vec_z.next = self.$lvd[2].q.val();
+        self.dot.l_x.next = self.$ln.norm_x.val();
+        self.dot.l_y.next = self.$ln.norm_y.val();
+        self.dot.l_z.next = self.$ln.norm_z.val();)?
+        // or the surface's light waits for the bump path (three Sq1.10 in one 36-bit word: bit copies, no arithmetic)
+        $(self.$lsd.clock.next = self.clock.val();
+        self.$lw.next = bit_cast::<36, 12>(self.$lx.val());
+        self.$lw.next = self.$lw.val() | (bit_cast::<36, 12>(self.$ly.val()) << 12);
+        self.$lw.next = self.$lw.val() | (bit_cast::<36, 12>(self.$lz.val()) << 24);
+        self.$lsd.d.next = self.$lw.val();
+        self.dot.l_x.next = self.$lsd.q.val().get_bits::<12>(0);
+        self.dot.l_y.next = self.$lsd.q.val().get_bits::<12>(12);
+        self.dot.l_z.next = self.$lsd.q.val().get_bits::<12>(24);)?
+        // N·L
+        self.dot.valid_in.next = self.bump_norm.valid_out.val();
+        self.dot.n_x.next = self.bump_norm.norm_x.val();
+        self.dot.n_y.next = self.bump_norm.norm_y.val();
+        self.dot.n_z.next = self.bump_norm.norm_z.val();
+        // glossiness, where the material has it; without, P = X (the gloss unit's own C = 0)
+        self.shade.next = self.dot.x.val();
+        self.shade_valid.next = self.dot.valid_out.val();
+        $(self.$cd.d.next = self.$conc.val();
+        self.$gl.valid_in.next = self.dot.valid_out.val();
+        self.$gl.conc.next = self.$cd.q.val();
+        self.$gl.x.next = self.dot.x.val();
+        self.shade.next = self.$gl.p.val();
+        self.shade_valid.next = self.$gl.valid_out.val();)?
+        // blend: α = P >> 2 (U10 → U8, truncate)
+        self.blend.mode.next = self.mode.val();
+        self.blend.src_r.next = self.src_r.val();
+        self.blend.src_g.next = self.src_g.val();
+        self.blend.src_b.next = self.src_b.val();
+        self.blend.dst_r.next = self.dst_r.val();
+        self.blend.dst_g.next = self.dst_g.val();
+        self.blend.dst_b.next = self.dst_b.val();
+        self.blend.valid_in.next = self.shade_valid.val();
+        self.blend.alpha.next = self.shade.val().get_bits::<8>(2);
+        self.p_dly.d.next = self.shade.val();
+        self.valid_out.next = self.blend.valid_out.val();
+        self.p.next = self.p_dly.q.val();
+        self.out_r.next = self.blend.out_r.val();
+        self.out_g.next = self.blend.out_g.val();
+        self.out_b.next = self.blend.out_b.val();
+    }
+}
+
+}
+pub use $m::$t;
+    };
+}
+
+pub(crate) use cartesian_pipeline;
