@@ -793,6 +793,17 @@ mod tests {
 
     use super::*;
 
+    /// A macro defined in one file and invoked in another (re-exported by path) is expanded in the invoking file.
+    #[test]
+    fn a_macro_lent_by_another_file_is_expanded_where_it_is_invoked() {
+        let defs = "macro_rules! w { ($t:ident $(, gloss: $g:ident)?) => { struct $t { a: U8, $(pub $g: Gloss,)? } }; }\npub(crate) use w;";
+        let uses = "use crate::cartesian::wiring::w;\nw!(A);\nw!(B, gloss: gl);";
+        let squash = |t: &str| t.split_whitespace().collect::<Vec<_>>().join(" ");
+        let x: Vec<String> = expand_macros(defs, uses).iter().map(|t| squash(t)).collect();
+        assert_eq!(x, ["struct A { a: U8, }", "struct B { a: U8, pub gl: Gloss, }"]);
+        assert!(expand_local_macros(uses).is_empty());
+    }
+
     #[test]
     fn types_parse_with_their_arguments() {
         assert_eq!(
