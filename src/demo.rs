@@ -98,7 +98,8 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     let wall = Instant::now();
     // a user's map is read (or refused) before anything is written
     let mut scene = Scene { size, ..quad_scene()? };
-    let mut torus = Scene { size, ..demo_scene()? };
+    let torus_spec = demo_spec()?;
+    let mut torus = Scene { size, ..torus_spec.scene.clone() };
     if let Some(path) = height_map {
         let loaded = sim::heightmap::load(path)?;
         for n in &loaded.notes {
@@ -126,7 +127,7 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     let pipes: [(&dyn Pipeline, bool); 6] =
         [(&cart, true), (&hemi, false), (&polar, true), (&height, true), (&pal256, true), (&pal4096, false)];
     // the demo's own scene first: the torus through the pipeline its file names (the model and Verilator)
-    let torus_pipe = crate::render::pipeline(&demo_spec()?);
+    let torus_pipe = crate::render::pipeline(&torus_spec);
     let on_torus = run_pipeline(torus_pipe.as_ref(), &torus, out, false, no_vl.is_empty())?;
     let runs = pipes
         .iter()

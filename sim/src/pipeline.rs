@@ -165,10 +165,6 @@ impl Cartesian {
     pub const fn glossy(decode: Decode) -> Cartesian {
         Cartesian { decode, gloss: true }
     }
-    /// The pipeline for a scene: no gloss unit when its C is 0.
-    pub fn for_scene(decode: Decode, scene: &Scene) -> Cartesian {
-        Cartesian { decode, gloss: scene.conc != 0 }
-    }
 }
 
 impl Pipeline for Cartesian {
@@ -785,13 +781,13 @@ mod tests {
         assert_eq!(labels.len(), 8);
     }
 
-    /// A per-vertex scene with C = 0 is built without the gloss unit, and renders as the full pipeline does.
+    /// The per-vertex pipeline without the gloss unit holds the full one's other units and renders a C = 0 scene
+    /// as the full one does.
     #[test]
     fn a_matte_scene_gets_the_per_vertex_pipeline_without_gloss_and_the_same_picture() {
         for decode in [Decode::Seed, Decode::HemiOct] {
             let scene = Scene { size: 24, conc: 0, ..Scene::default() };
-            let (m, g) = (Cartesian::for_scene(decode, &scene), Cartesian::glossy(decode));
-            assert!(!m.gloss && Cartesian::for_scene(decode, &Scene::default()).gloss);
+            let (m, g) = (Cartesian { decode, gloss: false }, Cartesian::glossy(decode));
             assert!(!m.units().contains(&"gloss") && g.units().contains(&"gloss"));
             assert_eq!(m.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>(), g.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>());
             let (pm, pg) = (m.prepare(&scene), g.prepare(&scene));

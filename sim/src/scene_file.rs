@@ -578,14 +578,14 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             no(power, "power", "Cartesian")?;
             no(weight, "weight", "Cartesian")?;
             let decode = if encoding == Encoding::Seed { Decode::Seed } else { Decode::HemiOct };
+            // a gloss unit only where the material has gloss (C = 0 gives P = X)
+            let gloss = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0) != 0;
             if per == Some(Per::Surface) {
-                let conc = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0);
-                PipelineKind::CartSurface(vectors::cart_surface::Variant { decode, nearest, gloss: conc != 0 })
+                PipelineKind::CartSurface(vectors::cart_surface::Variant { decode, nearest, gloss })
             } else if nearest {
                 return Err(at.err(filter_span.unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": the nearest-texel pipelines light a surface with one light (per = \"surface\" under [light])"));
             } else {
-                let conc = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0);
-                PipelineKind::Cartesian { decode, gloss: conc != 0 }
+                PipelineKind::Cartesian { decode, gloss }
             }
         }
         Encoding::Polar | Encoding::PolarDc255 => {
