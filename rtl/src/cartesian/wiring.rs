@@ -15,33 +15,17 @@
 //!
 //! `cart_pipeline.rs` and `cart_surface.rs` invoke it for their blocks.
 
-// The block types the expansion names; each invoking file imports the decode it passes.
-#[allow(unused_imports)]
-pub(crate) use crate::bilinear::BilinearUnit;
-#[allow(unused_imports)]
-pub(crate) use crate::delay::Delay;
-#[allow(unused_imports)]
-pub(crate) use crate::dot3::Dot3;
-#[allow(unused_imports)]
-pub(crate) use crate::gloss::Gloss;
-#[allow(unused_imports)]
-pub(crate) use crate::light_iter::LightIter;
-#[allow(unused_imports)]
-pub(crate) use crate::normalise::Normalise;
-#[allow(unused_imports)]
-pub(crate) use crate::ram_delay::{DelayedBlend, RamDelay};
-
 macro_rules! cartesian_pipeline {
     ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident, $front:expr, $g:literal
         $(, filter: $fl:ident, $flv:ident, $ub:ident, $vb:ident)? $(, nearest: $nx:ident, $nz:ident)?
         $(, vertex: $li:ident, $ln:ident, $lvd:ident, $w1:ident, $w2:ident)? $(, surface: $lx:ident, $ly:ident, $lz:ident, $lw:ident, $lsd:ident)?
         $(, gloss: $gl:ident, $conc:ident, $cd:ident)?) => {
 pub mod $m {
-use super::*;
+use super::*; // the decode the invocation names
+#[allow(unused_imports)] // each variant holds some of these
+use crate::{bilinear::BilinearUnit, delay::Delay, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
 #[allow(unused_imports)]
-use crate::cartesian::wiring::*;
-#[allow(unused_imports)]
-use crate::q::{S8, Sq1_10, Sq7_2, Sq9_0, U8};
+use crate::{q::{S8, Sq1_10, Sq7_2, Sq9_0, U8}, ram_delay::{DelayedBlend, RamDelay}};
 
 /// Cycles from the pipeline's input to each unit's input.
 pub const AT_NORMALISE: usize = $front + crate::$dec_mod::LATENCY;
