@@ -253,12 +253,6 @@ fn stats(s: &ErrorStats) -> (f64, f64) {
     (s.mean(), s.max)
 }
 
-/// The shade the f64 ideal gives a normal under a light (8-bit units), through the gloss curve in reals.
-fn shade_of(conc: i64, n: [f64; 3], l: [f64; 3]) -> f64 {
-    let x = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]).max(0.0) * 1023.0;
-    vectors::gloss::ideal_real(conc, x) / 1023.0 * 255.0
-}
-
 /// The split of a pipeline's shade error (8-bit units): encoding (the codes read as the directions they mean,
 /// filtered as the ideal filters, shaded by the ideal's own curve `curve(n, l)`, against the ideal), method (the
 /// pipeline's method in reals on those codes, `float(input)`, against the codes' meaning) and datapath (the model
@@ -296,7 +290,7 @@ fn cartesian_meaning(scene: &Scene, decode: Decode) -> Vec<[f64; 3]> {
 /// The three parts for the pipelines that have a float run of their method: the Cartesian ones (N·L through the
 /// gloss curve) and the polar one (equation 3 on its own codes, then p's power, both in reals).
 fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f64]) -> Option<[(f64, f64); 3]> {
-    let gloss = |n: [f64; 3], l: [f64; 3]| shade_of(scene.conc, n, l);
+    let gloss = |n: [f64; 3], l: [f64; 3]| sim::pipeline::gloss_shade(scene.conc, n, l);
     let p10 = |p: f64| p / 1023.0 * 255.0;
     match choice {
         Choice::Cartesian(d, g) => {
@@ -331,7 +325,7 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
             let entry: Vec<[f64; 3]> = q.palette.iter().map(|n| vectors::stats::unit(n.map(|c| ((c * 511.0).round()).clamp(-512.0, 511.0)))).collect();
             let meaning: Vec<[f64; 3]> = q.index.iter().map(|&k| entry[k as usize]).collect();
             let l = vectors::table_builder::sq1_10(scene.light_dir(0.5, 0.5)).map(|c| c as f64 / 1024.0);
-            let float = |i: &[i64]| shade_of(scene.conc, entry[i[vectors::palette_pipeline::input::idx] as usize], l);
+            let float = |i: &[i64]| sim::pipeline::gloss_shade(scene.conc, entry[i[vectors::palette_pipeline::input::idx] as usize], l);
             Some(split(scene, &meaning, prep, exact_shade, &gloss, &float))
         }
     }

@@ -99,6 +99,13 @@ pub trait Pipeline: Sync {
     }
 }
 
+/// The ideal shade of a unit normal under a unit light, 8-bit units (real): N·L clamped at 0, through the gloss
+/// curve in reals at C.
+pub fn gloss_shade(conc: i64, n: [f64; 3], l: [f64; 3]) -> f64 {
+    let x = (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]).max(0.0) * 1023.0;
+    gloss::ideal_real(conc, x) / 1023.0 * 255.0
+}
+
 /// What a pipeline's rtl block does in the paths that need its type; `Rtl::<U>::PATHS` is one.
 pub trait RtlPaths: Sync {
     fn name(&self) -> &'static str;
@@ -279,8 +286,7 @@ fn cartesian_prepare(scene: &Scene, decode: Decode, ports: usize, fill: FillCart
         fill(&mut x, &texel, &px, &q);
         p.inputs.push(x);
         let (nrm, ld) = (px.normal, px.light);
-        let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
-        let shade = gloss::ideal_real(scene.conc, xd) / 1023.0 * 255.0;
+        let shade = gloss_shade(scene.conc, nrm, ld);
         p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: ld });
     }
     p
@@ -704,8 +710,7 @@ impl Pipeline for Palette {
             (x[input::frame], x[input::idx]) = (1, q.index[j * t + i] as i64); // frame 1 reads table 1
             p.inputs.push(x);
             let (nrm, ld) = (px.normal, px.light);
-            let xd = (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]).max(0.0) * 1023.0;
-            let shade = gloss::ideal_real(scene.conc, xd) / 1023.0 * 255.0;
+            let shade = gloss_shade(scene.conc, nrm, ld);
             p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: ld });
         }
         if let Ok(mut b) = self.built.write() {
@@ -729,7 +734,7 @@ impl Pipeline for Palette {
     }
     fn surface_ideal(&self, scene: &Scene, ideal: &Ideal) -> Option<f64> {
         let (n, l) = (ideal.normal, scene.light_dir(0.5, 0.5));
-        Some(gloss::ideal_real(scene.conc, (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]).max(0.0) * 1023.0) / 1023.0 * 255.0)
+        Some(gloss_shade(scene.conc, n, l))
     }
     /// The builds of the entries the first 64 pixels read, then those pixels: their frame as the hardware sees it,
     /// in a file of a size a viewer opens (the whole prologue of 4,096 builds would be tens of megabytes).
