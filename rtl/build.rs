@@ -4,7 +4,8 @@
 use std::path::{Path, PathBuf};
 
 fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir).expect("src/ is readable").map(|e| e.expect("entry").path()).collect();
+    let mut entries: Vec<PathBuf> =
+        std::fs::read_dir(dir).expect("src/ is readable").map(|e| e.expect("entry").path()).collect();
     entries.sort();
     for p in entries {
         if p.is_dir() {
@@ -19,7 +20,9 @@ fn main() {
     let root = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets it")).join("src");
     let mut files = vec![];
     walk(&root, &mut files);
-    let mut text = String::from("/// Every source file of the rtl crate: (path under src/, text).\npub const FILES: &[(&str, &str)] = &[\n");
+    let mut text = String::from(
+        "/// Every source file of the rtl crate: (path under src/, text).\npub const FILES: &[(&str, &str)] = &[\n",
+    );
     for f in &files {
         let rel = f.strip_prefix(&root).expect("under src").to_string_lossy().replace('\\', "/");
         text.push_str(&format!("    ({rel:?}, include_str!({:?})),\n", f.to_string_lossy()));

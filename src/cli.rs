@@ -2,7 +2,11 @@ use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 
 #[derive(Parser)]
-#[command(name = "bumprtl", version, about = "Bump-mapping shading hardware: model, rtl, vectors, waveforms, Verilog, synthesis")]
+#[command(
+    name = "bumprtl",
+    version,
+    about = "Bump-mapping shading hardware: model, rtl, vectors, waveforms, Verilog, synthesis"
+)]
 struct Cli {
     #[command(subcommand)]
     cmd: Cmd,
@@ -299,7 +303,9 @@ pub fn writable_file(path: &std::path::Path) -> Result<(), String> {
 
 pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
     if vectors::unit::SOFTWARE_ONLY.contains(&name) {
-        return Err(format!("`{name}` is software only (no rtl block, no vectors): its errors are in `bumprtl accuracy`"));
+        return Err(format!(
+            "`{name}` is software only (no rtl block, no vectors): its errors are in `bumprtl accuracy`"
+        ));
     }
     vectors::unit::find(name).ok_or_else(|| {
         let names: Vec<&str> = vectors::UNITS.iter().map(|u| u.name).collect();
@@ -326,8 +332,16 @@ fn one_line(e: &clap::Error) -> String {
 pub fn main() -> Result<(), String> {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
-        Err(e) if matches!(e.kind(), clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion
-            | clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand) => e.exit(),
+        Err(e)
+            if matches!(
+                e.kind(),
+                clap::error::ErrorKind::DisplayHelp
+                    | clap::error::ErrorKind::DisplayVersion
+                    | clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+            ) =>
+        {
+            e.exit()
+        }
         Err(e) => {
             eprintln!("bumprtl: {}", one_line(&e));
             std::process::exit(2);
@@ -369,11 +383,14 @@ pub fn main() -> Result<(), String> {
                 with_unit!(name.as_str(), U => Ok::<_, String>(print!("{}", synth::export::<U>().text)))?;
                 return Ok(());
             }
-            let text = vectors::csv::golden(u.name).ok_or_else(|| format!("{name} has no golden vector file in this build"))?;
+            let text = vectors::csv::golden(u.name)
+                .ok_or_else(|| format!("{name} has no golden vector file in this build"))?;
             let file = vectors::csv::parse(u, text).map_err(|e| format!("vectors/data/{name}.csv: {e}"))?;
             let n_in = u.inputs.len();
-            let ins: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[..n_in], u.inputs)).collect();
-            let outs: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[n_in..], u.outputs)).collect();
+            let ins: Vec<Vec<u64>> =
+                file.rows.iter().map(|r| vectors::unit::to_patterns(&r[..n_in], u.inputs)).collect();
+            let outs: Vec<Vec<u64>> =
+                file.rows.iter().map(|r| vectors::unit::to_patterns(&r[n_in..], u.outputs)).collect();
             let source = format!("vectors/data/{name}.csv");
             let paths = with_unit!(name.as_str(), U => {
                 let v = synth::export::<U>().write(&out)?;
@@ -441,13 +458,12 @@ pub fn main() -> Result<(), String> {
             })?;
             crate::report::synth_row(&r);
             let family = r.part().family;
-            let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| {
-                with_unit!(name.as_str(), U => synth::fpga::synth_tied::<U>(&d, family, tag, ties, keep))
-            };
+            let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| with_unit!(name.as_str(), U => synth::fpga::synth_tied::<U>(&d, family, tag, ties, keep));
             crate::hardware::mode_views(&name, family, &tied)?;
         }
         Cmd::Report { scenes, out, budgets, no_place, only, plan, point, merge } => {
-            let scenes = if scenes.is_empty() { crate::sweep::DEFAULT_SCENES.map(String::from).to_vec() } else { scenes };
+            let scenes =
+                if scenes.is_empty() { crate::sweep::DEFAULT_SCENES.map(String::from).to_vec() } else { scenes };
             let place = !no_place;
             match (plan, point, merge) {
                 (Some(file), _, _) => {
@@ -467,25 +483,36 @@ pub fn main() -> Result<(), String> {
             return Err("--out -: quantize writes a folder of files (palette, index map, mips); name a folder".into())
         }
         Cmd::Quantize { map, size, dither, green_down, relief, q, out } => {
-            let args = crate::quantize::Args { map: &map, size: size as usize, dither, green_down, relief, q, out: &out };
+            let args =
+                crate::quantize::Args { map: &map, size: size as usize, dither, green_down, relief, q, out: &out };
             crate::quantize::run(&args)?
         }
         Cmd::PaletteTable { no_synth, dir, out } => {
             writable_folder(&out)?; // before the minutes of work, synthesis included
-            let tools = synth::tools::missing(&["yosys", "nextpnr-ice40"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
-            let fmax = if no_synth || !tools {
-                if !no_synth {
-                    println!("the rtl columns need yosys, nextpnr-ice40 and nextpnr-ecp5 (`bash .ci/run` installs them)");
-                }
-                crate::palette_table::Fmax::default()
-            } else {
-                let (ecp5, up5k) = (synth::fpga::ECP5_25F, synth::fpga::UP5K);
-                let d = dir.join("table_builder").join(ecp5.name);
-                let one = synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(&d, ecp5, ecp5.default_freq())?;
-                let d = dir.join("palette_pipeline_shared").join(up5k.name);
-                let shared = synth::fpga::synth_and_place_cached::<rtl::palette_pipeline_shared::PalettePipelineShared>(&d, up5k, up5k.default_freq())?;
-                crate::palette_table::Fmax { builder_mhz: one.fmax_mhz, shared_mhz: shared.fmax_mhz }
-            };
+            let tools =
+                synth::tools::missing(&["yosys", "nextpnr-ice40"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
+            let fmax =
+                if no_synth || !tools {
+                    if !no_synth {
+                        println!(
+                            "the rtl columns need yosys, nextpnr-ice40 and nextpnr-ecp5 (`bash .ci/run` installs them)"
+                        );
+                    }
+                    crate::palette_table::Fmax::default()
+                } else {
+                    let (ecp5, up5k) = (synth::fpga::ECP5_25F, synth::fpga::UP5K);
+                    let d = dir.join("table_builder").join(ecp5.name);
+                    let one = synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(
+                        &d,
+                        ecp5,
+                        ecp5.default_freq(),
+                    )?;
+                    let d = dir.join("palette_pipeline_shared").join(up5k.name);
+                    let shared = synth::fpga::synth_and_place_cached::<
+                        rtl::palette_pipeline_shared::PalettePipelineShared,
+                    >(&d, up5k, up5k.default_freq())?;
+                    crate::palette_table::Fmax { builder_mhz: one.fmax_mhz, shared_mhz: shared.fmax_mhz }
+                };
             crate::palette_table::run(fmax, &out)?
         }
         Cmd::Render { out, .. } if out.as_os_str() == "-" => {

@@ -6,9 +6,9 @@
 
 use indicatif::{ProgressBar, ProgressStyle};
 use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar, Prepared};
-use sim::shortcomings::Shortcomings;
 use sim::render::{self, Image};
 use sim::scene::Scene;
+use sim::shortcomings::Shortcomings;
 use std::path::Path;
 use std::time::Instant;
 use vectors::cart_pipeline::Decode;
@@ -41,7 +41,9 @@ pub const POLAR_PW: i64 = 16;
 
 fn bar(len: u64, what: &str) -> ProgressBar {
     let b = ProgressBar::new(len);
-    b.set_style(ProgressStyle::with_template("{msg:<30} [{bar:40}] {pos}/{len} px {eta}").unwrap().progress_chars("=> "));
+    b.set_style(
+        ProgressStyle::with_template("{msg:<30} [{bar:40}] {pos}/{len} px {eta}").unwrap().progress_chars("=> "),
+    );
     b.set_message(what.to_string());
     b
 }
@@ -64,7 +66,13 @@ struct Run<'a> {
     surface: Option<ErrorStats>,
 }
 
-fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl: bool, verilator: bool) -> Result<Run<'a>, String> {
+fn run_pipeline<'a>(
+    pipe: &'a dyn Pipeline,
+    scene: &Scene,
+    out: &Path,
+    rust_hdl: bool,
+    verilator: bool,
+) -> Result<Run<'a>, String> {
     let (m, rtl) = (pipe.model(), pipe.rtl());
     let t = Instant::now();
     let prep = pipe.prepare(scene);
@@ -93,8 +101,14 @@ fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, rust_hdl:
     Ok(Run { pipe, prep, ideal_s, model, hdl, vl, mism_hdl, mism_vl, shade, colour, normal, surface })
 }
 
-
-pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Option<&Path>, relief: Option<f64>) -> Result<(), String> {
+pub fn run(
+    out: &Path,
+    size: usize,
+    scale: Scale,
+    synth: bool,
+    height_map: Option<&Path>,
+    relief: Option<f64>,
+) -> Result<(), String> {
     let wall = Instant::now();
     // a user's map is read (or refused) before anything is written
     let mut scene = Scene { size, ..quad_scene()? };
@@ -134,7 +148,8 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
         .collect::<Result<Vec<Run>, String>>()?;
     let polar_setup = polar.set_up(&scene);
-    let sc = Shortcomings::measure(&scene, &polar, &polar_setup, &runs[2].model, (&cart, &runs[0].prep, &runs[0].model));
+    let sc =
+        Shortcomings::measure(&scene, &polar, &polar_setup, &runs[2].model, (&cart, &runs[0].prep, &runs[0].model));
 
     // pictures: per pipeline, then the shortcomings
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;
@@ -157,13 +172,23 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
         }
         each("shade", &|k| [to8(r.pipe.shade(&r.model.outs[k])); 3])?;
         let hmax = r.colour.max.max(1.0);
-        each("error_heat", &|k| render::heat(render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb), hmax))?;
+        each("error_heat", &|k| {
+            render::heat(render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb), hmax)
+        })?;
     }
     let pol = &runs[2];
     let smax = sc.surface.max.max(1.0);
-    png("polar_surface_light_error_heat.png", &|k| render::heat((pol.pipe.shade(&pol.model.outs[k]) - sc.surface_ideal[k]).abs(), smax))?;
+    png("polar_surface_light_error_heat.png", &|k| {
+        render::heat((pol.pipe.shade(&pol.model.outs[k]) - sc.surface_ideal[k]).abs(), smax)
+    })?;
     // (b): where the four texels' R straddle the 255 → 0 wrap, over the polar shade
-    png("polar_wrap_pixels.png", &|k| if polar_setup.straddles[k] { [255, 64, 255] } else { [(pol.pipe.shade(&pol.model.outs[k]) / 3.0) as u8; 3] })?;
+    png("polar_wrap_pixels.png", &|k| {
+        if polar_setup.straddles[k] {
+            [255, 64, 255]
+        } else {
+            [(pol.pipe.shade(&pol.model.outs[k]) / 3.0) as u8; 3]
+        }
+    })?;
     // (a): shade of each pipeline and of each ideal with the light below the horizon
     png("below_horizon_ideal.png", &|k| [to8(sc.low_ideal[k]); 3])?;
     png("below_horizon_cartesian.png", &|k| [to8(sc.low_cx[k]); 3])?;
@@ -182,34 +207,58 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     // waveforms of the first pixels, and the Verilog
     let vdir = out.join("verilog");
     for r in std::iter::once(&on_torus).chain(&runs) {
-        r.pipe.rtl().write_vcd(r.pipe.model(), &r.pipe.waveform(&r.prep), &out.join(format!("{}.vcd", r.pipe.model().name)))?;
+        r.pipe.rtl().write_vcd(
+            r.pipe.model(),
+            &r.pipe.waveform(&r.prep),
+            &out.join(format!("{}.vcd", r.pipe.model().name)),
+        )?;
         r.pipe.rtl().export(&vdir)?;
     }
 
     // hardware cost, cached beside the output: each pipeline on the UP5K and the ECP5-45F, on two threads
     let hw = if synth {
         let hdir = out.join("synth");
-        let parts: Vec<synth::fpga::Part> = crate::hardware::DEMO_PARTS.iter().copied().filter(|p| p.family == synth::fpga::Family::Ice40 || no_ecp5.is_none()).collect();
+        let parts: Vec<synth::fpga::Part> = crate::hardware::DEMO_PARTS
+            .iter()
+            .copied()
+            .filter(|p| p.family == synth::fpga::Family::Ice40 || no_ecp5.is_none())
+            .collect();
         let (hd, ps) = (&hdir, &parts);
-        let jobs: Vec<crate::hardware::Job> =
-            std::iter::once(&on_torus).chain(&runs).map(|r| -> crate::hardware::Job { let rtl = r.pipe.rtl(); Box::new(move |say| rtl.measure(hd, ps, say)) }).collect();
+        let jobs: Vec<crate::hardware::Job> = std::iter::once(&on_torus)
+            .chain(&runs)
+            .map(|r| -> crate::hardware::Job {
+                let rtl = r.pipe.rtl();
+                Box::new(move |say| rtl.measure(hd, ps, say))
+            })
+            .collect();
         Some(crate::hardware::run_jobs(jobs)?)
     } else {
         None
     };
 
     let source = match height_map {
-        Some(p) => format!("{} ({}x{}, white {:.2} texels above black)", p.display(), scene.tex, scene.tex, scene.relief),
+        Some(p) => {
+            format!("{} ({}x{}, white {:.2} texels above black)", p.display(), scene.tex, scene.tex, scene.relief)
+        }
         None => format!("procedural {t}x{t} height map", t = scene.tex),
     };
     let covered = on_torus.prep.ideal.len();
     println!("scene: {size}x{size}, a torus ({covered} pixels), {source} repeated 6 × 2 round it, the point light's direction");
-    println!("  at each triangle's corners interpolated per pixel: {} ({})", on_torus.pipe.model().name, on_torus.pipe.describe(&torus));
+    println!(
+        "  at each triangle's corners interpolated per pixel: {} ({})",
+        on_torus.pipe.model().name,
+        on_torus.pipe.describe(&torus)
+    );
     let e = &on_torus;
-    let vl = e.vl.as_ref().map(|v| format!(", Verilator {:.0} px/s ({} mismatches)", v.image.pixels_per_second(), e.mism_vl)).unwrap_or_default();
+    let vl =
+        e.vl.as_ref()
+            .map(|v| format!(", Verilator {:.0} px/s ({} mismatches)", v.image.pixels_per_second(), e.mism_vl))
+            .unwrap_or_default();
     println!(
         "  model {:.0} px/s{vl}; colour error {:.3} / {:.3} 8-bit LSB mean / max, normal {} ° mean / max",
-        e.model.pixels_per_second(), e.colour.mean(), e.colour.max,
+        e.model.pixels_per_second(),
+        e.colour.mean(),
+        e.colour.max,
         e.normal.as_ref().map(|n| format!("{:.3} / {:.3}", n.mean(), n.max)).unwrap_or("-".into())
     );
     println!("every pipeline on the quad: {size}x{size}, {source}, 4 vertex lights towards a point light");
@@ -230,12 +279,23 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     line("bit-exact model", &|r| pps(&r.model, 0));
     line("rust-hdl (loop-driven)", &|r| r.hdl.as_ref().map(|h| pps(h, r.mism_hdl)).unwrap_or("in the tests".into()));
     if let Some(c) = &runs[0].vl {
-        line("Verilator, whole frame, 1 thread", &|r| r.vl.as_ref().map(|v| pps(&v.single, r.mism_vl)).unwrap_or_default());
-        line(&format!("Verilator, whole frame, {} threads", c.threads), &|r| r.vl.as_ref().map(|v| pps(&v.image, r.mism_vl)).unwrap_or_default());
-        line("Verilator bare loop (cycles/s)", &|r| r.vl.as_ref().map(|v| format!("{:.0}", v.bare_cycles_per_second)).unwrap_or_default());
+        line("Verilator, whole frame, 1 thread", &|r| {
+            r.vl.as_ref().map(|v| pps(&v.single, r.mism_vl)).unwrap_or_default()
+        });
+        line(&format!("Verilator, whole frame, {} threads", c.threads), &|r| {
+            r.vl.as_ref().map(|v| pps(&v.image, r.mism_vl)).unwrap_or_default()
+        });
+        line("Verilator bare loop (cycles/s)", &|r| {
+            r.vl.as_ref().map(|v| format!("{:.0}", v.bare_cycles_per_second)).unwrap_or_default()
+        });
         line("  1 thread against the bare loop", &|r| {
             r.vl.as_ref()
-                .map(|v| format!("{:.2}", (v.single.size * v.single.size) as f64 / v.single.seconds / v.bare_cycles_per_second))
+                .map(|v| {
+                    format!(
+                        "{:.2}",
+                        (v.single.size * v.single.size) as f64 / v.single.seconds / v.bare_cycles_per_second
+                    )
+                })
                 .unwrap_or_default()
         });
     } else {
@@ -243,7 +303,10 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     }
     println!();
     if !no_pnr.is_empty() {
-        println!("UP5K and ECP5 figures skipped: {} not installed (`bash .ci/run` installs the tools)\n", no_pnr.join(", "));
+        println!(
+            "UP5K and ECP5 figures skipped: {} not installed (`bash .ci/run` installs the tools)\n",
+            no_pnr.join(", ")
+        );
     } else if let Some(e) = &no_ecp5 {
         println!("ECP5 figures skipped: {e}\n");
     }
@@ -291,7 +354,8 @@ pub fn run(out: &Path, size: usize, scale: Scale, synth: bool, height_map: Optio
     println!("wrote {}: {};", out.display(), written.join(", "));
     println!("      polar_surface_light_error_heat, polar_wrap_pixels, below_horizon_{{ideal,cartesian,polar}} .png;");
     println!("      fig8a_blinn, fig8b_bspline, colour_{{reference,bilinear,bspline}} .png;");
-    let vcds: Vec<String> = std::iter::once(&on_torus).chain(&runs).map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
+    let vcds: Vec<String> =
+        std::iter::once(&on_torus).chain(&runs).map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
     println!("      {}; verilog/{}", vcds.join(", "), if synth { "; synth/" } else { "" });
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
     let bad: Vec<String> = std::iter::once(&on_torus)
@@ -315,23 +379,42 @@ fn hardware_table(names: &[&str], hw: &[Vec<(synth::fpga::Part, synth::fpga::Fit
     };
     for (k, (part, _)) in first.iter().enumerate() {
         let header: String = names.iter().map(|n| format!(" {n:>22}")).collect();
-        println!("{:<34}{header}", format!("{} ({})", part.name, if part.family == synth::fpga::Family::Ice40 { "yosys -dsp" } else { "yosys synth_ecp5" }));
+        println!(
+            "{:<34}{header}",
+            format!(
+                "{} ({})",
+                part.name,
+                if part.family == synth::fpga::Family::Ice40 { "yosys -dsp" } else { "yosys synth_ecp5" }
+            )
+        );
         let placed = |f: &Fit, g: &dyn Fn(&synth::fpga::SynthReport) -> String| match f {
             Fit::Placed(r) => g(r),
             Fit::DoesNotFit(_) => "-".to_string(),
         };
         let pct = |n: u64, of: u64| format!("{n} ({:.0}%)", 100.0 * n as f64 / of as f64);
         row("LUT4 / FF", &|f, _| placed(f, &|r| format!("{} / {}", r.cells.lut4, r.cells.ff)), k);
-        row(&format!("DSP of {} / BRAM of {}", part.dsp, part.bram), &|f, p| placed(f, &|r| format!("{} / {}", pct(r.cells.dsp, p.dsp), r.cells.bram)), k);
-        row(&format!("logic cells of {} (placed)", part.lut4), &|f, p| placed(f, &|r| r.lc.map(|x| pct(x, p.lut4)).unwrap_or("-".into())), k);
-        row("fmax, 1 pixel/clock", &|f, _| match f {
-            Fit::Placed(r) => match (&r.place_error, r.fmax_mhz) {
-                (Some(_), _) => "does not place".into(),
-                (None, Some(x)) => format!("{x:.1} MHz"),
-                _ => "-".into(),
+        row(
+            &format!("DSP of {} / BRAM of {}", part.dsp, part.bram),
+            &|f, p| placed(f, &|r| format!("{} / {}", pct(r.cells.dsp, p.dsp), r.cells.bram)),
+            k,
+        );
+        row(
+            &format!("logic cells of {} (placed)", part.lut4),
+            &|f, p| placed(f, &|r| r.lc.map(|x| pct(x, p.lut4)).unwrap_or("-".into())),
+            k,
+        );
+        row(
+            "fmax, 1 pixel/clock",
+            &|f, _| match f {
+                Fit::Placed(r) => match (&r.place_error, r.fmax_mhz) {
+                    (Some(_), _) => "does not place".into(),
+                    (None, Some(x)) => format!("{x:.1} MHz"),
+                    _ => "-".into(),
+                },
+                Fit::DoesNotFit(_) => "does not fit".into(),
             },
-            Fit::DoesNotFit(_) => "does not fit".into(),
-        }, k);
+            k,
+        );
         row("latency (clocks)", &|f, _| placed(f, &|r| r.latency.to_string()), k);
         for (n, h) in names.iter().zip(hw) {
             match &h[k].1 {

@@ -30,7 +30,13 @@ fn len3(v: &[i64]) -> f64 {
     ((v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) as f64).sqrt()
 }
 
-fn case(unit: &'static str, case: &str, ask: &'static str, inputs: Vec<Vec<i64>>, check: impl Fn(&[Vec<i64>]) -> (String, bool) + 'static) -> Case {
+fn case(
+    unit: &'static str,
+    case: &str,
+    ask: &'static str,
+    inputs: Vec<Vec<i64>>,
+    check: impl Fn(&[Vec<i64>]) -> (String, bool) + 'static,
+) -> Case {
     Case { unit, case: case.to_string(), ask, inputs, check: Box::new(check) }
 }
 
@@ -43,79 +49,160 @@ pub fn rtl_cases() -> Vec<Case> {
         (format!("({}, {}, {})", b[0], b[1], b[2]), b[1] >= 1 && b[0].abs() + b[1] + b[2].abs() == 255)
     };
     for t in [[0, 0], [255, 255], [0, 254], [200, 10]] {
-        v.push(case("cart_decode", &format!("invalid texel ({}, {}): outside the diamond", t[0], t[1]),
-            "a legal hemisphere vector: y ≥ 1, |x| + y + |z| = 255 (seed 000: guard against illegal texels)", vec![t.to_vec()], legal));
+        v.push(case(
+            "cart_decode",
+            &format!("invalid texel ({}, {}): outside the diamond", t[0], t[1]),
+            "a legal hemisphere vector: y ≥ 1, |x| + y + |z| = 255 (seed 000: guard against illegal texels)",
+            vec![t.to_vec()],
+            legal,
+        ));
     }
-    v.push(case("cart_decode", "texel 255 on x: (255, 127)", "no INT9 overflow: 255 reads as 254 (+127/127), so x = +254, y = 1",
-        vec![vec![255, 127]], |o| {
+    v.push(case(
+        "cart_decode",
+        "texel 255 on x: (255, 127)",
+        "no INT9 overflow: 255 reads as 254 (+127/127), so x = +254, y = 1",
+        vec![vec![255, 127]],
+        |o| {
             let b = &o[0];
             (format!("({}, {}, {})", b[0], b[1], b[2]), b[0] == 254 && b[1] == 1 && b[2] == 0)
-        }));
+        },
+    ));
     v.push(case("cart_decode", "texel (127, 127)", "straight up: (0, 255, 0)", vec![vec![127, 127]], |o| {
         let b = &o[0];
         (format!("({}, {}, {})", b[0], b[1], b[2]), b[..] == [0, 255, 0])
     }));
     // the normaliser
-    v.push(case("normalise", "zero-length vector (0, 0, 0)", "defined: (0, 0, 0), so N·L = 0 (no light direction, no light)",
-        vec![vec![0, 0, 0]], |o| (format!("{:?}", o[0]), o[0] == [0, 0, 0])));
-    v.push(case("normalise", "the most negative S10: (−512, −512, −512)", "each −1024/√3 = −591.2, within 1",
-        vec![vec![-512, -512, -512]], |o| (format!("{:?}", o[0]), o[0].iter().all(|&c| (c as f64 + 1024.0 / 3f64.sqrt()).abs() <= 1.0))));
-    v.push(case("normalise", "a vector shortened by interpolation: (1, 1, 0)", "unit length again: (724, 724, 0) within 1 (1024/√2 = 724.1)",
-        vec![vec![1, 1, 0]], |o| (format!("{:?}", o[0]), (o[0][0] - 724).abs() <= 1 && (o[0][1] - 724).abs() <= 1 && o[0][2] == 0)));
+    v.push(case(
+        "normalise",
+        "zero-length vector (0, 0, 0)",
+        "defined: (0, 0, 0), so N·L = 0 (no light direction, no light)",
+        vec![vec![0, 0, 0]],
+        |o| (format!("{:?}", o[0]), o[0] == [0, 0, 0]),
+    ));
+    v.push(case(
+        "normalise",
+        "the most negative S10: (−512, −512, −512)",
+        "each −1024/√3 = −591.2, within 1",
+        vec![vec![-512, -512, -512]],
+        |o| (format!("{:?}", o[0]), o[0].iter().all(|&c| (c as f64 + 1024.0 / 3f64.sqrt()).abs() <= 1.0)),
+    ));
+    v.push(case(
+        "normalise",
+        "a vector shortened by interpolation: (1, 1, 0)",
+        "unit length again: (724, 724, 0) within 1 (1024/√2 = 724.1)",
+        vec![vec![1, 1, 0]],
+        |o| (format!("{:?}", o[0]), (o[0][0] - 724).abs() <= 1 && (o[0][1] - 724).abs() <= 1 && o[0][2] == 0),
+    ));
     // the light iterator: vertex lights 180° and 120° apart, interpolated through their midpoint
-    v.push(case("light_iter", "vertex lights 180° apart, at the midpoint", "the seed's warning: the interpolated vector shrinks to zero length (|L| ≤ 1 LSB)",
-        vec![vec![127, 0, 0, -127, 0, 0, 127, 0, 0, 128, 0]], |o| (format!("{:?}", o[0]), len3(&o[0]) <= 1.0)));
+    v.push(case(
+        "light_iter",
+        "vertex lights 180° apart, at the midpoint",
+        "the seed's warning: the interpolated vector shrinks to zero length (|L| ≤ 1 LSB)",
+        vec![vec![127, 0, 0, -127, 0, 0, 127, 0, 0, 128, 0]],
+        |o| (format!("{:?}", o[0]), len3(&o[0]) <= 1.0),
+    ));
     let a = vectors::light_iter::quantise_vertex([0.866_025_403_784_438_6, 0.5, 0.0]);
     let b = vectors::light_iter::quantise_vertex([-0.866_025_403_784_438_6, 0.5, 0.0]);
-    v.push(case("light_iter", "vertex lights 120° apart, at the midpoint", "shortened to cos 60° = ½ of the vertices' length (127·4 in Sq7.2), pointing between them: (0, ≈254, 0)",
-        vec![[a.to_vec(), b.to_vec(), a.to_vec(), vec![128, 0]].concat()], |o| {
+    v.push(case(
+        "light_iter",
+        "vertex lights 120° apart, at the midpoint",
+        "shortened to cos 60° = ½ of the vertices' length (127·4 in Sq7.2), pointing between them: (0, ≈254, 0)",
+        vec![[a.to_vec(), b.to_vec(), a.to_vec(), vec![128, 0]].concat()],
+        |o| {
             let l = len3(&o[0]);
             (format!("{:?}, |L| = {l:.1}", o[0]), o[0][0].abs() <= 2 && (l / 508.0 - 0.5).abs() < 0.02)
-        }));
+        },
+    ));
     // N·L at and below the horizon
     let up = [0, 1024, 0];
     for (what, l, ask, want) in [
         ("light below the horizon", [0, -1024, 0], "clamped: N·L = 0, the back is dark", 0),
         ("light on the horizon", [1024, 0, 0], "N·L = 0", 0),
         ("light straight above", [0, 1024, 0], "N·L = 1023 (1.0 in U10)", 1023),
-        ("the most negative Sq1.10 on both", [-2048, -2048, -2048], "N·L of two equal vectors is positive, saturated: 1023", 1023),
+        (
+            "the most negative Sq1.10 on both",
+            [-2048, -2048, -2048],
+            "N·L of two equal vectors is positive, saturated: 1023",
+            1023,
+        ),
     ] {
         let n = if what.starts_with("the most") { [-2048, -2048, -2048] } else { up };
-        v.push(case("dot3", what, ask, vec![[n.to_vec(), l.to_vec()].concat()], move |o| (format!("{}", o[0][0]), o[0][0] == want)));
+        v.push(case("dot3", what, ask, vec![[n.to_vec(), l.to_vec()].concat()], move |o| {
+            (format!("{}", o[0][0]), o[0][0] == want)
+        }));
     }
     // one light per surface, the smallest pipeline: the light made once, at its ends
     let surface = |t: [i64; 2], l: [i64; 3]| [t.to_vec(), l.to_vec(), vec![1, 200, 150, 100, 10, 20, 30]].concat();
     for (what, t, l, ask, pass) in [
-        ("flat texel (127, 127), the surface light straight above", [127, 127], [0, 1024, 0], "full: P ≥ 1020 of 1023 (the decode's 255 and the light's 1024 normalised)", (|p: i64| p >= 1020) as fn(i64) -> bool),
+        (
+            "flat texel (127, 127), the surface light straight above",
+            [127, 127],
+            [0, 1024, 0],
+            "full: P ≥ 1020 of 1023 (the decode's 255 and the light's 1024 normalised)",
+            (|p: i64| p >= 1020) as fn(i64) -> bool,
+        ),
         ("flat texel, the surface light below the horizon", [127, 127], [0, -1024, 0], "dark: P = 0", |p| p == 0),
-        ("flat texel, the zero light (a zero-length light made once)", [127, 127], [0, 0, 0], "no light: P = 0", |p| p == 0),
-        ("texel 255 (guarded to (127, 1, 127)), lit along +x", [255, 255], [1024, 0, 0], "half lit: P = 1023·127/√(2·127² + 1) ≈ 723, within 2", |p| (p - 723).abs() <= 2),
+        ("flat texel, the zero light (a zero-length light made once)", [127, 127], [0, 0, 0], "no light: P = 0", |p| {
+            p == 0
+        }),
+        (
+            "texel 255 (guarded to (127, 1, 127)), lit along +x",
+            [255, 255],
+            [1024, 0, 0],
+            "half lit: P = 1023·127/√(2·127² + 1) ≈ 723, within 2",
+            |p| (p - 723).abs() <= 2,
+        ),
     ] {
-        v.push(case("cart_surface_nearest_matte", what, ask, vec![surface(t, l)], move |o| (format!("P = {}", o[0][0]), pass(o[0][0]))));
+        v.push(case("cart_surface_nearest_matte", what, ask, vec![surface(t, l)], move |o| {
+            (format!("P = {}", o[0][0]), pass(o[0][0]))
+        }));
     }
     // R's wrap: R − Q is taken mod 256 [16]
     let light = vectors::polar_encode::encode_light(vectors::polar_encode::Scale::Seed, [0.3, 0.8, 0.2], 1.0);
     let at = |r: i64, q: i64| vec![100, r, q, light.k1, light.k2, light.k3];
-    v.push(case("polar_shade", "R's wrap: R = 250, Q = 5 against R = 0, Q = 11 and R = 11, Q = 0",
+    v.push(case(
+        "polar_shade",
+        "R's wrap: R = 250, Q = 5 against R = 0, Q = 11 and R = 11, Q = 0",
         "R − Q mod 256 [16]: an angle 11 steps across the wrap shades as 11 steps anywhere (all three equal)",
-        vec![at(250, 5), at(0, 11), at(11, 0)], |o| (format!("shade {}, {}, {}", o[0][1], o[1][1], o[2][1]), o[0][1] == o[1][1] && o[1][1] == o[2][1])));
-    v.push(case("polar_shade", "R opposite Q: R − Q = 128", "cos(180°) < 0: the subtracting path [24], shade below the same S at R = Q",
-        vec![at(133, 5), at(5, 5)], |o| (format!("shade {} against {}", o[0][1], o[1][1]), o[0][1] < o[1][1])));
+        vec![at(250, 5), at(0, 11), at(11, 0)],
+        |o| (format!("shade {}, {}, {}", o[0][1], o[1][1], o[2][1]), o[0][1] == o[1][1] && o[1][1] == o[2][1]),
+    ));
+    v.push(case(
+        "polar_shade",
+        "R opposite Q: R − Q = 128",
+        "cos(180°) < 0: the subtracting path [24], shade below the same S at R = Q",
+        vec![at(133, 5), at(5, 5)],
+        |o| (format!("shade {} against {}", o[0][1], o[1][1]), o[0][1] < o[1][1]),
+    ));
     // seed 001: the steepest height steps
     let step = |w: [i64; 9], ub: i64, vb: i64, s: i64| [w.to_vec(), vec![ub, vb, s]].concat();
-    v.push(case("height_pipeline", "the steepest step: 0 → 255 in one texel along u, the largest scale",
+    v.push(case(
+        "height_pipeline",
+        "the steepest step: 0 → 255 in one texel along u, the largest scale",
         "no overflow: a unit normal (|n| = 1024 ± 2) leaning away from the rise (n_x < 0)",
-        vec![step([0, 255, 255, 0, 255, 255, 0, 255, 255], 128, 128, 255)], |o| {
+        vec![step([0, 255, 255, 0, 255, 255, 0, 255, 255], 128, 128, 255)],
+        |o| {
             let l = len3(&o[0]);
             (format!("{:?}, |n| = {l:.1}", o[0]), (l - 1024.0).abs() <= 2.0 && o[0][0] < 0)
-        }));
-    v.push(case("height_pipeline", "the steepest step along v, falling", "a unit normal leaning towards +v (n_z > 0), |n| = 1024 ± 2",
-        vec![step([255, 255, 255, 0, 0, 0, 0, 0, 0], 128, 128, 255)], |o| {
+        },
+    ));
+    v.push(case(
+        "height_pipeline",
+        "the steepest step along v, falling",
+        "a unit normal leaning towards +v (n_z > 0), |n| = 1024 ± 2",
+        vec![step([255, 255, 255, 0, 0, 0, 0, 0, 0], 128, 128, 255)],
+        |o| {
             let l = len3(&o[0]);
             (format!("{:?}, |n| = {l:.1}", o[0]), (l - 1024.0).abs() <= 2.0 && o[0][2] > 0)
-        }));
-    v.push(case("height_pipeline", "a flat map at the top code (255 everywhere)", "straight up: (0, 1024, 0)",
-        vec![step([255; 9], 255, 255, 255)], |o| (format!("{:?}", o[0]), o[0] == [0, 1024, 0])));
+        },
+    ));
+    v.push(case(
+        "height_pipeline",
+        "a flat map at the top code (255 everywhere)",
+        "straight up: (0, 1024, 0)",
+        vec![step([255; 9], 255, 255, 255)],
+        |o| (format!("{:?}", o[0]), o[0] == [0, 1024, 0]),
+    ));
     v
 }
 
@@ -127,11 +214,16 @@ pub fn most_negative(units: &[&'static UnitModel]) -> Vec<Case> {
         .map(|m| {
             let input: Vec<i64> = m.inputs.iter().map(|p| if p.signed { p.range().0 } else { 0 }).collect();
             let ranges: Vec<(i64, i64)> = m.outputs.iter().map(|p| p.range()).collect();
-            case(m.name, "every signed input at its most negative", "no wrap: the rtl equals the model (64-bit, no wrap) and every output is in its port's range",
-                vec![input], move |o| {
+            case(
+                m.name,
+                "every signed input at its most negative",
+                "no wrap: the rtl equals the model (64-bit, no wrap) and every output is in its port's range",
+                vec![input],
+                move |o| {
                     let ok = o[0].iter().zip(&ranges).all(|(&x, &(lo, hi))| (lo..=hi).contains(&x));
                     (format!("{:?}", o[0]), ok)
-                })
+                },
+            )
         })
         .collect()
 }
@@ -167,7 +259,12 @@ pub fn software_rows() -> Vec<Row> {
         unit: "quantize",
         case: "s_N = 1 on the demo's 32 × 32 map".into(),
         ask: "one entry, every texel's index 0, the entry the direction of the map's mean normal (within 0.5°)",
-        seen: format!("{} entry, indices {:?}, {:.3}° from the mean", q.palette.len(), q.index.iter().max(), cos.clamp(-1.0, 1.0).acos().to_degrees()),
+        seen: format!(
+            "{} entry, indices {:?}, {:.3}° from the mean",
+            q.palette.len(),
+            q.index.iter().max(),
+            cos.clamp(-1.0, 1.0).acos().to_degrees()
+        ),
         pass: q.palette.len() == 1 && q.index.iter().all(|&i| i == 0) && cos.clamp(-1.0, 1.0).acos().to_degrees() < 0.5,
     });
     rows
@@ -204,11 +301,24 @@ pub fn run(rtl: &dyn Fn(&str, &[Vec<i64>]) -> Result<Vec<Vec<i64>>, String>) -> 
     // a cell's own `|` (|x|, |L|) escaped, so that the Markdown table keeps its columns
     let cell = |t: &str| t.replace('|', "\\|");
     for r in &rows {
-        println!("| {} | {} | {} | {} | {} |", r.unit, cell(&r.case), cell(r.ask), cell(&r.seen), if r.pass { "pass" } else { "FAIL" });
+        println!(
+            "| {} | {} | {} | {} | {} |",
+            r.unit,
+            cell(&r.case),
+            cell(r.ask),
+            cell(&r.seen),
+            if r.pass { "pass" } else { "FAIL" }
+        );
     }
     let failed: Vec<String> = rows.iter().filter(|r| !r.pass).map(|r| format!("{}: {}", r.unit, r.case)).collect();
     let units: std::collections::BTreeSet<&str> = rows.iter().map(|r| r.unit).collect();
-    println!("\n{} hard cases over {} units: {} pass, {} fail", rows.len(), units.len(), rows.len() - failed.len(), failed.len());
+    println!(
+        "\n{} hard cases over {} units: {} pass, {} fail",
+        rows.len(),
+        units.len(),
+        rows.len() - failed.len(),
+        failed.len()
+    );
     if !failed.is_empty() {
         return Err(format!("{} hard cases fail: {}", failed.len(), failed.join("; ")));
     }

@@ -59,7 +59,8 @@ const MODE_VIEWS: &[(&str, &[(&str, &[(&str, u64)], &[&str])])] = &[(
 )];
 
 /// The mode views of a unit, if it has any: yosys figures of each, printed under the unit's report.
-pub type TiedSynth<'a> = &'a dyn Fn(&str, &[(&str, u64)], &[&str]) -> Result<(synth::fpga::Cells, synth::fpga::Blocks), String>;
+pub type TiedSynth<'a> =
+    &'a dyn Fn(&str, &[(&str, u64)], &[&str]) -> Result<(synth::fpga::Cells, synth::fpga::Blocks), String>;
 
 pub fn mode_views(unit: &str, family: synth::fpga::Family, synth_tied: TiedSynth) -> Result<(), String> {
     let Some((_, views)) = MODE_VIEWS.iter().find(|(u, _)| *u == unit) else { return Ok(()) };
@@ -71,9 +72,19 @@ pub fn mode_views(unit: &str, family: synth::fpga::Family, synth_tied: TiedSynth
         println!("    {tag:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}", c.lut4, c.ff, c.dsp, c.bram);
         crate::report::blocks_line(&b, family, 13);
         if !ties.is_empty() {
-            sum = synth::fpga::Cells { lut4: sum.lut4 + c.lut4, ff: sum.ff + c.ff, dsp: sum.dsp + c.dsp, bram: sum.bram + c.bram, carry: sum.carry + c.carry, soft: sum.soft + c.soft };
+            sum = synth::fpga::Cells {
+                lut4: sum.lut4 + c.lut4,
+                ff: sum.ff + c.ff,
+                dsp: sum.dsp + c.dsp,
+                bram: sum.bram + c.bram,
+                carry: sum.carry + c.carry,
+                soft: sum.soft + c.soft,
+            };
         }
     }
-    println!("    {:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}   (one block per mode)", "sum", sum.lut4, sum.ff, sum.dsp, sum.bram);
+    println!(
+        "    {:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}   (one block per mode)",
+        "sum", sum.lut4, sum.ff, sum.dsp, sum.bram
+    );
     Ok(())
 }

@@ -20,7 +20,11 @@ const MAP: usize = 512;
 /// The map's normals in the project frame (x along u, y up, z along v).
 fn normal_map() -> Vec<[f64; 3]> {
     let relief = MAP as f64 / 16.0;
-    let h: Vec<f64> = (0..MAP * MAP).map(|k| sim::scene::height(((k % MAP) as f64 + 0.5) / MAP as f64, ((k / MAP) as f64 + 0.5) / MAP as f64) * relief).collect();
+    let h: Vec<f64> = (0..MAP * MAP)
+        .map(|k| {
+            sim::scene::height(((k % MAP) as f64 + 0.5) / MAP as f64, ((k / MAP) as f64 + 0.5) / MAP as f64) * relief
+        })
+        .collect();
     plane_fit::normals(&h, MAP, MAP, 8)
 }
 
@@ -95,7 +99,9 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
         sweep.push((s_n, q, secs, angle));
     }
 
-    println!("Table 1 of Tarini et al. (2000) on this machine: a 512 x 512 normal map (the demo's heights, plane fit q = 8)");
+    println!(
+        "Table 1 of Tarini et al. (2000) on this machine: a 512 x 512 normal map (the demo's heights, plane fit q = 8)"
+    );
     println!("per-frame table for s_N normals; paper: Pentium 300 MHz (its 16,384 row says 16348); model: one core here, the");
     println!("bit-exact table_builder with the palette's normals normalised once per map (the palette changes per map, not per");
     println!("frame: the same normaliser output the builder computes), chrome and environment in f64 (no rtl);");
@@ -103,7 +109,11 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
         Some(f) => format!("{f:.1} MHz (its {place} placement)"),
         None => "its fmax (not measured: --no-synth, or the tools missing)".into(),
     };
-    println!("rtl µs: table_builder, one normal a clock (s_N + {} clocks) at {}", vectors_latency(), at(fmax.builder_mhz, "ECP5-25F"));
+    println!(
+        "rtl µs: table_builder, one normal a clock (s_N + {} clocks) at {}",
+        vectors_latency(),
+        at(fmax.builder_mhz, "ECP5-25F")
+    );
     println!(
         "UP5K µs: palette_pipeline_shared's builder, one normal every two clocks (2·s_N + {} clocks) at {}; s_N ≤ {SHARED_MAX}",
         rtl::table_builder_shared::LATENCY,
@@ -111,20 +121,29 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
     );
     println!(
         "{:<20} {:>6} {:>9} {:>11} {:>10} {:>9} {:>9} {:>16} {:>18}",
-        "lighting", "s_N", "paper ms", "model ms", "speed-up", "rtl µs", "UP5K µs", "angle mean/max °", "image LSB mean/max"
+        "lighting",
+        "s_N",
+        "paper ms",
+        "model ms",
+        "speed-up",
+        "rtl µs",
+        "UP5K µs",
+        "angle mean/max °",
+        "image LSB mean/max"
     );
     for (k, &s_n) in SIZES.iter().enumerate() {
         let (_, q, _, angle) = sweep.iter().find(|s| s.0 == s_n).expect("the sweep holds Table 1's sizes");
         let t = Instant::now();
         // the normaliser's outputs as a palette keeps them (Sq1.10 fits 16 bits), once per map
-        let normed: Vec<[i16; 3]> = q.palette.iter().map(|&n| vectors::normalise::exact(s10(n)).map(|c| c as i16)).collect();
+        let normed: Vec<[i16; 3]> =
+            q.palette.iter().map(|&n| vectors::normalise::exact(s10(n)).map(|c| c as i16)).collect();
         let per_map = t.elapsed().as_secs_f64();
         let wide = |nn: [i16; 3]| nn.map(i64::from);
         for (m, name) in models.iter().enumerate() {
             // the table is rewritten in place every frame as the RAM holds it, a 32-bit RGBA word an entry
             let mut buf = vec![[0u8; 4]; q.palette.len()];
             let word = |e: [i64; 4]| e.map(|c| c as u8); // each U8 already
-            // each model's loop on its own, compiled for its closure (no match and no indirect call per entry)
+                                                         // each model's loop on its own, compiled for its closure (no match and no indirect call per entry)
             let secs = match m {
                 0 => fill(&mut buf, |k| [0, 0, 0, (vectors::dot3::exact(wide(normed[k]), lq) >> 2) as u8]),
                 1 => fill(&mut buf, |k| word(table_builder::exact_normalised(wide(normed[k]), lq, hq, conc, spec))),
@@ -152,18 +171,33 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
             let speedup = if paper > 0.0 { format!("{:.0}x", paper / (secs * 1e3)) } else { "(0.0)".into() };
             println!(
                 "{:<20} {:>6} {:>9.1} {:>11.4} {:>10} {:>9} {:>9} {:>16} {:>18}",
-                name, s_n, paper, secs * 1e3, speedup, rtl, up5k,
-                format!("{:.3}/{:.3}", angle.mean(), angle.max.max(0.0)), format!("{:.3}/{:.0}", img.mean(), img.max.max(0.0))
+                name,
+                s_n,
+                paper,
+                secs * 1e3,
+                speedup,
+                rtl,
+                up5k,
+                format!("{:.3}/{:.3}", angle.mean(), angle.max.max(0.0)),
+                format!("{:.3}/{:.0}", img.mean(), img.max.max(0.0))
             );
         }
         println!("{:<20} {:>6} per map: the palette normalised in {:.3} ms", "", s_n, per_map * 1e3);
     }
     println!("(image: every 7th texel, the largest channel difference; Lambert compares α alone)");
 
-    println!("\nthe quantizer on the same map ({} distinct normals): median cut, then k-means on the sphere", sweep[0].1.distinct);
+    println!(
+        "\nthe quantizer on the same map ({} distinct normals): median cut, then k-means on the sphere",
+        sweep[0].1.distinct
+    );
     println!("{:>6} {:>10} {:>9} {:>18}", "s_N", "ms", "bits", "angle mean/max °");
     for (s_n, q, secs, angle) in &sweep {
-        println!("{s_n:>6} {:>10.0} {:>9} {:>18}", secs * 1e3, q.index_bits(), format!("{:.3}/{:.3}", angle.mean(), angle.max.max(0.0)));
+        println!(
+            "{s_n:>6} {:>10.0} {:>9} {:>18}",
+            secs * 1e3,
+            q.index_bits(),
+            format!("{:.3}/{:.3}", angle.mean(), angle.max.max(0.0))
+        );
     }
 
     // Figure 3: the map shaded through its palette at 16 … 2048 normals, and unquantized; equation (1) blends
@@ -172,7 +206,8 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
         [c[0], c[1], c[2]].map(|x| (x * 255.0).round().clamp(0.0, 255.0) as u8)
     };
     let picture = |name: String, rgb: &dyn Fn(usize) -> [u8; 3]| -> Result<String, String> {
-        let img = image::RgbImage::from_fn(MAP as u32, MAP as u32, |x, y| image::Rgb(rgb(y as usize * MAP + x as usize)));
+        let img =
+            image::RgbImage::from_fn(MAP as u32, MAP as u32, |x, y| image::Rgb(rgb(y as usize * MAP + x as usize)));
         sim::render::save_png(&out.join(&name), &img).map(|_| name)
     };
     let mut written = vec![picture("figure3_unquantized.png".into(), &|k| shade(own(1, normals[k])))?];

@@ -19,7 +19,9 @@ pub struct Args<'a> {
 }
 
 fn index_png(path: &Path, index: &[u32], w: usize, h: usize) -> Result<(), String> {
-    let img = image::ImageBuffer::<image::Luma<u16>, Vec<u16>>::from_fn(w as u32, h as u32, |x, y| image::Luma([index[y as usize * w + x as usize] as u16]));
+    let img = image::ImageBuffer::<image::Luma<u16>, Vec<u16>>::from_fn(w as u32, h as u32, |x, y| {
+        image::Luma([index[y as usize * w + x as usize] as u16])
+    });
     sim::render::save_png(path, &img)
 }
 
@@ -58,7 +60,9 @@ pub fn run(a: &Args) -> Result<(), String> {
     // everything is computed: now write
     let t = Instant::now();
     std::fs::create_dir_all(a.out).map_err(|e| format!("cannot create {}: {e}", a.out.display()))?;
-    let mut csv = String::from("# unit normals, OpenGL tangent frame (x right, y up the image, z out of the surface)\nindex,x,y,z\n");
+    let mut csv = String::from(
+        "# unit normals, OpenGL tangent frame (x right, y up the image, z out of the surface)\nindex,x,y,z\n",
+    );
     for (k, n) in q.palette.iter().enumerate() {
         csv.push_str(&format!("{k},{:.9},{:.9},{:.9}\n", n[0], n[1], n[2]));
     }
@@ -88,13 +92,30 @@ pub fn run(a: &Args) -> Result<(), String> {
 
     println!("{name}: {w} × {h}, {what}");
     println!("distinct normals: {}", q.distinct);
-    println!("palette: {} normals of {} asked, {}-bit indices{}", q.palette.len(), a.size, q.index_bits(), if a.dither { ", dithered" } else { "" });
-    println!("angle to the input normals: mean {:.4}°, max {:.4}° ({})", err.mean(), err.max.max(0.0), if err.max > 0.0 { err.argmax.as_str() } else { "none" });
+    println!(
+        "palette: {} normals of {} asked, {}-bit indices{}",
+        q.palette.len(),
+        a.size,
+        q.index_bits(),
+        if a.dither { ", dithered" } else { "" }
+    );
+    println!(
+        "angle to the input normals: mean {:.4}°, max {:.4}° ({})",
+        err.mean(),
+        err.max.max(0.0),
+        if err.max > 0.0 { err.argmax.as_str() } else { "none" }
+    );
     println!("mip chain: {} levels below the map, down to 1 × 1", chain.len() - 1);
     let ms = |s: f64| format!("{:.1} ms", s * 1e3);
     println!(
         "time: read {}, normals {}, palette {}, {} {}, mips {}, write {}",
-        ms(load_s), ms(normals_s), ms(quant_s), if a.dither { "dither" } else { "index" }, ms(dither_s), ms(mip_s), ms(write_s)
+        ms(load_s),
+        ms(normals_s),
+        ms(quant_s),
+        if a.dither { "dither" } else { "index" },
+        ms(dither_s),
+        ms(mip_s),
+        ms(write_s)
     );
     println!("wrote {}: {}", a.out.display(), names.join(", "));
     Ok(())

@@ -18,7 +18,9 @@ pub fn parse_window(s: &str) -> Result<Window, String> {
         .split(',')
         .map(|p| p.trim().parse::<usize>().map_err(|_| format!("--window `{s}`: four whole numbers x,y,w,h")))
         .collect::<Result<_, _>>()?;
-    let [x, y, w, h] = v[..] else { return Err(format!("--window `{s}`: four whole numbers x,y,w,h, not {}", v.len())) };
+    let [x, y, w, h] = v[..] else {
+        return Err(format!("--window `{s}`: four whole numbers x,y,w,h, not {}", v.len()));
+    };
     if w == 0 || h == 0 {
         return Err(format!("--window `{s}`: an empty window ({w} × {h})"));
     }
@@ -118,7 +120,12 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     println!("{:<44} {:>14.0} {:>12}", "f64 ideal (set-up included)", n as f64 / ideal_s.max(1e-9), "-");
     println!("{:<44} {:>14.0} {:>12}", "bit-exact model", model.pixels_per_second(), "-");
     match &vl {
-        Some(v) => println!("{:<44} {:>14.0} {:>12}", format!("Verilator, whole frame, {} threads", v.threads), v.image.pixels_per_second(), mism_vl.unwrap_or(0)),
+        Some(v) => println!(
+            "{:<44} {:>14.0} {:>12}",
+            format!("Verilator, whole frame, {} threads", v.threads),
+            v.image.pixels_per_second(),
+            mism_vl.unwrap_or(0)
+        ),
         None if !verilator => println!("Verilator: skipped (--no-verilator)"),
         None => println!("Verilator: skipped, {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", ")),
     }
@@ -129,7 +136,9 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         mism_hdl
     );
     println!();
-    let row = |name: &str, s: &vectors::stats::ErrorStats| println!("{name:<44} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax);
+    let row = |name: &str, s: &vectors::stats::ErrorStats| {
+        println!("{name:<44} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax)
+    };
     println!("{:<44} {:>9} {:>9}   max at", "the model against the scene's ideal", "mean", "max");
     row(&format!("shade, 8-bit LSB ({})", pipe.shade_name()), &e.shade);
     row("blended colour, 8-bit LSB", &e.colour);

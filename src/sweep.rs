@@ -60,7 +60,14 @@ impl Choice {
         let mut v = vec![Choice::Cartesian(Decode::Seed, true), Choice::Cartesian(Decode::HemiOct, true)];
         v.extend([Choice::Cartesian(Decode::Seed, false), Choice::Cartesian(Decode::HemiOct, false)]);
         v.extend(Variant::ALL.map(Choice::Surface));
-        v.extend([Choice::Polar(Scale::Seed), Choice::Polar(Scale::Dc255), Choice::Height(8), Choice::Height(4), Choice::Palette(256), Choice::Palette(4096)]);
+        v.extend([
+            Choice::Polar(Scale::Seed),
+            Choice::Polar(Scale::Dc255),
+            Choice::Height(8),
+            Choice::Height(4),
+            Choice::Palette(256),
+            Choice::Palette(4096),
+        ]);
         v
     }
 
@@ -138,16 +145,34 @@ pub fn points(scenes: &[String]) -> Result<Vec<Point>, String> {
             let pipe = c.build(&s);
             // the 4-bit map runs on the same block: its own id
             let bits = if c == Choice::Height(4) { ".h4" } else { "" };
-            out.push(Point { id: format!("{key}.{}{bits}", pipe.model().name), scene: name.clone(), choice: c, knobs: UNIT_KNOBS, lut: OWN_LUT });
+            out.push(Point {
+                id: format!("{key}.{}{bits}", pipe.model().name),
+                scene: name.clone(),
+                choice: c,
+                knobs: UNIT_KNOBS,
+                lut: OWN_LUT,
+            });
         }
         // the width knobs, on the smallest bilinear pipeline the material allows
         let v = Variant { decode: Decode::Seed, nearest: false, gloss: s.conc != 0 };
         for k in knob_settings() {
-            out.push(Point { id: format!("{key}.{}.{}", v.model().name, knob_id(k)), scene: name.clone(), choice: Choice::Surface(v), knobs: k, lut: OWN_LUT });
+            out.push(Point {
+                id: format!("{key}.{}.{}", v.model().name, knob_id(k)),
+                scene: name.clone(),
+                choice: Choice::Surface(v),
+                knobs: k,
+                lut: OWN_LUT,
+            });
         }
         // the sin/cos table's size, on the polar pipeline
         for tb in LUT_SETTINGS {
-            out.push(Point { id: format!("{key}.polar_pipeline.lut{tb}"), scene: name.clone(), choice: Choice::Polar(Scale::Seed), knobs: UNIT_KNOBS, lut: tb });
+            out.push(Point {
+                id: format!("{key}.polar_pipeline.lut{tb}"),
+                scene: name.clone(),
+                choice: Choice::Polar(Scale::Seed),
+                knobs: UNIT_KNOBS,
+                lut: tb,
+            });
         }
     }
     Ok(out)
@@ -196,14 +221,29 @@ impl Result_ {
         let o = |x: Option<String>| x.unwrap_or_default();
         let mut s = String::new();
         for (k, v) in [
-            ("id", self.id.clone()), ("scene", self.scene.clone()), ("pipeline", self.pipeline.clone()), ("units", self.units.clone()),
-            ("knob", self.knob.clone()), ("pixels", self.pixels.to_string()),
-            ("colour", p(Some(self.colour))), ("shade", p(Some(self.shade))), ("angle", p(self.angle)),
-            ("encoding", p(self.encoding)), ("method", p(self.method)), ("datapath", p(self.datapath)),
-            ("model_mpx", self.model_mpx.to_string()), ("part", self.part.clone()), ("lut4", self.lut4.to_string()),
-            ("ff", self.ff.to_string()), ("dsp", self.dsp.to_string()), ("bram", self.bram.to_string()), ("soft", self.soft.to_string()),
-            ("estimated", self.estimated.to_string()), ("lc", o(self.lc.map(|x| x.to_string()))),
-            ("fmax", o(self.fmax.map(|x| x.to_string()))), ("latency", self.latency.to_string()),
+            ("id", self.id.clone()),
+            ("scene", self.scene.clone()),
+            ("pipeline", self.pipeline.clone()),
+            ("units", self.units.clone()),
+            ("knob", self.knob.clone()),
+            ("pixels", self.pixels.to_string()),
+            ("colour", p(Some(self.colour))),
+            ("shade", p(Some(self.shade))),
+            ("angle", p(self.angle)),
+            ("encoding", p(self.encoding)),
+            ("method", p(self.method)),
+            ("datapath", p(self.datapath)),
+            ("model_mpx", self.model_mpx.to_string()),
+            ("part", self.part.clone()),
+            ("lut4", self.lut4.to_string()),
+            ("ff", self.ff.to_string()),
+            ("dsp", self.dsp.to_string()),
+            ("bram", self.bram.to_string()),
+            ("soft", self.soft.to_string()),
+            ("estimated", self.estimated.to_string()),
+            ("lc", o(self.lc.map(|x| x.to_string()))),
+            ("fmax", o(self.fmax.map(|x| x.to_string()))),
+            ("latency", self.latency.to_string()),
         ] {
             let _ = writeln!(s, "{k}={v}");
         }
@@ -257,7 +297,14 @@ fn stats(s: &ErrorStats) -> (f64, f64) {
 /// filtered as the ideal filters, shaded by the ideal's own curve `curve(n, l)`, against the ideal), method (the
 /// pipeline's method in reals on those codes, `float(input)`, against the codes' meaning) and datapath (the model
 /// against that float run).
-fn split(scene: &Scene, meaning: &[[f64; 3]], prep: &Prepared, exact_shade: &[f64], curve: &dyn Fn([f64; 3], [f64; 3]) -> f64, float: &dyn Fn(&[i64]) -> f64) -> [(f64, f64); 3] {
+fn split(
+    scene: &Scene,
+    meaning: &[[f64; 3]],
+    prep: &Prepared,
+    exact_shade: &[f64],
+    curve: &dyn Fn([f64; 3], [f64; 3]) -> f64,
+    float: &dyn Fn(&[i64]) -> f64,
+) -> [(f64, f64); 3] {
     let frame = sim::raster::frame(scene, meaning);
     let (mut e, mut m, mut d) = (ErrorStats::default(), ErrorStats::default(), ErrorStats::default());
     for (k, px) in frame.pixels.iter().enumerate() {
@@ -301,18 +348,37 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
             };
             Some(split(scene, &cartesian_meaning(scene, d), prep, exact_shade, &gloss, &float))
         }
-        Choice::Surface(v) => Some(split(scene, &cartesian_meaning(scene, v.decode), prep, exact_shade, &gloss, &|i| p10(vectors::cart_surface::float_p(v, i)))),
+        Choice::Surface(v) => {
+            Some(split(scene, &cartesian_meaning(scene, v.decode), prep, exact_shade, &gloss, &|i| {
+                p10(vectors::cart_surface::float_p(v, i))
+            }))
+        }
         Choice::Polar(sc) => {
             use vectors::polar_encode;
             use vectors::polar_pipeline::input;
-            let meaning: Vec<[f64; 3]> = scene.normals().iter().map(|&n| {
-                let (s, r) = polar_encode::encode_normal(sc, n);
-                polar_encode::decode_normal(sc, s, r)
-            }).collect();
+            let meaning: Vec<[f64; 3]> = scene
+                .normals()
+                .iter()
+                .map(|&n| {
+                    let (s, r) = polar_encode::encode_normal(sc, n);
+                    polar_encode::decode_normal(sc, s, r)
+                })
+                .collect();
             let (h, p) = (crate::demo::POLAR_H, crate::demo::POLAR_PW as f64 / 4.0);
-            let curve = |n: [f64; 3], l: [f64; 3]| 255.0 * ((1.0 - h) + h * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2])).clamp(0.0, 1.0).powf(p);
+            let curve = |n: [f64; 3], l: [f64; 3]| {
+                255.0 * ((1.0 - h) + h * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2])).clamp(0.0, 1.0).powf(p)
+            };
             let float = |i: &[i64]| {
-                let own = vectors::polar_shade::ideal(sc, i[input::s], i[input::r], i[input::q], i[input::k1], i[input::k2], i[input::k3]).clamp(0.0, 255.0);
+                let own = vectors::polar_shade::ideal(
+                    sc,
+                    i[input::s],
+                    i[input::r],
+                    i[input::q],
+                    i[input::k1],
+                    i[input::k2],
+                    i[input::k3],
+                )
+                .clamp(0.0, 255.0);
                 vectors::power::ideal_real(own, i[input::pw])
             };
             Some(split(scene, &meaning, prep, exact_shade, &curve, &float))
@@ -322,10 +388,16 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
             // a texel's index means its entry: the S10 code the table builder takes, as a unit vector
             let normals = scene.normals();
             let q = vectors::palette::quantize::quantize(&normals, s_n);
-            let entry: Vec<[f64; 3]> = q.palette.iter().map(|n| vectors::stats::unit(n.map(|c| ((c * 511.0).round()).clamp(-512.0, 511.0)))).collect();
+            let entry: Vec<[f64; 3]> = q
+                .palette
+                .iter()
+                .map(|n| vectors::stats::unit(n.map(|c| ((c * 511.0).round()).clamp(-512.0, 511.0))))
+                .collect();
             let meaning: Vec<[f64; 3]> = q.index.iter().map(|&k| entry[k as usize]).collect();
             let l = vectors::table_builder::sq1_10(scene.light_dir(0.5, 0.5)).map(|c| c as f64 / 1024.0);
-            let float = |i: &[i64]| sim::pipeline::gloss_shade(scene.conc, entry[i[vectors::palette_pipeline::input::idx] as usize], l);
+            let float = |i: &[i64]| {
+                sim::pipeline::gloss_shade(scene.conc, entry[i[vectors::palette_pipeline::input::idx] as usize], l)
+            };
             Some(split(scene, &meaning, prep, exact_shade, &gloss, &float))
         }
     }
@@ -355,9 +427,11 @@ fn height_parts(scene: &Scene, bits: u32, prep: &Prepared, exact_shade: &[f64]) 
         for px in 0..n {
             let k_ = py * n + px;
             let (i, ub, j, vb) = Height::sample(px, py, n, t);
-            let (xs, ys) = (vectors::height_fetch::axis(i, size_log2, false), vectors::height_fetch::axis(j, size_log2, false));
+            let (xs, ys) =
+                (vectors::height_fetch::axis(i, size_log2, false), vectors::height_fetch::axis(j, size_log2, false));
             let at = |q: usize| ys[q / 3] as usize * t + xs[q % 3] as usize;
-            let (wt, wc): ([f64; 9], [f64; 9]) = (std::array::from_fn(|q| real[at(q)]), std::array::from_fn(|q| codes[at(q)] as f64));
+            let (wt, wc): ([f64; 9], [f64; 9]) =
+                (std::array::from_fn(|q| real[at(q)]), std::array::from_fn(|q| codes[at(q)] as f64));
             // the same window the pipeline was given
             assert_eq!(wc.map(|c| c as i64).to_vec(), prep.pixels()[k_][..9].to_vec(), "pixel ({px}, {py})");
             let (s_true, s_codes) = (pipe.shade_of(normal(wt, ub, vb)), pipe.shade_of(normal(wc, ub, vb)));
@@ -377,15 +451,26 @@ fn knob_delta(k: Knobs, dir: &Path) -> Result<[i64; 5], String> {
     let diff = |a: [i64; 5], b: [i64; 5], div: i64| -> [i64; 5] { std::array::from_fn(|i| (a[i] - b[i]) / div) };
     let mut total = [0i64; 5];
     if (k.table_bits, k.newton) != (UNIT_KNOBS.table_bits, UNIT_KNOBS.newton) {
-        let f = crate::widths::normalise_block(k.table_bits, k.newton).ok_or(format!("no Normalise<{}, {}>", k.table_bits, k.newton))?;
-        let own = crate::widths::normalise_block(UNIT_KNOBS.table_bits, UNIT_KNOBS.newton).ok_or("no Normalise<10, 0>")?;
-        let d = diff(cells(f(&dir.join(format!("normalise_t{}n{}", k.table_bits, k.newton)), fam)?), cells(own(&dir.join("normalise_t10n0"), fam)?), 1);
+        let f = crate::widths::normalise_block(k.table_bits, k.newton)
+            .ok_or(format!("no Normalise<{}, {}>", k.table_bits, k.newton))?;
+        let own =
+            crate::widths::normalise_block(UNIT_KNOBS.table_bits, UNIT_KNOBS.newton).ok_or("no Normalise<10, 0>")?;
+        let d = diff(
+            cells(f(&dir.join(format!("normalise_t{}n{}", k.table_bits, k.newton)), fam)?),
+            cells(own(&dir.join("normalise_t10n0"), fam)?),
+            1,
+        );
         total = std::array::from_fn(|i| total[i] + d[i]);
     }
     if (k.blend_bits, k.drop) != (UNIT_KNOBS.blend_bits, UNIT_KNOBS.drop) {
-        let f = crate::widths::bilinear_block(k.blend_bits, k.drop).ok_or(format!("no Bilinear<{}, {}>", k.blend_bits, k.drop))?;
+        let f = crate::widths::bilinear_block(k.blend_bits, k.drop)
+            .ok_or(format!("no Bilinear<{}, {}>", k.blend_bits, k.drop))?;
         let own = crate::widths::bilinear_block(UNIT_KNOBS.blend_bits, UNIT_KNOBS.drop).ok_or("no Bilinear<8, 0>")?;
-        let d = diff(cells(f(&dir.join(format!("bilinear_f{}d{}", k.blend_bits, k.drop)), fam)?), cells(own(&dir.join("bilinear_f8d0"), fam)?), 2);
+        let d = diff(
+            cells(f(&dir.join(format!("bilinear_f{}d{}", k.blend_bits, k.drop)), fam)?),
+            cells(own(&dir.join("bilinear_f8d0"), fam)?),
+            2,
+        );
         total = std::array::from_fn(|i| total[i] + d[i]);
     }
     Ok(total)
@@ -405,7 +490,9 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         seconds: t.elapsed().as_secs_f64(),
     };
     let model = if p.lut != OWN_LUT {
-        let Choice::Polar(sc) = p.choice else { return Err(format!("{}: the table size is swept on the polar pipeline only", p.id)) };
+        let Choice::Polar(sc) = p.choice else {
+            return Err(format!("{}: the table size is swept on the polar pipeline only", p.id));
+        };
         image(&|i| {
             let tr = vectors::polar_pipeline::exact_trace_sized(sc, p.lut, i);
             vec![tr.alpha, tr.out[0], tr.out[1], tr.out[2]]
@@ -413,7 +500,9 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
     } else if p.knobs == UNIT_KNOBS {
         sim::render::model(m, &prep)
     } else {
-        let Choice::Surface(v) = p.choice else { return Err(format!("{}: width knobs are swept on cart_surface only", p.id)) };
+        let Choice::Surface(v) = p.choice else {
+            return Err(format!("{}: width knobs are swept on cart_surface only", p.id));
+        };
         image(&|i| {
             let tr = vectors::cart_surface::exact_trace_knobs(v, p.knobs, i);
             vec![tr.p, tr.out[0], tr.out[1], tr.out[2]]
@@ -443,7 +532,11 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         units: pipe.units().join(" → "),
         knob: if p.choice == Choice::Height(4) {
             "4-bit heights (UQ3.1), read doubled".into()
-        } else if p.lut != OWN_LUT { format!("sin/cos table 2^{} × 8 (S's top {0} bits)", p.lut) } else { knob_text(p.knobs) },
+        } else if p.lut != OWN_LUT {
+            format!("sin/cos table 2^{} × 8 (S's top {0} bits)", p.lut)
+        } else {
+            knob_text(p.knobs)
+        },
         pixels: n,
         colour: stats(&errs.colour),
         shade: stats(&errs.shade),
@@ -461,22 +554,38 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
     let [mut lut4, mut ff, mut dsp, mut bram, mut soft] = [c.lut4, c.ff, c.dsp, c.bram, c.soft].map(|x| x as i64);
     if p.lut != OWN_LUT {
         // the pipeline's SinCos<8, 8> against SinCos<lut, 8>
-        let f = |tb: u32| crate::report::SINCOS_BLOCKS.iter().find(|b| (b.0, b.1) == (tb, 8)).map(|b| b.2).ok_or(format!("no SinCos<{tb}, 8>"));
+        let f = |tb: u32| {
+            crate::report::SINCOS_BLOCKS
+                .iter()
+                .find(|b| (b.0, b.1) == (tb, 8))
+                .map(|b| b.2)
+                .ok_or(format!("no SinCos<{tb}, 8>"))
+        };
         let kd = dir.join("synth").join("knobs");
-        let (a, b) = (f(p.lut)?(&kd.join(format!("sincos_t{}w8", p.lut)), synth::fpga::Family::Ice40)?, f(OWN_LUT)?(&kd.join("sincos_t8w8"), synth::fpga::Family::Ice40)?);
-        (lut4, ff, dsp, bram) = (lut4 + a.lut4 as i64 - b.lut4 as i64, ff + a.ff as i64 - b.ff as i64, dsp + a.dsp as i64 - b.dsp as i64, bram + a.bram as i64 - b.bram as i64);
+        let (a, b) = (
+            f(p.lut)?(&kd.join(format!("sincos_t{}w8", p.lut)), synth::fpga::Family::Ice40)?,
+            f(OWN_LUT)?(&kd.join("sincos_t8w8"), synth::fpga::Family::Ice40)?,
+        );
+        (lut4, ff, dsp, bram) = (
+            lut4 + a.lut4 as i64 - b.lut4 as i64,
+            ff + a.ff as i64 - b.ff as i64,
+            dsp + a.dsp as i64 - b.dsp as i64,
+            bram + a.bram as i64 - b.bram as i64,
+        );
         r.estimated = true;
     } else if p.knobs != UNIT_KNOBS {
         let d = knob_delta(p.knobs, &dir.join("synth").join("knobs"))?;
         (lut4, ff, dsp, bram, soft) = (lut4 + d[0], ff + d[1], dsp + d[2], bram + d[3], soft + d[4]);
         r.estimated = true;
     }
-    (r.lut4, r.ff, r.dsp, r.bram, r.soft) = (lut4.max(0) as u64, ff.max(0) as u64, dsp.max(0) as u64, bram.max(0) as u64, soft.max(0) as u64);
+    (r.lut4, r.ff, r.dsp, r.bram, r.soft) =
+        (lut4.max(0) as u64, ff.max(0) as u64, dsp.max(0) as u64, bram.max(0) as u64, soft.max(0) as u64);
     r.part = "-".into();
     if place && !r.estimated {
         if let Some(rep) = crate::cli::place_cached(m.name, &udir)? {
             // a design whose cells fit the part but whose placement fails says so where its figures would be
-            r.part = if rep.place_error.is_some() { format!("{} (does not place)", rep.part) } else { rep.part.clone() };
+            r.part =
+                if rep.place_error.is_some() { format!("{} (does not place)", rep.part) } else { rep.part.clone() };
             r.lc = rep.lc;
             r.fmax = rep.fmax_mhz;
         }
@@ -489,7 +598,12 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
 pub fn pareto(rs: &[Result_]) -> Vec<bool> {
     rs.iter()
         .map(|a| {
-            !rs.iter().any(|b| b.scene == a.scene && b.cost() <= a.cost() && b.colour.0 <= a.colour.0 && (b.cost() < a.cost() || b.colour.0 < a.colour.0))
+            !rs.iter().any(|b| {
+                b.scene == a.scene
+                    && b.cost() <= a.cost()
+                    && b.colour.0 <= a.colour.0
+                    && (b.cost() < a.cost() || b.colour.0 < a.colour.0)
+            })
         })
         .collect()
 }
@@ -504,7 +618,9 @@ pub fn cheapest<'a>(rs: &'a [Result_], budget: f64) -> Vec<(&'a str, Option<&'a 
     }
     scenes
         .into_iter()
-        .map(|s| (s, rs.iter().filter(|r| r.scene == s && r.colour.0 <= budget).min_by_key(|r| (r.cost(), r.id.clone()))))
+        .map(|s| {
+            (s, rs.iter().filter(|r| r.scene == s && r.colour.0 <= budget).min_by_key(|r| (r.cost(), r.id.clone())))
+        })
         .collect()
 }
 
@@ -539,7 +655,17 @@ pub fn markdown(rs: &[Result_], budgets: &[f64]) -> String {
         for (scene, c) in cheapest(rs, *b) {
             match c {
                 Some(r) => {
-                    let _ = writeln!(s, "- {scene}: {} ({}{}), cost {}{}, colour {:.3} / {:.2}", r.id, r.units, if r.knob == "-" { String::new() } else { format!("; {}", r.knob) }, r.cost(), if r.estimated { " est." } else { "" }, r.colour.0, r.colour.1);
+                    let _ = writeln!(
+                        s,
+                        "- {scene}: {} ({}{}), cost {}{}, colour {:.3} / {:.2}",
+                        r.id,
+                        r.units,
+                        if r.knob == "-" { String::new() } else { format!("; {}", r.knob) },
+                        r.cost(),
+                        if r.estimated { " est." } else { "" },
+                        r.colour.0,
+                        r.colour.1
+                    );
                 }
                 None => {
                     let _ = writeln!(s, "- {scene}: no configuration meets it");
@@ -591,10 +717,16 @@ pub fn plot(rs: &[Result_], path: &Path) -> Result<(), String> {
         let mut labels: Vec<((i32, i32), String, RGBColor)> = vec![];
         for (k, sc) in scenes.iter().enumerate() {
             let col = palette[k % palette.len()];
-            let pts: Vec<(f64, f64, bool, &str)> =
-                rs.iter().zip(&on).filter(|(r, _)| r.scene == *sc).map(|(r, p)| (r.cost() as f64, r.colour.0, *p, r.id.as_str())).collect();
+            let pts: Vec<(f64, f64, bool, &str)> = rs
+                .iter()
+                .zip(&on)
+                .filter(|(r, _)| r.scene == *sc)
+                .map(|(r, p)| (r.cost() as f64, r.colour.0, *p, r.id.as_str()))
+                .collect();
             chart
-                .draw_series(pts.iter().map(|&(x, y, p, _)| Circle::new((x, y), if p { 6 } else { 4 }, if p { col.filled() } else { col.stroke_width(1) })))
+                .draw_series(pts.iter().map(|&(x, y, p, _)| {
+                    Circle::new((x, y), if p { 6 } else { 4 }, if p { col.filled() } else { col.stroke_width(1) })
+                }))
                 .map_err(|x| e(x.to_string()))?
                 .label(format!("scene {sc}"))
                 .legend(move |(x, y)| Circle::new((x + 8, y), 5, col.filled()));
@@ -620,9 +752,12 @@ pub fn plot(rs: &[Result_], path: &Path) -> Result<(), String> {
             // right of the point, or left of it where the right runs off the plot
             let x0 = if px + 8 + w <= area.0.end { px + 8 } else { px - 8 - w };
             let clear = |y0: i32| {
-                y0 >= area.1.start && y0 + h <= area.1.end && placed.iter().all(|b| x0 + w <= b.0 || b.2 <= x0 || y0 + h <= b.1 || b.3 <= y0)
+                y0 >= area.1.start
+                    && y0 + h <= area.1.end
+                    && placed.iter().all(|b| x0 + w <= b.0 || b.2 <= x0 || y0 + h <= b.1 || b.3 <= y0)
             };
-            let y0 = (0..40).flat_map(|k| [k, -k]).map(|k| py - h / 2 + k * h).find(|&y| clear(y)).unwrap_or(py - h / 2);
+            let y0 =
+                (0..40).flat_map(|k| [k, -k]).map(|k| py - h / 2 + k * h).find(|&y| clear(y)).unwrap_or(py - h / 2);
             placed.push((x0, y0, x0 + w, y0 + h));
             if (y0 + h / 2 - py).abs() > h / 2 {
                 let end = (if x0 > px { x0 - 1 } else { x0 + w + 1 }, y0 + h / 2);
@@ -630,7 +765,13 @@ pub fn plot(rs: &[Result_], path: &Path) -> Result<(), String> {
             }
             root.draw(&Text::new(label, (x0, y0), style.clone())).map_err(|x| e(x.to_string()))?;
         }
-        chart.configure_series_labels().background_style(WHITE.mix(0.8)).border_style(BLACK).label_font((font, 14)).draw().map_err(|x| e(x.to_string()))?;
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .label_font((font, 14))
+            .draw()
+            .map_err(|x| e(x.to_string()))?;
         root.present().map_err(|x| e(x.to_string()))?;
     }
     std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display()))
@@ -682,7 +823,13 @@ pub fn merge(scenes: &[String], out: &Path, budgets: &[f64], only: Option<&str>)
         }
     }
     if !missing.is_empty() {
-        return Err(format!("report --merge: {} of {} points not computed or unreadable under {}: {}", missing.len(), pts.len(), dir.display(), missing.join(", ")));
+        return Err(format!(
+            "report --merge: {} of {} points not computed or unreadable under {}: {}",
+            missing.len(),
+            pts.len(),
+            dir.display(),
+            missing.join(", ")
+        ));
     }
     finish(&rs, out, budgets)
 }
@@ -690,7 +837,10 @@ pub fn merge(scenes: &[String], out: &Path, budgets: &[f64], only: Option<&str>)
 /// `bumprtl report --point ID`: one point, saved under `out/points/ID.txt`.
 pub fn one(scenes: &[String], id: &str, out: &Path, place: bool) -> Result<(), String> {
     let pts = points(scenes)?;
-    let p = pts.iter().find(|p| p.id == id).ok_or_else(|| format!("report --point {id}: no such point (`bumprtl report --plan FILE` lists them)"))?;
+    let p = pts
+        .iter()
+        .find(|p| p.id == id)
+        .ok_or_else(|| format!("report --point {id}: no such point (`bumprtl report --plan FILE` lists them)"))?;
     let dir = out.join("points");
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let r = run_point(p, out, place)?;
@@ -702,7 +852,14 @@ pub fn one(scenes: &[String], id: &str, out: &Path, place: bool) -> Result<(), S
 /// `bumprtl report --plan FILE`: one command per point in FILE (for `parallel < FILE`, or over ssh with
 /// `parallel -S`), the merge step in FILE.merge, and a Slurm job array in FILE.slurm that runs line
 /// `$SLURM_ARRAY_TASK_ID` of FILE.
-pub fn plan(scenes: &[String], file: &Path, out: &Path, budgets: &[f64], place: bool, only: Option<&str>) -> Result<(), String> {
+pub fn plan(
+    scenes: &[String],
+    file: &Path,
+    out: &Path,
+    budgets: &[f64],
+    place: bool,
+    only: Option<&str>,
+) -> Result<(), String> {
     let pts: Vec<Point> = points(scenes)?.into_iter().filter(|p| only.is_none_or(|o| p.id.contains(o))).collect();
     let exe = std::env::current_exe().map_err(|e| format!("cannot name this program: {e}"))?;
     let q = |p: &Path| shell_quote(&p.to_string_lossy());
@@ -716,7 +873,13 @@ pub fn plan(scenes: &[String], file: &Path, out: &Path, budgets: &[f64], place: 
     };
     let mut lines = String::new();
     for p in &pts {
-        let _ = writeln!(lines, "{} report{common} --point {}{}", q(&exe), shell_quote(&p.id), if place { "" } else { " --no-place" });
+        let _ = writeln!(
+            lines,
+            "{} report{common} --point {}{}",
+            q(&exe),
+            shell_quote(&p.id),
+            if place { "" } else { " --no-place" }
+        );
     }
     let mut merge = format!("{} report{common} --merge", q(&exe));
     if let Some(o) = only {
@@ -736,7 +899,10 @@ pub fn plan(scenes: &[String], file: &Path, out: &Path, budgets: &[f64], place: 
     synth::export::write_atomic(&with("slurm"), slurm.as_bytes())?;
     println!(
         "{} points: {} (parallel < {0}), then {}; a Slurm array: sbatch {}",
-        pts.len(), file.display(), with("merge").display(), with("slurm").display()
+        pts.len(),
+        file.display(),
+        with("merge").display(),
+        with("slurm").display()
     );
     Ok(())
 }
@@ -759,19 +925,30 @@ mod tests {
 
     #[test]
     fn the_pareto_set_and_the_cheapest_within_a_budget_are_per_scene() {
-        let rs = vec![r("a", "s", 1000, 0, 1.0), r("b", "s", 500, 2, 2.0), r("c", "s", 2000, 0, 0.5), r("d", "s", 3000, 0, 0.9), r("e", "t", 9000, 0, 9.0)];
+        let rs = vec![
+            r("a", "s", 1000, 0, 1.0),
+            r("b", "s", 500, 2, 2.0),
+            r("c", "s", 2000, 0, 0.5),
+            r("d", "s", 3000, 0, 0.9),
+            r("e", "t", 9000, 0, 9.0),
+        ];
         // b costs 500 + 530 = 1030 > a's 1000 with more error: off; d is beaten by c
         assert_eq!(pareto(&rs), [true, false, true, false, true]);
         let c = cheapest(&rs, 1.0);
-        assert_eq!(c.iter().map(|(s, r)| (*s, r.map(|r| r.id.as_str()))).collect::<Vec<_>>(), [("s", Some("a")), ("t", None)]);
+        assert_eq!(
+            c.iter().map(|(s, r)| (*s, r.map(|r| r.id.as_str()))).collect::<Vec<_>>(),
+            [("s", Some("a")), ("t", None)]
+        );
         assert_eq!(cheapest(&rs, 0.6)[0].1.map(|r| r.id.as_str()), Some("c"));
     }
 
     #[test]
     fn a_saved_point_reads_back_whole() {
         let mut a = r("quad.cart_surface.t6n1f8d0", "quad", 1234, 6, 0.75);
-        (a.angle, a.encoding, a.method, a.datapath, a.fmax, a.lc, a.estimated) = (Some((0.1, 2.0)), Some((0.2, 3.0)), None, Some((0.5, 1.5)), Some(37.5), Some(3082), true);
-        (a.units, a.knob, a.pipeline, a.part, a.model_mpx) = ("x → y".into(), "normalise 2^6 table, 1 Newton".into(), "cart_surface".into(), "up5k".into(), 12.5);
+        (a.angle, a.encoding, a.method, a.datapath, a.fmax, a.lc, a.estimated) =
+            (Some((0.1, 2.0)), Some((0.2, 3.0)), None, Some((0.5, 1.5)), Some(37.5), Some(3082), true);
+        (a.units, a.knob, a.pipeline, a.part, a.model_mpx) =
+            ("x → y".into(), "normalise 2^6 table, 1 Newton".into(), "cart_surface".into(), "up5k".into(), 12.5);
         assert_eq!(Result_::from_text(&a.to_text()), Some(a));
         assert_eq!(Result_::from_text("id=x\n"), None);
     }

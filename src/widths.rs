@@ -65,7 +65,9 @@ pub fn measure<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64) -> Result<
         format!("{} hard cases and {count} random vectors (seed {seed})", inputs.len() - count)
     };
     let bar = ProgressBar::new(inputs.len() as u64);
-    bar.set_style(ProgressStyle::with_template("{msg:<24} [{bar:40}] {pos}/{len} vectors {eta}").unwrap().progress_chars("=> "));
+    bar.set_style(
+        ProgressStyle::with_template("{msg:<24} [{bar:40}] {pos}/{len} vectors {eta}").unwrap().progress_chars("=> "),
+    );
     bar.set_message(format!("rust-hdl: {}", m.name));
     let ranges = seen_ticking::<U>(m, &inputs, &|k| bar.set_position(k as u64));
     bar.finish_and_clear();
@@ -85,11 +87,19 @@ pub fn measure<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64) -> Result<
             needed: bits_needed(fmt.signed, min, max),
             proven_needed: bits_needed(fmt.signed, pr.0 as i64, pr.1 as i64),
             proven: pr,
-            wrap: sites.iter().filter(|w| w.name == s.name).map(|w| w.exact).reduce(|a, b| (a.0.min(b.0), a.1.max(b.1))),
+            wrap: sites
+                .iter()
+                .filter(|w| w.name == s.name)
+                .map(|w| w.exact)
+                .reduce(|a, b| (a.0.min(b.0), a.1.max(b.1))),
             // a signal written by a listed step and an unlisted one counts as unlisted
             listed: {
                 let at: Vec<_> = sites.iter().filter(|w| w.name == s.name).map(|w| w.listed).collect();
-                if at.iter().all(Option::is_some) { at.first().copied().flatten() } else { None }
+                if at.iter().all(Option::is_some) {
+                    at.first().copied().flatten()
+                } else {
+                    None
+                }
             },
             name: s.name.clone(),
             q: fmt.q(),
@@ -109,30 +119,57 @@ pub fn csv(rows: &[Row]) -> String {
     for r in rows {
         t.push_str(&format!(
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-            r.name, r.format.replace(',', ";"), r.q, r.bits, r.signed as u8, r.min, r.max, r.needed, r.spare(), r.unused_flag() as u8,
-            r.proven.0, r.proven.1, r.proven_needed, r.proven_spare(), r.wrap.is_some() as u8,
-            r.wrap.map(|w| w.0.to_string()).unwrap_or_default(), r.wrap.map(|w| w.1.to_string()).unwrap_or_default(),
+            r.name,
+            r.format.replace(',', ";"),
+            r.q,
+            r.bits,
+            r.signed as u8,
+            r.min,
+            r.max,
+            r.needed,
+            r.spare(),
+            r.unused_flag() as u8,
+            r.proven.0,
+            r.proven.1,
+            r.proven_needed,
+            r.proven_spare(),
+            r.wrap.is_some() as u8,
+            r.wrap.map(|w| w.0.to_string()).unwrap_or_default(),
+            r.wrap.map(|w| w.1.to_string()).unwrap_or_default(),
             r.wrap.and(r.listed).map(|l| l.kind.name()).unwrap_or_default()
         ));
     }
     t
 }
 
-pub fn run<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64, csv_out: Option<&std::path::Path>) -> Result<(), String> {
+pub fn run<U: StreamUnit>(
+    m: &UnitModel,
+    count: usize,
+    seed: u64,
+    csv_out: Option<&std::path::Path>,
+) -> Result<(), String> {
     let t = std::time::Instant::now();
     let Measured { rows, vectors: n, what, clocks, mismatches } = measure::<U>(m, count, seed)?;
     let secs = t.elapsed().as_secs_f64();
     if let Some(p) = csv_out {
         synth::export::write_atomic(p, csv(&rows).as_bytes())?;
     }
-    println!("widths of `{}`: {what}; {clocks} clocks in rust-hdl, every signal probed ({:.0} vectors/s)", m.name, n as f64 / secs);
+    println!(
+        "widths of `{}`: {what}; {clocks} clocks in rust-hdl, every signal probed ({:.0} vectors/s)",
+        m.name,
+        n as f64 / secs
+    );
     let stateless_all = m.exhaustive.is_some() && m.stream.is_none();
     if stateless_all {
         // a unit without state, every input applied: each signal took every value it can take
-        println!("proven by exhaustion: every input applied to a unit without state, so the seen ranges are the exact ones");
+        println!(
+            "proven by exhaustion: every input applied to a unit without state, so the seen ranges are the exact ones"
+        );
     }
     println!("rtl against the model on the same vectors: {mismatches} of {n} differ");
-    println!("seen: the range over those vectors in simulation; proven: over every input sequence (interval analysis of");
+    println!(
+        "seen: the range over those vectors in simulation; proven: over every input sequence (interval analysis of"
+    );
     println!("the block's hdl); needs / spare: bits that range needs, and the declared bits it leaves at the top;");
     println!("! two or more bits never used by the data seen; where the step writing a signal computes, with each operand read");
     println!("in its declared format, more than the declared range holds: W a risk (not listed), w a wrap on purpose (a split or");
@@ -145,9 +182,18 @@ pub fn run<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64, csv_out: Optio
     for r in &rows {
         println!(
             "{:<w$} {:>10} {:>9} {:>5} {:>24} {:>5} {:>5} {:>28} {:>5} {:>5} {}{}",
-            r.name, r.format, r.q, r.bits, format!("{} .. {}", r.min, r.max), r.needed, r.spare(),
-            format!("{} .. {}", r.proven.0, r.proven.1), r.proven_needed, r.proven_spare(),
-            if r.unused_flag() { "!" } else { "" }, r.wrap_flag().map(String::from).unwrap_or_default()
+            r.name,
+            r.format,
+            r.q,
+            r.bits,
+            format!("{} .. {}", r.min, r.max),
+            r.needed,
+            r.spare(),
+            format!("{} .. {}", r.proven.0, r.proven.1),
+            r.proven_needed,
+            r.proven_spare(),
+            if r.unused_flag() { "!" } else { "" },
+            r.wrap_flag().map(String::from).unwrap_or_default()
         );
     }
     let flagged = rows.iter().filter(|r| r.unused_flag()).count();
@@ -171,7 +217,8 @@ pub fn run<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64, csv_out: Optio
     };
     for r in rows.iter().filter(|r| r.wrap.is_some()) {
         let (a, b) = r.wrap.unwrap_or_default();
-        let (lo, hi) = if r.signed { (-(1i128 << (r.bits - 1)), (1i128 << (r.bits - 1)) - 1) } else { (0, (1i128 << r.bits) - 1) };
+        let (lo, hi) =
+            if r.signed { (-(1i128 << (r.bits - 1)), (1i128 << (r.bits - 1)) - 1) } else { (0, (1i128 << r.bits) - 1) };
         let flag = r.wrap_flag().unwrap_or('W');
         println!("  {flag} {}: computes {a} .. {b}, {} holds {lo} .. {hi}", r.name, r.q);
         match r.listed {
@@ -201,8 +248,18 @@ impl Point {
     /// Every figure at most the other's (error and every resource) and one below it.
     fn dominates(&self, o: &Point) -> bool {
         let (a, b) = (&self.cells, &o.cells);
-        let le = self.max <= o.max && self.mean <= o.mean && a.lut4 <= b.lut4 && a.ff <= b.ff && a.dsp <= b.dsp && a.bram <= b.bram;
-        let lt = self.max < o.max || self.mean < o.mean || a.lut4 < b.lut4 || a.ff < b.ff || a.dsp < b.dsp || a.bram < b.bram;
+        let le = self.max <= o.max
+            && self.mean <= o.mean
+            && a.lut4 <= b.lut4
+            && a.ff <= b.ff
+            && a.dsp <= b.dsp
+            && a.bram <= b.bram;
+        let lt = self.max < o.max
+            || self.mean < o.mean
+            || a.lut4 < b.lut4
+            || a.ff < b.ff
+            || a.dsp < b.dsp
+            || a.bram < b.bram;
         le && lt
     }
     /// Scarce blocks first: DSP, block RAM, then LUT4 and FF.
@@ -251,11 +308,17 @@ pub fn bilinear_block(f: u32, d: u32) -> Option<crate::report::SynthFn> {
 /// The units with width parameters the sweep knows, and the unit of their budget. The normaliser's is the worst
 /// component's error (Sq1.10 LSB), not the angle: its table sets the length of the result, hardly its direction
 /// (a scale error of 1/√m moves every component alike), and N·L reads the length; the angle is printed beside.
-pub const SWEPT: &[(&str, &str)] = &[("normalise", "Sq1.10 LSB"), ("sincos", "8-bit LSB"), ("bilinear", "8-bit LSB"), ("power", "8-bit LSB")];
+pub const SWEPT: &[(&str, &str)] =
+    &[("normalise", "Sq1.10 LSB"), ("sincos", "8-bit LSB"), ("bilinear", "8-bit LSB"), ("power", "8-bit LSB")];
 
 /// Every setting of the unit's width parameters: its error from the model (random vectors, or every input where
 /// the unit has few) and its cost from yosys for `family`, each synthesised in its own folder under `dir`.
-pub fn sweep(unit: &str, family: synth::fpga::Family, dir: &std::path::Path, say: &dyn Fn(&str)) -> Result<Vec<Point>, String> {
+pub fn sweep(
+    unit: &str,
+    family: synth::fpga::Family,
+    dir: &std::path::Path,
+    say: &dyn Fn(&str),
+) -> Result<Vec<Point>, String> {
     const SAMPLES: usize = 200_000;
     let cost = |f: crate::report::SynthFn, name: String| {
         say(&name);
@@ -336,7 +399,10 @@ pub fn pareto(points: &[Point], budget: f64) -> (Vec<usize>, Option<usize>) {
 pub fn budget(unit: &str, budget: f64, part: synth::fpga::Part, dir: &std::path::Path) -> Result<(), String> {
     let Some(&(_, what)) = SWEPT.iter().find(|s| s.0 == unit) else {
         let names: Vec<&str> = SWEPT.iter().map(|s| s.0).collect();
-        return Err(format!("--budget: `{unit}` has no width parameters to sweep; the units that do: {}", names.join(", ")));
+        return Err(format!(
+            "--budget: `{unit}` has no width parameters to sweep; the units that do: {}",
+            names.join(", ")
+        ));
     };
     let missing = synth::tools::missing(&["yosys"]);
     if !missing.is_empty() {
@@ -345,15 +411,30 @@ pub fn budget(unit: &str, budget: f64, part: synth::fpga::Part, dir: &std::path:
     let t = std::time::Instant::now();
     let points = sweep(unit, part.family, dir, &|name| eprintln!("yosys: {name} for {}", part.title))?;
     let (front, cheapest) = pareto(&points, budget);
-    println!("width sweep of `{unit}`: error against the ideal in {what} (mean / max), cost from yosys for {} ({:.0} s)", part.title, t.elapsed().as_secs_f64());
+    println!(
+        "width sweep of `{unit}`: error against the ideal in {what} (mean / max), cost from yosys for {} ({:.0} s)",
+        part.title,
+        t.elapsed().as_secs_f64()
+    );
     println!("P: on the Pareto set (no other setting as good in error and every resource, and better in one); *: the unit's own");
     let [lut, ff, dsp, bram, _] = part.family.cells();
     println!("{:<34} {:>10} {:>10} {:>8} {:>8} {:>6} {:>6}  {}", "setting", "mean", "max", lut, ff, dsp, bram, "");
     for (k, p) in points.iter().enumerate() {
-        let marks = format!("{}{}{}", if front.contains(&k) { "P" } else { " " }, if p.own { "*" } else { " " }, if cheapest == Some(k) { " <- cheapest within the budget" } else { "" });
+        let marks = format!(
+            "{}{}{}",
+            if front.contains(&k) { "P" } else { " " },
+            if p.own { "*" } else { " " },
+            if cheapest == Some(k) { " <- cheapest within the budget" } else { "" }
+        );
         println!(
             "{:<34} {:>10.4} {:>10.4} {:>8} {:>8} {:>6} {:>6}  {marks}{}",
-            p.setting, p.mean, p.max, p.cells.lut4, p.cells.ff, p.cells.dsp, p.cells.bram,
+            p.setting,
+            p.mean,
+            p.max,
+            p.cells.lut4,
+            p.cells.ff,
+            p.cells.dsp,
+            p.cells.bram,
             p.also.as_ref().map(|a| format!("  ({a})")).unwrap_or_default()
         );
     }
@@ -372,7 +453,14 @@ mod tests {
     use super::*;
 
     fn p(max: f64, lut4: u64, bram: u64) -> Point {
-        Point { setting: String::new(), own: false, mean: max / 2.0, max, also: None, cells: synth::fpga::Cells { lut4, ff: 10, dsp: 0, bram, carry: 0, soft: 0 } }
+        Point {
+            setting: String::new(),
+            own: false,
+            mean: max / 2.0,
+            max,
+            also: None,
+            cells: synth::fpga::Cells { lut4, ff: 10, dsp: 0, bram, carry: 0, soft: 0 },
+        }
     }
 
     #[test]

@@ -3,7 +3,11 @@ use std::process::Command;
 
 fn bumprtl(args: &[&str]) -> (i32, String, String) {
     let o = Command::new(env!("CARGO_BIN_EXE_bumprtl")).args(args).output().unwrap();
-    (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stdout).into(), String::from_utf8_lossy(&o.stderr).into())
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).into(),
+        String::from_utf8_lossy(&o.stderr).into(),
+    )
 }
 
 #[test]
@@ -93,7 +97,8 @@ fn vectors_command_reproduces_the_committed_golden_file() {
 
 #[test]
 fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
-    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bumprtl-demo-notools-{}", std::process::id()));
+    let d =
+        std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bumprtl-demo-notools-{}", std::process::id()));
     let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
         .args(["demo", "--size", "16", "--out", d.to_str().unwrap()])
         .env("PATH", "")
@@ -107,11 +112,27 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     assert_eq!(bits.split_whitespace().rev().take(6).collect::<Vec<_>>(), ["12", "8", "8", "16", "16", "16"], "{out}");
     assert!(out.contains("palette 256 shade vs the ideal under its one light"), "{out}");
     for f in [
-        "cart_pipeline_model.png", "cart_pipeline_rust_hdl.png", "polar_pipeline_model.png", "cart_pipeline_hemi_oct_model.png",
-        "cart_pipeline.vcd", "polar_pipeline.vcd", "cart_pipeline_hemi_oct.vcd", "verilog/cart_pipeline.v",
-        "fig8a_blinn.png", "fig8b_bspline.png", "colour_reference.png", "colour_bilinear.png", "colour_bspline.png",
-        "palette_pipeline_model.png", "palette_pipeline_rust_hdl.png", "palette_pipeline_12_model.png", "palette_pipeline.vcd",
-        "palette_pipeline_12.vcd", "verilog/palette_pipeline_12.v", "torus_model.png", "cart_pipeline_matte.vcd",
+        "cart_pipeline_model.png",
+        "cart_pipeline_rust_hdl.png",
+        "polar_pipeline_model.png",
+        "cart_pipeline_hemi_oct_model.png",
+        "cart_pipeline.vcd",
+        "polar_pipeline.vcd",
+        "cart_pipeline_hemi_oct.vcd",
+        "verilog/cart_pipeline.v",
+        "fig8a_blinn.png",
+        "fig8b_bspline.png",
+        "colour_reference.png",
+        "colour_bilinear.png",
+        "colour_bspline.png",
+        "palette_pipeline_model.png",
+        "palette_pipeline_rust_hdl.png",
+        "palette_pipeline_12_model.png",
+        "palette_pipeline.vcd",
+        "palette_pipeline_12.vcd",
+        "verilog/palette_pipeline_12.v",
+        "torus_model.png",
+        "cart_pipeline_matte.vcd",
         "verilog/cart_pipeline_matte.v",
     ] {
         assert!(d.join(f).is_file(), "{f} missing");
@@ -145,7 +166,8 @@ fn exhaustive_writes_every_input_exactly_once() {
     let (_, random, _) = bumprtl(&["vectors", "gloss", "--count", "3"]);
     let hard = (vectors::gloss::MODEL.hard_cases)();
     let first: Vec<&str> = random.lines().skip(2).take(hard.len()).collect();
-    let want: Vec<String> = hard.iter().map(|h| h.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(",")).collect();
+    let want: Vec<String> =
+        hard.iter().map(|h| h.iter().map(|v| v.to_string()).collect::<Vec<_>>().join(",")).collect();
     for (row, h) in first.iter().zip(&want) {
         assert!(row.starts_with(&format!("{h},")), "{row} is not the hard case {h}");
     }
@@ -181,7 +203,14 @@ fn non_utf8_output_paths_work_or_fail_cleanly() {
     let bad = d.join(std::ffi::OsStr::from_bytes(b"out-\xff"));
     for args in [
         vec![std::ffi::OsStr::new("vectors"), "gloss".as_ref(), "--out".as_ref(), bad.join("g.csv").as_os_str()],
-        vec!["wave".as_ref(), "gloss".as_ref(), "--count".as_ref(), "4".as_ref(), "--out".as_ref(), bad.join("g.vcd").as_os_str()],
+        vec![
+            "wave".as_ref(),
+            "gloss".as_ref(),
+            "--count".as_ref(),
+            "4".as_ref(),
+            "--out".as_ref(),
+            bad.join("g.vcd").as_os_str(),
+        ],
         vec!["verilog".as_ref(), "gloss".as_ref(), "--out".as_ref(), bad.as_os_str()],
     ] {
         let _ = std::fs::create_dir_all(&bad);
@@ -214,9 +243,20 @@ fn a_bad_height_map_is_one_line_naming_it_and_nothing_is_written() {
     std::fs::write(&empty, b"").unwrap();
     std::fs::write(&text, b"P2 2 2 255 0 0 0 0").unwrap();
     image::GrayImage::new(1, 1).save(&tiny).unwrap();
-    for (map, what) in [(&empty, "empty"), (&text, "not a PNG"), (&tiny, "at least 2 × 2"), (&d.join("absent.png"), "cannot read")] {
+    for (map, what) in
+        [(&empty, "empty"), (&text, "not a PNG"), (&tiny, "at least 2 × 2"), (&d.join("absent.png"), "cannot read")]
+    {
         let out = d.join("out");
-        let (code, _, err) = bumprtl(&["demo", "--no-synth", "--size", "16", "--height-map", map.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        let (code, _, err) = bumprtl(&[
+            "demo",
+            "--no-synth",
+            "--size",
+            "16",
+            "--height-map",
+            map.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
         assert_ne!(code, 0);
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(map.to_str().unwrap()) && err.contains(what), "{err}");
@@ -246,7 +286,11 @@ fn a_users_height_map_goes_through_the_height_cartesian_polar_and_palette_paths(
     // 64 texels: both palettes hold every distinct normal
     assert!(stdout.contains("s_N = 256: ") && stdout.contains("0.00° mean / 0.00° max"), "{stdout}");
     for f in [
-        "height_pipeline_model.png", "height_pipeline_rust_hdl.png", "cart_pipeline_model.png", "polar_pipeline_model.png", "palette_pipeline_model.png",
+        "height_pipeline_model.png",
+        "height_pipeline_rust_hdl.png",
+        "cart_pipeline_model.png",
+        "polar_pipeline_model.png",
+        "palette_pipeline_model.png",
         "palette_pipeline_12_model.png",
     ] {
         assert!(out.join(f).is_file(), "{f} missing");
@@ -258,9 +302,12 @@ fn quantize_writes_the_palette_the_index_map_and_its_mips() {
     let d = scratch("quantize");
     // an RGB normal map of 5 × 3 texels (not a power of two): 15 distinct normals at most
     let map = d.join("n.png");
-    image::RgbImage::from_fn(5, 3, |x, y| image::Rgb([100 + 20 * x as u8, 128 + 30 * y as u8, 230])).save(&map).unwrap();
+    image::RgbImage::from_fn(5, 3, |x, y| image::Rgb([100 + 20 * x as u8, 128 + 30 * y as u8, 230]))
+        .save(&map)
+        .unwrap();
     let out = d.join("q");
-    let (code, stdout, err) = bumprtl(&["quantize", map.to_str().unwrap(), "--size", "4", "--dither", "--out", out.to_str().unwrap()]);
+    let (code, stdout, err) =
+        bumprtl(&["quantize", map.to_str().unwrap(), "--size", "4", "--dither", "--out", out.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     assert!(stdout.contains("distinct normals: 15") && stdout.contains("palette: 4 normals"), "{stdout}");
     let csv = std::fs::read_to_string(out.join("palette.csv")).unwrap();
@@ -274,16 +321,21 @@ fn quantize_writes_the_palette_the_index_map_and_its_mips() {
     assert_eq!((index.width(), index.height()), (5, 3));
     assert!(index.to_luma16().pixels().all(|p| p.0[0] < 4));
     // 5 × 3 → 3 × 2 → 2 × 1 → 1 × 1
-    let mips: Vec<(u32, u32)> = (1..=3).map(|l| image::open(out.join(format!("mip{l}.png"))).unwrap()).map(|i| (i.width(), i.height())).collect();
+    let mips: Vec<(u32, u32)> = (1..=3)
+        .map(|l| image::open(out.join(format!("mip{l}.png"))).unwrap())
+        .map(|i| (i.width(), i.height()))
+        .collect();
     assert_eq!(mips, [(3, 2), (2, 1), (1, 1)]);
     assert!(!out.join("mip4.png").exists());
     // enough normals: lossless
-    let (_, stdout, _) = bumprtl(&["quantize", map.to_str().unwrap(), "--size", "16", "--out", d.join("all").to_str().unwrap()]);
+    let (_, stdout, _) =
+        bumprtl(&["quantize", map.to_str().unwrap(), "--size", "16", "--out", d.join("all").to_str().unwrap()]);
     assert!(stdout.contains("mean 0.0000°, max 0.0000°"), "{stdout}");
     // a grey map is a height map
     let grey = d.join("h.png");
     image::GrayImage::from_fn(8, 8, |x, _| image::Luma([x as u8 * 30])).save(&grey).unwrap();
-    let (code, stdout, err) = bumprtl(&["quantize", grey.to_str().unwrap(), "--size", "8", "--out", d.join("h").to_str().unwrap()]);
+    let (code, stdout, err) =
+        bumprtl(&["quantize", grey.to_str().unwrap(), "--size", "8", "--out", d.join("h").to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     assert!(stdout.contains("a height map") && stdout.contains("plane over 8 neighbours"), "{stdout}");
 }
@@ -296,13 +348,18 @@ fn quantize_refuses_a_bad_map_in_one_line_and_writes_nothing() {
     std::fs::write(&text, b"not a png").unwrap();
     for (map, what) in [(&empty, "empty"), (&text, "not a PNG"), (&d.join("absent.png"), "cannot read")] {
         let out = d.join("out");
-        let (code, _, err) = bumprtl(&["quantize", map.to_str().unwrap(), "--size", "16", "--out", out.to_str().unwrap()]);
+        let (code, _, err) =
+            bumprtl(&["quantize", map.to_str().unwrap(), "--size", "16", "--out", out.to_str().unwrap()]);
         assert_ne!(code, 0);
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(map.to_str().unwrap()) && err.contains(what), "{err}");
         assert!(!out.exists());
     }
-    for (bad, what) in [(["--size", "0", "--q", "8"], "size"), (["--size", "16385", "--q", "8"], "size"), (["--size", "16", "--q", "5"], "4 or 8")] {
+    for (bad, what) in [
+        (["--size", "0", "--q", "8"], "size"),
+        (["--size", "16385", "--q", "8"], "size"),
+        (["--size", "16", "--q", "5"], "4 or 8"),
+    ] {
         let args = [&["quantize", empty.to_str().unwrap(), "--out", "x"][..], &bad[..]].concat();
         let (code, _, err) = bumprtl(&args);
         assert_ne!(code, 0, "{bad:?}");
@@ -335,7 +392,10 @@ fn palette_table_prints_table_1_with_its_added_columns() {
         assert_eq!(rows.len(), if model == "Lambert " { 6 } else { 3 }, "{model}: {out}");
     }
     // the paper's 16,348-normal Lambert + specular figure stands beside this machine's
-    assert!(out.lines().any(|l| l.starts_with("Lambert + specular") && l.contains("16384") && l.contains("12.5")), "{out}");
+    assert!(
+        out.lines().any(|l| l.starts_with("Lambert + specular") && l.contains("16384") && l.contains("12.5")),
+        "{out}"
+    );
     assert!(out.contains("angle mean/max") && out.contains("image LSB mean/max"));
 }
 
@@ -348,7 +408,8 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     assert!(out.contains("3000 random vectors") && out.contains("spare"), "{out}");
     let text = std::fs::read_to_string(&csv).unwrap();
     let rows: Vec<Vec<&str>> = text.lines().skip(1).map(|l| l.split(',').collect()).collect();
-    let row = |name: &str| rows.iter().find(|r| r[0] == name).unwrap_or_else(|| panic!("{name} missing:\n{text}")).clone();
+    let row =
+        |name: &str| rows.iter().find(|r| r[0] == name).unwrap_or_else(|| panic!("{name} missing:\n{text}")).clone();
     // the sum of three products is signed (Sq4.20); the magnitudes before the multipliers reach 2048 (−2048 negated)
     assert_eq!(&row("uut.s4_sum.q")[1..5], ["Sq4_20", "sQ4.20", "25", "1"]);
     assert!(row("uut.s4_sum.q")[5].parse::<i64>().unwrap() < 0);
@@ -359,7 +420,10 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     assert_eq!(&row("uut.s4_sum.q")[10..12], ["-12582912", "12582912"]);
     assert_eq!(&row("uut.w_q")[10..12], ["-12288", "12288"]);
     assert!(rows.iter().all(|r| r[14] == "0"), "{text}");
-    assert!(out.contains("0 risks (W), 0 wraps on purpose (w), 0 argued (a)") && out.contains("0 of 3008 differ"), "{out}");
+    assert!(
+        out.contains("0 risks (W), 0 wraps on purpose (w), 0 argued (a)") && out.contains("0 of 3008 differ"),
+        "{out}"
+    );
     for r in &rows {
         let (bits, needed): (usize, usize) = (r[3].parse().unwrap(), r[7].parse().unwrap());
         assert!(needed <= bits, "{r:?}");
@@ -370,7 +434,10 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     assert!(out.contains("every input (262144)") && out.contains("proven by exhaustion"), "{out}");
     // gloss's L − Q ≥ 0 (Q = ⌊L²/1024⌋ ≤ L) is beyond intervals: argued, with every input behind it
     assert!(out.contains("0 risks (W)") && out.contains("  a uut.s5_d.d: computes -1022 .. 1023"), "{out}");
-    assert!(out.contains("argued: L − Q with Q") && out.contains("every input applied, rtl = model on all 262144"), "{out}");
+    assert!(
+        out.contains("argued: L − Q with Q") && out.contains("every input applied, rtl = model on all 262144"),
+        "{out}"
+    );
     assert!(!bumprtl(&["widths", "dot3", "--count", "10"]).1.contains("proven by exhaustion"));
     // a --csv that cannot be written is refused before the simulation, in one line, and nothing is left
     let (code, _, err) = bumprtl(&["widths", "dot3", "--csv", "/proc/no-such-folder/w.csv"]);
@@ -401,7 +468,11 @@ fn widths_budget_sweeps_the_table_sizes_and_marks_the_cheapest_within_it() {
         })
         .collect();
     assert_eq!(rows.len(), 9, "{out}");
-    assert_eq!(rows.iter().filter(|r| r.3.contains('*')).map(|r| r.0.as_str()).collect::<Vec<_>>(), ["256 entries of 8 bits"], "{out}");
+    assert_eq!(
+        rows.iter().filter(|r| r.3.contains('*')).map(|r| r.0.as_str()).collect::<Vec<_>>(),
+        ["256 entries of 8 bits"],
+        "{out}"
+    );
     // the cheapest within 1 LSB: its max within the budget, and no row within it cheaper (DSP, BRAM, LUT4, FF)
     let key = |c: &[u64; 4]| (c[2], c[3], c[0], c[1]);
     let chosen: Vec<_> = rows.iter().filter(|r| r.3.contains("cheapest")).collect();
@@ -434,12 +505,23 @@ fn render_runs_a_scene_file_on_every_path_and_the_rtl_equals_the_model() {
     let d = scratch("render");
     let scene = scenes().join("directional.toml");
     let w = synth::tools::missing(&["verilator", "make", "g++"]).is_empty();
-    let (code, out, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", d.to_str().unwrap(), "--window", "100,60,6,5"]);
+    let (code, out, err) =
+        bumprtl(&["render", scene.to_str().unwrap(), "--out", d.to_str().unwrap(), "--window", "100,60,6,5"]);
     assert_eq!(code, 0, "{err}");
     // one directional light per surface and C = 0: no light interpolator, no light normaliser, no gloss unit
-    assert!(out.contains("pipeline: cart_surface_matte") && out.contains("units: bilinear → cart_decode → normalise → dot3 → blend\n"), "{out}");
+    assert!(
+        out.contains("pipeline: cart_surface_matte")
+            && out.contains("units: bilinear → cart_decode → normalise → dot3 → blend\n"),
+        "{out}"
+    );
     assert!(out.contains("rust-hdl, window 6×5 at (100, 60)"), "{out}");
-    for f in ["directional_ideal.png", "directional_model.png", "directional_shade.png", "directional_error_heat.png", "directional_window.vcd"] {
+    for f in [
+        "directional_ideal.png",
+        "directional_model.png",
+        "directional_shade.png",
+        "directional_error_heat.png",
+        "directional_window.vcd",
+    ] {
         assert!(d.join(f).is_file(), "{f}");
     }
     assert_eq!(d.join("directional_verilator.png").is_file(), w);
@@ -454,7 +536,15 @@ fn render_runs_a_scene_file_on_every_path_and_the_rtl_equals_the_model() {
     // a window outside the frame, and a malformed one: one line, nothing written
     for (win, says) in [("250,250,8,8", "outside the 256 × 256 frame"), ("1,2,3", "four whole numbers")] {
         let e = scratch(&format!("render-bad-{}", win.len()));
-        let (code, _, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", e.to_str().unwrap(), "--window", win, "--no-verilator"]);
+        let (code, _, err) = bumprtl(&[
+            "render",
+            scene.to_str().unwrap(),
+            "--out",
+            e.to_str().unwrap(),
+            "--window",
+            win,
+            "--no-verilator",
+        ]);
         assert_ne!(code, 0);
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(says), "{err}");
@@ -470,7 +560,11 @@ fn a_bad_scene_is_one_line_at_its_place_and_nothing_is_written() {
         ("malformed.toml", "size = 64\n[bump\nsource = \"procedural\"\n", "malformed.toml:2:"),
         ("unknown.toml", "size = 64\ncolor = 1\n[bump]\nsource = \"procedural\"\n", "unknown field `color`"),
         ("nan.toml", "size = 64\n[bump]\nsource = \"procedural\"\nrelief = nan\n", "nan.toml:4:10:"),
-        ("zero-light.toml", "size = 64\n[bump]\nsource = \"procedural\"\n[light]\nkind = \"directional\"\ndirection = [0, 0, 0]\n", "zero length"),
+        (
+            "zero-light.toml",
+            "size = 64\n[bump]\nsource = \"procedural\"\n[light]\nkind = \"directional\"\ndirection = [0, 0, 0]\n",
+            "zero length",
+        ),
         ("no-map.toml", "size = 64\n[bump]\nsource = \"height_map\"\npath = \"absent.png\"\n", "absent.png"),
     ];
     for (name, text, says) in cases {
@@ -483,7 +577,8 @@ fn a_bad_scene_is_one_line_at_its_place_and_nothing_is_written() {
         assert!(err.contains(name) && err.contains(says), "{name}: {err}");
         assert!(!out.exists(), "{name}: the output folder was made");
     }
-    let (code, _, err) = bumprtl(&["render", d.join("absent.toml").to_str().unwrap(), "--out", d.join("o").to_str().unwrap()]);
+    let (code, _, err) =
+        bumprtl(&["render", d.join("absent.toml").to_str().unwrap(), "--out", d.join("o").to_str().unwrap()]);
     assert_ne!(code, 0);
     assert!(err.contains("absent.toml") && err.contains("cannot read"), "{err}");
 }
@@ -492,11 +587,24 @@ fn a_bad_scene_is_one_line_at_its_place_and_nothing_is_written() {
 fn hardcases_prints_every_row_passing_and_covers_what_the_seeds_warn_about() {
     let (code, out, err) = bumprtl(&["hardcases"]);
     assert_eq!(code, 0, "{err}{out}");
-    let rows: Vec<&str> = out.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| unit") && !l.starts_with("| ---")).collect();
+    let rows: Vec<&str> =
+        out.lines().filter(|l| l.starts_with("| ") && !l.starts_with("| unit") && !l.starts_with("| ---")).collect();
     assert!(rows.len() >= 45, "{} rows", rows.len());
     assert!(rows.iter().all(|r| r.ends_with("| pass |")), "{out}");
-    for covered in ["invalid texel", "texel 255", "below the horizon", "on the horizon", "180° apart", "120° apart", "zero-length vector",
-        "R's wrap", "steepest step", "s_N = 1", "most negative", "the zero light"] {
+    for covered in [
+        "invalid texel",
+        "texel 255",
+        "below the horizon",
+        "on the horizon",
+        "180° apart",
+        "120° apart",
+        "zero-length vector",
+        "R's wrap",
+        "steepest step",
+        "s_N = 1",
+        "most negative",
+        "the zero light",
+    ] {
         assert!(rows.iter().any(|r| r.contains(covered)), "no row for {covered}");
     }
     assert!(out.contains(&format!("{} hard cases over", rows.len())) && out.contains(" 0 fail"), "{out}");
@@ -514,7 +622,12 @@ fn render_draws_a_torus_and_a_sphere_on_a_background_and_the_rtl_equals_the_mode
         let scene = scenes().join(format!("{stem}.toml"));
         let (code, out, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", d.to_str().unwrap()]);
         assert_eq!(code, 0, "{err}");
-        let covered: usize = out.lines().find_map(|l| l.strip_suffix(" pixels of the surface in the 256 × 256 frame")).unwrap().parse().unwrap();
+        let covered: usize = out
+            .lines()
+            .find_map(|l| l.strip_suffix(" pixels of the surface in the 256 × 256 frame"))
+            .unwrap()
+            .parse()
+            .unwrap();
         // a torus or a sphere of radius 1 in a square of side 2.2 covers far from all of the frame
         assert!((15_000..50_000).contains(&covered), "{stem}: {covered}");
         let img = image::open(d.join(format!("{stem}_model.png"))).unwrap().to_rgb8();
@@ -528,7 +641,8 @@ fn render_draws_a_torus_and_a_sphere_on_a_background_and_the_rtl_equals_the_mode
         assert!(out.lines().any(|l| l.starts_with("rust-hdl, window 8×8") && l.trim_end().ends_with(" 0")), "{out}");
         // a window on the background only: one line, before any simulation, nothing written
         let e = scratch(&format!("render-{stem}-corner"));
-        let (code, _, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", e.to_str().unwrap(), "--window", "0,0,8,8"]);
+        let (code, _, err) =
+            bumprtl(&["render", scene.to_str().unwrap(), "--out", e.to_str().unwrap(), "--window", "0,0,8,8"]);
         assert!(code != 0 && err.lines().count() == 1 && err.contains("covers no pixel"), "{err}");
         assert!(std::fs::read_dir(&e).unwrap().next().is_none(), "{stem}: files written");
     }
@@ -547,7 +661,8 @@ fn render_reads_a_users_normal_map_in_either_green_convention() {
             "size = 32\n[bump]\nsource = \"normal_map\"\npath = \"lean.png\"\ngreen = \"{green}\"\n[light]\nkind = \"directional\"\ndirection = [0.0, 0.35, -0.94]\nper = \"surface\"\n[material]\ngloss = 0\nsrc = [255, 255, 255]\ndst = [0, 0, 0]\n"
         )).unwrap();
         let out = d.join(format!("out-{green}"));
-        let (code, text, err) = bumprtl(&["render", scene.to_str().unwrap(), "--out", out.to_str().unwrap(), "--no-verilator"]);
+        let (code, text, err) =
+            bumprtl(&["render", scene.to_str().unwrap(), "--out", out.to_str().unwrap(), "--no-verilator"]);
         assert_eq!(code, 0, "{err}");
         assert!(text.contains("rust-hdl, window") && text.contains("normal angle"), "{text}");
         let img = image::open(out.join(format!("{green}_model.png"))).unwrap().to_luma8();
@@ -574,7 +689,8 @@ fn synthesis_results_are_cached_under_a_content_hash_and_reused() {
         String::from_utf8_lossy(&o.stdout).lines().skip(1).collect::<Vec<_>>().join("\n")
     };
     let first = run();
-    let kept: Vec<String> = std::fs::read_dir(&cache).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    let kept: Vec<String> =
+        std::fs::read_dir(&cache).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     // one result per setting of the sweep, each named by a 128-bit hash and its kind
     assert_eq!(kept.len(), vectors::sincos::LUT_SIZES.len(), "{kept:?}");
     assert!(kept.iter().all(|n| n.len() == 32 + ".cells".len() && n.ends_with(".cells")), "{kept:?}");
@@ -590,20 +706,29 @@ fn synthesis_results_are_cached_under_a_content_hash_and_reused() {
 #[test]
 fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
     let d = scratch("verilog-scene");
-    let (code, out, err) = bumprtl(&["verilog", "--scene", scenes().join("torus.toml").to_str().unwrap(), "--out", d.to_str().unwrap()]);
+    let (code, out, err) =
+        bumprtl(&["verilog", "--scene", scenes().join("torus.toml").to_str().unwrap(), "--out", d.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
     // the torus with one light per triangle and a little gloss: cart_surface, which holds a gloss unit and no
     // light interpolator
-    assert!(out.contains("cart_surface.v") && out.contains("bilinear → cart_decode → normalise → dot3 → gloss → blend)"), "{out}");
+    assert!(
+        out.contains("cart_surface.v") && out.contains("bilinear → cart_decode → normalise → dot3 → gloss → blend)"),
+        "{out}"
+    );
     let (_, module, _) = bumprtl(&["verilog", "cart_surface", "--out", "-"]);
     assert_eq!(std::fs::read_to_string(d.join("cart_surface.v")).unwrap(), module);
     assert!(!module.contains("l0_x") && !module.contains("$light_norm") && module.contains("module cart_surface("));
     // the demo's torus: lights per vertex (so the light interpolator and its normaliser) and C = 0 (so no gloss unit)
     let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("demo.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0);
-    assert!(text.contains("module cart_pipeline_matte(") && text.contains("l0_x") && text.contains("$light_norm"), "{}", &text[..text.len().min(200)]);
+    assert!(
+        text.contains("module cart_pipeline_matte(") && text.contains("l0_x") && text.contains("$light_norm"),
+        "{}",
+        &text[..text.len().min(200)]
+    );
     assert!(!text.contains("gloss") && !text.contains("conc"), "the matte pipeline holds no gloss unit and no C port");
-    let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("sphere_polar.toml").to_str().unwrap(), "--out", "-"]);
+    let (code, text, _) =
+        bumprtl(&["verilog", "--scene", scenes().join("sphere_polar.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0);
     assert!(text.contains("module polar_pipeline("), "{}", &text[..text.len().min(200)]);
     // a bad scene, and a unit and a scene at once: one line, non-zero, nothing written
@@ -619,7 +744,10 @@ fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
 
 /// The report's table with the model's speed (its last column, the one figure a rerun changes) cut off.
 fn without_speed(md: &str) -> String {
-    md.lines().map(|l| if l.starts_with("| ") { l.rsplitn(3, '|').nth(2).unwrap_or(l) } else { l }).collect::<Vec<_>>().join("\n")
+    md.lines()
+        .map(|l| if l.starts_with("| ") { l.rsplitn(3, '|').nth(2).unwrap_or(l) } else { l })
+        .collect::<Vec<_>>()
+        .join("\n")
 }
 
 #[test]
@@ -647,13 +775,25 @@ fn a_report_plan_run_through_gnu_parallel_merges_into_the_report_run_in_one_proc
     assert!(lines.lines().all(|l| l.contains(" report ") && l.contains(" --point ")), "{lines}");
     let slurm = std::fs::read_to_string(d.join("plan.txt.slurm")).unwrap();
     assert!(slurm.contains("#SBATCH --array=1-2") && slurm.contains("SLURM_ARRAY_TASK_ID"), "{slurm}");
-    let p = Command::new("parallel").args(["-j", "2", "--halt", "now,fail=1"]).stdin(std::fs::File::open(&plan).unwrap()).output().unwrap();
+    let p = Command::new("parallel")
+        .args(["-j", "2", "--halt", "now,fail=1"])
+        .stdin(std::fs::File::open(&plan).unwrap())
+        .output()
+        .unwrap();
     assert!(p.status.success(), "{}", String::from_utf8_lossy(&p.stderr));
     let m = Command::new("bash").arg(d.join("plan.txt.merge")).output().unwrap();
     assert!(m.status.success(), "{}", String::from_utf8_lossy(&m.stderr));
-    let (a, b) = (std::fs::read_to_string(one.join("report.md")).unwrap(), std::fs::read_to_string(many.join("report.md")).unwrap());
+    let (a, b) = (
+        std::fs::read_to_string(one.join("report.md")).unwrap(),
+        std::fs::read_to_string(many.join("report.md")).unwrap(),
+    );
     assert_eq!(without_speed(&a), without_speed(&b));
-    assert!(a.contains("Budget 20 8-bit LSB") && a.contains("- quad: quad.cart_surface_nearest") && a.contains("no configuration meets it"), "{a}");
+    assert!(
+        a.contains("Budget 20 8-bit LSB")
+            && a.contains("- quad: quad.cart_surface_nearest")
+            && a.contains("no configuration meets it"),
+        "{a}"
+    );
     assert!(many.join("pareto.png").is_file());
     // a point not computed is named when merging, in one line
     std::fs::remove_file(many.join("points").join("quad.cart_surface_nearest.txt")).unwrap();

@@ -12,13 +12,20 @@ fn scratch(name: &str) -> PathBuf {
 
 fn bumprtl(args: &[&str]) -> (i32, String, String) {
     let o = Command::new(env!("CARGO_BIN_EXE_bumprtl")).args(args).output().unwrap();
-    (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stdout).into(), String::from_utf8_lossy(&o.stderr).into())
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).into(),
+        String::from_utf8_lossy(&o.stderr).into(),
+    )
 }
 
 /// Run a shell command line in `dir`; (exit code, stdout + stderr).
 fn sh(dir: &Path, line: &str) -> (i32, String) {
     let o = Command::new("sh").arg("-c").arg(line).current_dir(dir).output().unwrap();
-    (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr))
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr),
+    )
 }
 
 fn rows(unit: &str) -> usize {
@@ -71,7 +78,10 @@ fn cart_pipeline_places_on_the_ecp5_45f_and_a_part_too_small_is_named_with_its_r
     let (code, _, err) = bumprtl(&["synth", "cart_pipeline", "--target", "ecp5-25f", "--dir", dir]);
     assert_eq!(code, 1);
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.contains("does not fit the ECP5 LFE5U-25F") && err.contains("MULT18X18D") && err.contains("has 28"), "{err}");
+    assert!(
+        err.contains("does not fit the ECP5 LFE5U-25F") && err.contains("MULT18X18D") && err.contains("has 28"),
+        "{err}"
+    );
     let (code, out, err) = bumprtl(&["synth", "cart_pipeline", "--target", "up5k", "--dir", dir]);
     assert_eq!(code, 1, "{out}");
     assert_eq!(err.lines().count(), 1, "{err}");

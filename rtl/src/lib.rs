@@ -75,8 +75,11 @@ pub mod source {
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, cart_surface, light_iter};
-pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, tangent_to_normal, texture_filter};
+pub use height::{
+    blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent,
+    tangent_to_normal, texture_filter,
+};
+pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder, table_builder_shared};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
-pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder, table_builder_shared};
 pub use stream::StreamUnit;

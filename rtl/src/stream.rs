@@ -176,7 +176,12 @@ impl<U: StreamUnit> Runner<U> {
 
     /// `step`, with `probe` shown every signal (as `uut.<field>…`) once the slot has settled with the clock low:
     /// then every register's d holds what the edge will latch and every wire what this slot makes of it.
-    pub fn step_probed(&mut self, valid: bool, values: &[u64], probe: Option<&mut dyn rust_hdl::core::probe::Probe>) -> Option<Vec<u64>> {
+    pub fn step_probed(
+        &mut self,
+        valid: bool,
+        values: &[u64],
+        probe: Option<&mut dyn rust_hdl::core::probe::Probe>,
+    ) -> Option<Vec<u64>> {
         self.uut.set_inputs(valid, values);
         self.uut.set_clock(false);
         self.settle();

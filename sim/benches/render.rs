@@ -10,12 +10,21 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("demo scene 64x64");
     g.sample_size(10);
     let (height, palette) = (Height::new(&scene), Palette::new(256, &scene));
-    let pipes: [&dyn Pipeline; 5] =
-        [&Cartesian::glossy(Decode::Seed), &Cartesian::glossy(Decode::HemiOct), &Polar { scale: Scale::Seed, pw: 16, h: 1.0 }, &height, &palette];
+    let pipes: [&dyn Pipeline; 5] = [
+        &Cartesian::glossy(Decode::Seed),
+        &Cartesian::glossy(Decode::HemiOct),
+        &Polar { scale: Scale::Seed, pw: 16, h: 1.0 },
+        &height,
+        &palette,
+    ];
     for p in pipes {
         let prep = p.prepare(&scene);
-        g.bench_function(format!("{} ideal (f64, scene set-up included)", p.model().name), |b| b.iter(|| p.prepare(&scene).ideal.len()));
-        g.bench_function(format!("{} bit-exact model", p.model().name), |b| b.iter(|| sim::render::model(p.model(), &prep).outs.len()));
+        g.bench_function(format!("{} ideal (f64, scene set-up included)", p.model().name), |b| {
+            b.iter(|| p.prepare(&scene).ideal.len())
+        });
+        g.bench_function(format!("{} bit-exact model", p.model().name), |b| {
+            b.iter(|| sim::render::model(p.model(), &prep).outs.len())
+        });
     }
     g.finish();
 }

@@ -16,8 +16,12 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("rust-hdl gloss, 2000 vectors");
     g.sample_size(10);
     g.throughput(Throughput::Elements(cycles));
-    g.bench_function("loop-driven simulate", |b| b.iter(|| Runner::<Gloss>::new().run(slots.iter().cloned()).outputs.len()));
-    g.bench_function("threaded Simulation", |b| b.iter(|| run_threaded::<Gloss>(slots.clone()).expect("simulation").outputs.len()));
+    g.bench_function("loop-driven simulate", |b| {
+        b.iter(|| Runner::<Gloss>::new().run(slots.iter().cloned()).outputs.len())
+    });
+    g.bench_function("threaded Simulation", |b| {
+        b.iter(|| run_threaded::<Gloss>(slots.clone()).expect("simulation").outputs.len())
+    });
     g.finish();
 }
 

@@ -4,9 +4,9 @@
 
 use rand::SeedableRng;
 use vectors::cart_encode::{self, Encoder};
-use vectors::stats::{angle_deg, ErrorStats};
 use vectors::polar_encode::{self, Scale};
 use vectors::sincos;
+use vectors::stats::{angle_deg, ErrorStats};
 
 pub struct Row {
     pub unit: String,
@@ -64,7 +64,9 @@ pub fn encoders(n: usize, seed: u64) -> Vec<Row> {
     let mut s = ErrorStats::default();
     for _ in 0..n {
         let d = cart_encode::random_hemisphere(&mut rng);
-        s.add(angle_deg(d, cart_encode::decode_consistent(cart_encode::encode(Encoder::Seed, d))), || format!("{d:.4?}"));
+        s.add(angle_deg(d, cart_encode::decode_consistent(cart_encode::encode(Encoder::Seed, d))), || {
+            format!("{d:.4?}")
+        });
     }
     rows.push(row("cart_encode", "degrees, seed encoder + consistent L1 = 254 decode", s));
     rows

@@ -66,7 +66,11 @@ pub fn header_vars(vcd: &str) -> Vec<Var> {
 
 /// The name GTKWave gives a VCD variable: a bus without a range in its reference gets `[bits−1:0]`.
 fn facility(v: &Var) -> String {
-    if v.bits > 1 { format!("{}[{}:0]", v.name(), v.bits - 1) } else { v.name() }
+    if v.bits > 1 {
+        format!("{}[{}:0]", v.name(), v.bits - 1)
+    } else {
+        v.name()
+    }
 }
 
 /// The stage of a register field name: `s7_p$0` → 7, `s6b_c$1` → 6.
@@ -151,7 +155,13 @@ pub fn save_file(vcd_name: &str, vars: &[Var], signed: &dyn Fn(&str) -> bool) ->
     let _ = writeln!(s, "[signals_width] 320");
     let _ = writeln!(s, "[sst_expanded] 1");
     let trace = |s: &mut String, v: &Var| {
-        let flags = if v.bits == 1 { RJUSTIFY | BIN } else if signed(&v.name()) { RJUSTIFY | DEC | SIGNED } else { RJUSTIFY | DEC };
+        let flags = if v.bits == 1 {
+            RJUSTIFY | BIN
+        } else if signed(&v.name()) {
+            RJUSTIFY | DEC | SIGNED
+        } else {
+            RJUSTIFY | DEC
+        };
         let _ = writeln!(s, "@{flags:x}\n{}", facility(v));
     };
     let group = |s: &mut String, title: &str, vs: &[Var], open: bool| {

@@ -159,7 +159,9 @@ pub fn load(path: &Path) -> Result<Loaded, String> {
         }
     };
     if depth == 16 {
-        notes.push(format!("{name}: 16-bit heights: the Cartesian and polar normals use all 16 bits, the height path stores 8"));
+        notes.push(format!(
+            "{name}: 16-bit heights: the Cartesian and polar normals use all 16 bits, the height path stores 8"
+        ));
     }
     let side = w.max(h).next_power_of_two().min(MAX_SIDE);
     let map = if w == side && h == side {
@@ -202,12 +204,17 @@ pub fn load_normal_map(path: &Path, green_down: bool) -> Result<LoadedNormals, S
         return Ok(LoadedNormals { map: crate::scene::NormalMap { side, n }, notes });
     }
     notes.push(format!("{name}: {w} × {h} resampled (bilinear, renormalised) to {side} × {side}: maps are square, 2^n texels up to {MAX_SIDE}"));
-    let comp: Vec<Vec<f64>> = (0..3).map(|c| resample(&n.iter().map(|v| v[c]).collect::<Vec<_>>(), w, h, side)).collect();
+    let comp: Vec<Vec<f64>> =
+        (0..3).map(|c| resample(&n.iter().map(|v| v[c]).collect::<Vec<_>>(), w, h, side)).collect();
     let out = (0..side * side)
         .map(|k| {
             let v = [comp[0][k], comp[1][k], comp[2][k]];
             let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-            if l < 1e-9 { [0.0, 1.0, 0.0] } else { v.map(|c| c / l) }
+            if l < 1e-9 {
+                [0.0, 1.0, 0.0]
+            } else {
+                v.map(|c| c / l)
+            }
         })
         .collect();
     Ok(LoadedNormals { map: crate::scene::NormalMap { side, n: out }, notes })
@@ -241,7 +248,8 @@ mod tests {
 
     #[test]
     fn a_16_bit_map_keeps_its_bits_and_a_colour_map_is_read_as_luma() {
-        let img = image::ImageBuffer::<image::Luma<u16>, _>::from_fn(2, 2, |x, _| image::Luma([(x * 40_000 + 7) as u16]));
+        let img =
+            image::ImageBuffer::<image::Luma<u16>, _>::from_fn(2, 2, |x, _| image::Luma([(x * 40_000 + 7) as u16]));
         let l = load(&write("g16.png", image::DynamicImage::ImageLuma16(img))).unwrap();
         assert_eq!(l.map.h[1], 40_007.0 / 65_535.0);
         assert!(l.notes.iter().any(|n| n.contains("16-bit")));
@@ -272,7 +280,13 @@ mod tests {
         std::fs::write(&cut, &good[..good.len() / 2]).unwrap();
         let one = image::GrayImage::new(1, 5);
         let thin = write("thin.png", one.into());
-        for (p, what) in [(&empty, "empty"), (&text, "not a PNG"), (&cut, "not a readable PNG"), (&thin, "at least 2 × 2"), (&dir.join("absent.png"), "cannot read")] {
+        for (p, what) in [
+            (&empty, "empty"),
+            (&text, "not a PNG"),
+            (&cut, "not a readable PNG"),
+            (&thin, "at least 2 × 2"),
+            (&dir.join("absent.png"), "cannot read"),
+        ] {
             let e = load(p).err().unwrap_or_else(|| panic!("{} loaded", p.display()));
             assert!(e.contains(&p.display().to_string()) && e.contains(what) && !e.contains('\n'), "{e}");
         }

@@ -13,7 +13,10 @@ use synth::fpga::{Fit, Part};
 use vectors::cart_encode::{self, Encoder};
 use vectors::cart_pipeline::{self, Decode};
 use vectors::polar_encode::{self, Scale};
-use vectors::{bilinear, blend, cart_surface, gloss, height_addr, height_pipeline, light_iter, palette_pipeline, polar_pipeline, UnitModel};
+use vectors::{
+    bilinear, blend, cart_surface, gloss, height_addr, height_pipeline, light_iter, palette_pipeline, polar_pipeline,
+    UnitModel,
+};
 
 /// The f64 ideal of one pixel.
 #[derive(Clone, Copy, Debug)]
@@ -45,7 +48,11 @@ impl Prepared {
 
     /// Pixel k's place in the frame.
     pub fn frame_index(&self, k: usize) -> usize {
-        if self.at.is_empty() { k } else { self.at[k] }
+        if self.at.is_empty() {
+            k
+        } else {
+            self.at[k]
+        }
     }
 
     /// For each place of the frame, the pixel there, if the surface covers it.
@@ -203,9 +210,13 @@ impl Pipeline for Cartesian {
     fn units(&self) -> &'static [&'static str] {
         match (self.decode, self.gloss) {
             (Decode::Seed, true) => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
-            (Decode::HemiOct, true) => &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"],
+            (Decode::HemiOct, true) => {
+                &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"]
+            }
             (Decode::Seed, false) => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
-            (Decode::HemiOct, false) => &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "blend"],
+            (Decode::HemiOct, false) => {
+                &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "blend"]
+            }
         }
     }
     fn describe(&self, scene: &Scene) -> String {
@@ -213,7 +224,8 @@ impl Pipeline for Cartesian {
             Decode::Seed => "seed-encoded texels",
             Decode::HemiOct => "hemi-octahedral texels",
         };
-        let gloss = if self.gloss { format!("gloss C = {}", scene.conc) } else { "matte (C = 0: no gloss unit)".into() };
+        let gloss =
+            if self.gloss { format!("gloss C = {}", scene.conc) } else { "matte (C = 0: no gloss unit)".into() };
         format!("{texels}, bilinear, lights interpolated per pixel, {gloss}")
     }
     /// The full pipeline's vectors; the matte one's are the same without C (a matte pipeline's scene has C = 0, so
@@ -303,8 +315,13 @@ impl Pipeline for CartSurface {
     fn label(&self) -> &'static str {
         // `Variant::ALL`'s order
         const LABELS: [&str; 8] = [
-            "Cartesian, one light", "Cartesian, one light, matte", "hemi-oct, one light", "hemi-oct, one light, matte",
-            "Cartesian, nearest, one light", "Cartesian, nearest, one light, matte", "hemi-oct, nearest, one light",
+            "Cartesian, one light",
+            "Cartesian, one light, matte",
+            "hemi-oct, one light",
+            "hemi-oct, one light, matte",
+            "Cartesian, nearest, one light",
+            "Cartesian, nearest, one light, matte",
+            "hemi-oct, nearest, one light",
             "hemi-oct, nearest, one light, matte",
         ];
         LABELS[cart_surface::Variant::ALL.iter().position(|v| *v == self.variant).unwrap_or(0)]
@@ -330,12 +347,24 @@ impl Pipeline for CartSurface {
         // [filter?] decode, normalise, dot3, [gloss], blend
         const ALL: [[[&[&str]; 2]; 2]; 2] = [
             [
-                [&["bilinear", "cart_decode", "normalise", "dot3", "blend"], &["bilinear", "cart_decode", "normalise", "dot3", "gloss", "blend"]],
-                [&["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "blend"], &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"]],
+                [
+                    &["bilinear", "cart_decode", "normalise", "dot3", "blend"],
+                    &["bilinear", "cart_decode", "normalise", "dot3", "gloss", "blend"],
+                ],
+                [
+                    &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "blend"],
+                    &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
+                ],
             ],
             [
-                [&["cart_decode", "normalise", "dot3", "blend"], &["cart_decode", "normalise", "dot3", "gloss", "blend"]],
-                [&["cart_decode_hemi_oct", "normalise", "dot3", "blend"], &["cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"]],
+                [
+                    &["cart_decode", "normalise", "dot3", "blend"],
+                    &["cart_decode", "normalise", "dot3", "gloss", "blend"],
+                ],
+                [
+                    &["cart_decode_hemi_oct", "normalise", "dot3", "blend"],
+                    &["cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
+                ],
             ],
         ];
         ALL[v.nearest as usize][(v.decode == Decode::HemiOct) as usize][v.gloss as usize]
@@ -360,7 +389,9 @@ impl Pipeline for CartSurface {
                     (x[ublend], x[vblend]) = (px.ub, px.vb);
                 }
                 // the texel nearest the sample: the corner the blend factors round to
-                cart_surface::Texels::Nearest(t) => (x[t[0]], x[t[1]]) = texel((px.ub >= 128) as usize + 2 * (px.vb >= 128) as usize),
+                cart_surface::Texels::Nearest(t) => {
+                    (x[t[0]], x[t[1]]) = texel((px.ub >= 128) as usize + 2 * (px.vb >= 128) as usize)
+                }
             }
             for (k, c) in at.light.iter().zip(cart_surface::light(light_iter::quantise_vertex(px.surface))) {
                 x[*k] = c;
@@ -425,7 +456,8 @@ impl Polar {
         for px in raster::pixels(scene, &normals) {
             p.at.push(px.at);
             // the pixel's surface's one light (the quad's is `light`; a curved surface's, its triangle's)
-            let light = if scene.curved.is_some() { polar_encode::encode_light(self.scale, px.surface, self.h) } else { light };
+            let light =
+                if scene.curved.is_some() { polar_encode::encode_light(self.scale, px.surface, self.h) } else { light };
             let c = px.corners.map(|(i, j)| codes[j * t + i]);
             let s = bilinear::exact_channel(c[0].0, c[1].0, c[2].0, c[3].0, px.ub, px.vb, bilinear::F);
             let r = bilinear::exact_channel(c[0].1, c[1].1, c[2].1, c[3].1, px.ub, px.vb, bilinear::F);
@@ -433,7 +465,8 @@ impl Polar {
             straddles.push(rmax - rmin > 128);
             let mut x = vec![0; polar_pipeline::INPUTS.len()];
             (x[input::s], x[input::r], x[input::q]) = (s, r, light.q);
-            (x[input::k1], x[input::k2], x[input::k3], x[input::pw], x[input::mode]) = (light.k1, light.k2, light.k3, self.pw, 1);
+            (x[input::k1], x[input::k2], x[input::k3], x[input::pw], x[input::mode]) =
+                (light.k1, light.k2, light.k3, self.pw, 1);
             (x[input::src_r], x[input::src_g], x[input::src_b]) = (scene.src[0], scene.src[1], scene.src[2]);
             (x[input::dst_r], x[input::dst_g], x[input::dst_b]) = (scene.dst[0], scene.dst[1], scene.dst[2]);
             p.inputs.push(x);
@@ -469,7 +502,13 @@ impl Pipeline for Polar {
         let l = polar_encode::encode_light(self.scale, scene.light_dir(0.5, 0.5), self.h);
         format!(
             "({}): S, R bilinear as numbers, one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
-            self.scale.name(), l.t.to_degrees(), l.q, l.k1, l.k2, l.k3, self.pw as f64 / 4.0
+            self.scale.name(),
+            l.t.to_degrees(),
+            l.q,
+            l.k1,
+            l.k2,
+            l.k3,
+            self.pw as f64 / 4.0
         )
     }
     fn prepare(&self, scene: &Scene) -> Prepared {
@@ -514,7 +553,9 @@ impl Height {
     /// The scene's true heights at the texel centres (row-major), in texels.
     pub fn heights(scene: &Scene) -> Vec<f64> {
         let t = scene.tex;
-        (0..t * t).map(|k| scene.height_at(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64)).collect()
+        (0..t * t)
+            .map(|k| scene.height_at(((k % t) as f64 + 0.5) / t as f64, ((k / t) as f64 + 0.5) / t as f64))
+            .collect()
     }
 
     /// The 8-bit heights of the scene's map (row-major, one per texel) and the scale factor (UQ4.4) that brings
@@ -563,7 +604,10 @@ impl Pipeline for Height {
     }
     fn describe(&self, scene: &Scene) -> String {
         let (_, k) = Height::codes_in(scene, self.bits);
-        format!("{}-bit heights (k = {k}/16), B-spline normals on the bilinear units, one light per surface, N·L", self.bits)
+        format!(
+            "{}-bit heights (k = {k}/16), B-spline normals on the bilinear units, one light per surface, N·L",
+            self.bits
+        )
     }
     fn prepare(&self, scene: &Scene) -> Prepared {
         let t = scene.tex;
@@ -584,7 +628,8 @@ impl Pipeline for Height {
                 let (xt, zt) = (i as f64 + ub as f64 / 256.0, j as f64 + vb as f64 / 256.0);
                 let e = 1e-3;
                 let hf = |x: f64, z: f64| scene.height_at(x / t as f64, z / t as f64);
-                let (gx, gz) = ((hf(xt + e, zt) - hf(xt - e, zt)) / (2.0 * e), (hf(xt, zt + e) - hf(xt, zt - e)) / (2.0 * e));
+                let (gx, gz) =
+                    ((hf(xt + e, zt) - hf(xt - e, zt)) / (2.0 * e), (hf(xt, zt + e) - hf(xt, zt - e)) / (2.0 * e));
                 let l = (gx * gx + 1.0 + gz * gz).sqrt();
                 let nrm = [-gx / l, 1.0 / l, -gz / l];
                 let shade = self.shade_of(nrm);
@@ -664,14 +709,26 @@ impl Palette {
 
 impl Pipeline for Palette {
     fn label(&self) -> &'static str {
-        if self.s_n <= 256 { "palette 256" } else { "palette 4096" }
+        if self.s_n <= 256 {
+            "palette 256"
+        } else {
+            "palette 4096"
+        }
     }
     fn model(&self) -> &'static UnitModel {
-        if self.s_n <= 256 { &palette_pipeline::MODEL } else { &palette_pipeline::MODEL_12 }
+        if self.s_n <= 256 {
+            &palette_pipeline::MODEL
+        } else {
+            &palette_pipeline::MODEL_12
+        }
     }
     fn rtl(&self) -> &'static dyn RtlPaths {
         use rtl::palette_pipeline::PalettePipeline;
-        if self.s_n <= 256 { &Rtl::<PalettePipeline<8, 9>>::PATHS } else { &Rtl::<PalettePipeline<12, 13>>::PATHS }
+        if self.s_n <= 256 {
+            &Rtl::<PalettePipeline<8, 9>>::PATHS
+        } else {
+            &Rtl::<PalettePipeline<12, 13>>::PATHS
+        }
     }
     fn units(&self) -> &'static [&'static str] {
         &["normalise", "dot3", "gloss", "palette_lookup"]
@@ -684,7 +741,10 @@ impl Pipeline for Palette {
             ),
             None => format!("up to {} normals", self.s_n),
         };
-        format!("s_N = {}: {what}; nearest texel; the table built a frame, one light per surface, gloss C = {}", self.s_n, scene.conc)
+        format!(
+            "s_N = {}: {what}; nearest texel; the table built a frame, one light per surface, gloss C = {}",
+            self.s_n, scene.conc
+        )
     }
     fn prepare(&self, scene: &Scene) -> Prepared {
         use palette_pipeline::input;
@@ -695,7 +755,8 @@ impl Pipeline for Palette {
         let quantize_s = clock.elapsed().as_secs_f64();
         let error = vectors::palette::quantize::angular_error(&normals, &q.index, &q.palette);
         // the palette as the table RAM's builder takes it: S10 (Sq9.0), rounded
-        let codes: Vec<[i64; 3]> = q.palette.iter().map(|n| n.map(|c| ((c * 511.0).round() as i64).clamp(-512, 511))).collect();
+        let codes: Vec<[i64; 3]> =
+            q.palette.iter().map(|n| n.map(|c| ((c * 511.0).round() as i64).clamp(-512, 511))).collect();
         let l = vectors::table_builder::sq1_10(scene.light_dir(0.5, 0.5));
         let mut p = Prepared::new(scene.size);
         for (e, &n) in codes.iter().enumerate() {
@@ -730,7 +791,9 @@ impl Pipeline for Palette {
     }
     fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
         let b = self.built()?;
-        Some(vectors::normalise::exact(b.codes[input[palette_pipeline::input::idx] as usize]).map(|c| c as f64 / 1024.0))
+        Some(
+            vectors::normalise::exact(b.codes[input[palette_pipeline::input::idx] as usize]).map(|c| c as f64 / 1024.0),
+        )
     }
     fn surface_ideal(&self, scene: &Scene, ideal: &Ideal) -> Option<f64> {
         let (n, l) = (ideal.normal, scene.light_dir(0.5, 0.5));
@@ -779,7 +842,10 @@ mod tests {
             let has = |u: &str| p.units().contains(&u);
             assert_eq!(has("gloss"), variant.gloss, "{variant:?}");
             assert_eq!(has("bilinear"), !variant.nearest, "{variant:?}");
-            assert_eq!((has("cart_decode_hemi_oct"), has("cart_decode")), (variant.decode == Decode::HemiOct, variant.decode == Decode::Seed));
+            assert_eq!(
+                (has("cart_decode_hemi_oct"), has("cart_decode")),
+                (variant.decode == Decode::HemiOct, variant.decode == Decode::Seed)
+            );
             assert!(!has("light_iter") && p.units().iter().filter(|u| **u == "normalise").count() == 1, "{variant:?}");
             labels.insert(p.label());
         }
@@ -794,7 +860,10 @@ mod tests {
             let scene = Scene { size: 24, conc: 0, ..Scene::default() };
             let (m, g) = (Cartesian { decode, gloss: false }, Cartesian::glossy(decode));
             assert!(!m.units().contains(&"gloss") && g.units().contains(&"gloss"));
-            assert_eq!(m.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>(), g.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>());
+            assert_eq!(
+                m.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>(),
+                g.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>()
+            );
             let (pm, pg) = (m.prepare(&scene), g.prepare(&scene));
             assert_eq!(pm.pixels().len(), pg.pixels().len());
             assert!(!pm.pixels().is_empty());

@@ -55,7 +55,8 @@ fn filtered(normals: &[[f64; 3]], t: usize, corners: [(usize, usize); 4], ub: i6
     let nn = |(i, j): (usize, usize)| normals[j * t + i];
     let mut nrm = [0.0; 3];
     for c in 0..3 {
-        nrm[c] = (1.0 - fv) * ((1.0 - fu) * nn(corners[0])[c] + fu * nn(corners[1])[c]) + fv * ((1.0 - fu) * nn(corners[2])[c] + fu * nn(corners[3])[c]);
+        nrm[c] = (1.0 - fv) * ((1.0 - fu) * nn(corners[0])[c] + fu * nn(corners[1])[c])
+            + fv * ((1.0 - fu) * nn(corners[2])[c] + fu * nn(corners[3])[c]);
     }
     surface::unit(nrm)
 }
@@ -107,7 +108,12 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
     let centre: Vec<[f64; 3]> = mesh
         .tris
         .iter()
-        .map(|tri| light_at(tri.iter().map(|&i| mesh.uv[i][0]).sum::<f64>() / 3.0, tri.iter().map(|&i| mesh.uv[i][1]).sum::<f64>() / 3.0))
+        .map(|tri| {
+            light_at(
+                tri.iter().map(|&i| mesh.uv[i][0]).sum::<f64>() / 3.0,
+                tri.iter().map(|&i| mesh.uv[i][1]).sum::<f64>() / 3.0,
+            )
+        })
         .collect();
     let mut lights = Vec::with_capacity(mesh.tris.len() * 3);
     for (tri, &own) in mesh.tris.iter().zip(&centre) {
@@ -142,7 +148,18 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
         let (w1, w2) = (cv.bary[1], cv.bary[2]);
         let normal = filtered(normals, t, corners, ub, vb);
         let light = interpolated([lights[k], lights[k + 1], lights[k + 2]], w1, w2);
-        out.push(Pixel { corners, ub, vb, tri: [k, k + 1, k + 2], w1, w2, normal, light, at: cv.at, surface: centre[cv.tri] });
+        out.push(Pixel {
+            corners,
+            ub,
+            vb,
+            tri: [k, k + 1, k + 2],
+            w1,
+            w2,
+            normal,
+            light,
+            at: cv.at,
+            surface: centre[cv.tri],
+        });
     }
     Frame { pixels: out, lights }
 }

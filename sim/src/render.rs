@@ -3,10 +3,10 @@
 //! A frame's inputs may begin with a prologue (`Prepared::prologue`: vectors that set up the block's state, a
 //! palette's colour table): every path runs it first and leaves its outputs out of the image.
 
+use crate::pipeline::Prepared;
 use rtl::stream::Runner;
 use rtl::StreamUnit;
 use std::path::Path;
-use crate::pipeline::Prepared;
 use std::time::Instant;
 use synth::cosim::{self, Simulator};
 use vectors::UnitModel;
@@ -83,7 +83,12 @@ pub struct VerilatorRun {
 /// The bare loop's speed on the same build is measured in the same call. Each of the three is run `RUNS` times
 /// and its fastest run kept, so that none of them pays alone for a cold cache; the times count the runs (the
 /// inputs' encoding, the simulation, the outputs into the image), not the build.
-pub fn verilator<U: StreamUnit>(m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
+pub fn verilator<U: StreamUnit>(
+    m: &UnitModel,
+    p: &Prepared,
+    dir: &Path,
+    threads: usize,
+) -> Result<VerilatorRun, String> {
     const RUNS: usize = 3;
     let built = cosim::build::<U>(Simulator::Verilator, dir)?;
     let slots = patterns(m, &p.inputs);
@@ -166,7 +171,12 @@ pub fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
 }
 
 /// The model's frame against the ideal.
-pub fn errors(pipe: &dyn crate::pipeline::Pipeline, scene: &crate::scene::Scene, prep: &Prepared, model: &Image) -> Errors {
+pub fn errors(
+    pipe: &dyn crate::pipeline::Pipeline,
+    scene: &crate::scene::Scene,
+    prep: &Prepared,
+    model: &Image,
+) -> Errors {
     use vectors::stats::{angle_deg, ErrorStats};
     let place = pixel_at(prep.size);
     let where_ = |k: usize| place(prep.frame_index(k));

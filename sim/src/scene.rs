@@ -74,7 +74,11 @@ impl Default for Scene {
 pub fn height(u: f64, v: f64) -> f64 {
     let bump = |cu: f64, cv: f64, r: f64, h: f64| {
         let d2 = ((u - cu).powi(2) + (v - cv).powi(2)) / (r * r);
-        if d2 < 1.0 { h * (1.0 - d2).powi(2) } else { 0.0 }
+        if d2 < 1.0 {
+            h * (1.0 - d2).powi(2)
+        } else {
+            0.0
+        }
     };
     let mut z = bump(0.25, 0.3, 0.14, 1.0) + bump(0.7, 0.25, 0.1, 0.8) + bump(0.45, 0.55, 0.06, 0.6);
     // a ridge along a diagonal line
@@ -113,7 +117,9 @@ impl Scene {
     pub fn light_from(&self, p: [f64; 3]) -> [f64; 3] {
         match self.directional {
             Some(d) => d,
-            None => crate::surface::unit([self.light_pos[0] - p[0], self.light_pos[1] - p[1], self.light_pos[2] - p[2]]),
+            None => {
+                crate::surface::unit([self.light_pos[0] - p[0], self.light_pos[1] - p[1], self.light_pos[2] - p[2]])
+            }
         }
     }
 

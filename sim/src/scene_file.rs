@@ -238,8 +238,6 @@ pair!(
     /// The map's repeats along u and v round a curved surface.
     Repeat, 1, 64, "the repeats");
 
-
-
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
 #[serde(rename_all = "snake_case")]
 pub enum Source {
@@ -360,11 +358,18 @@ pub struct SceneFile {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PipelineKind {
     /// lights per vertex, interpolated per pixel; with the gloss unit unless C = 0
-    Cartesian { decode: Decode, gloss: bool },
+    Cartesian {
+        decode: Decode,
+        gloss: bool,
+    },
     /// one light per surface: `cart_surface` and its variants (no gloss unit at C = 0, bilinear or nearest)
     CartSurface(vectors::cart_surface::Variant),
     /// the angle scale, the power unit's pw = 4p, and the weight h
-    Polar { scale: Scale, pw: i64, h: f64 },
+    Polar {
+        scale: Scale,
+        pw: i64,
+        h: f64,
+    },
     Height,
     /// s_N
     Palette(usize),
@@ -420,7 +425,8 @@ pub fn parse(text: &str, file: &str, dir: &Path) -> Result<SceneSpec, String> {
 pub fn load(path: &Path) -> Result<SceneSpec, String> {
     let name = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the scene: {e}"))?;
-    let text = String::from_utf8(bytes).map_err(|e| format!("{name}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))?;
+    let text = String::from_utf8(bytes)
+        .map_err(|e| format!("{name}: not UTF-8 text (byte {})", e.utf8_error().valid_up_to()))?;
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     parse(&text, &name, &dir)
 }
@@ -448,13 +454,19 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     if source != Source::NormalMap {
         unused(bump.green.as_ref().map(|g| g.span()), "[bump] green: only a normal map has a green convention")?;
     } else {
-        unused(bump.relief.as_ref().map(|r| r.span()), "[bump] relief: a normal map's slopes are its own (relief is for heights)")?;
+        unused(
+            bump.relief.as_ref().map(|r| r.span()),
+            "[bump] relief: a normal map's slopes are its own (relief is for heights)",
+        )?;
     }
     if source != Source::Procedural {
         unused(bump.texels.as_ref().map(|t| t.span()), "[bump] texels: a map read from a file has its own size")?;
     }
     if encoding != Encoding::Palette {
-        unused(bump.palette.as_ref().map(|p| p.span()), "[bump] palette: only encoding = \"palette\" has a palette size")?;
+        unused(
+            bump.palette.as_ref().map(|p| p.span()),
+            "[bump] palette: only encoding = \"palette\" has a palette size",
+        )?;
     }
     let mut scene = Scene { size: f.size.0 as usize, ..Scene::default() };
     match source {
@@ -468,7 +480,13 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
         }
         Source::HeightMap | Source::NormalMap => {
             let Some(p) = &bump.path else {
-                return Err(at.err(bump_span, format!("[bump] a {} needs path = \"FILE.png\"", if source == Source::HeightMap { "height map" } else { "normal map" })));
+                return Err(at.err(
+                    bump_span,
+                    format!(
+                        "[bump] a {} needs path = \"FILE.png\"",
+                        if source == Source::HeightMap { "height map" } else { "normal map" }
+                    ),
+                ));
             };
             let file = dir.join(p.get_ref());
             let map_err = |e: String| at.err(p.span(), format!("[bump] path: {e}"));
@@ -502,15 +520,23 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     let kind = light.kind.as_ref().map_or(LightKind::Point, |k| *k.get_ref());
     match kind {
         LightKind::Point => {
-            unused(light.direction.as_ref().map(|d| d.span()), "[light] direction: a point light has a position (kind = \"directional\" has a direction)")?;
+            unused(
+                light.direction.as_ref().map(|d| d.span()),
+                "[light] direction: a point light has a position (kind = \"directional\" has a direction)",
+            )?;
             if let Some(p) = &light.position {
                 scene.light_pos = p.get_ref().0;
             }
         }
         LightKind::Directional => {
-            unused(light.position.as_ref().map(|p| p.span()), "[light] position: a directional light has a direction (kind = \"point\" has a position)")?;
+            unused(
+                light.position.as_ref().map(|p| p.span()),
+                "[light] position: a directional light has a direction (kind = \"point\" has a position)",
+            )?;
             let Some(d) = &light.direction else {
-                return Err(at.err(light_span, "[light] a directional light needs direction = [x, y, z] (towards the light)"));
+                return Err(
+                    at.err(light_span, "[light] a directional light needs direction = [x, y, z] (towards the light)")
+                );
             };
             scene.directional = Some(d.get_ref().0);
         }
@@ -518,7 +544,10 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     // the surface
     let surf = &f.surface;
     if surf.shape == Shape::Quad {
-        unused(surf.segments.as_ref().map(|x| x.span()), "[surface] segments: the quad is two triangles (segments are for a sphere or a torus)")?;
+        unused(
+            surf.segments.as_ref().map(|x| x.span()),
+            "[surface] segments: the quad is two triangles (segments are for a sphere or a torus)",
+        )?;
         unused(surf.repeat.as_ref().map(|x| x.span()), "[surface] repeat: the quad holds the map once")?;
         unused(surf.tilt.as_ref().map(|x| x.span()), "[surface] tilt: the quad fills the screen (no camera)")?;
         unused(surf.spin.as_ref().map(|x| x.span()), "[surface] spin: the quad fills the screen (no camera)")?;
@@ -545,10 +574,19 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
         if kind == LightKind::Point && light.position.is_none() {
             scene.light_pos = DEFAULT_WORLD_LIGHT;
         }
-        let quad_only = |what: &str| at.err(bump.encoding.as_ref().map_or(bump_span.clone(), |e| e.span()), format!(
-            "[bump] encoding = \"{what}\": its pipeline renders the quad only ({}); shape = \"quad\"",
-            if what == "palette" { "its colour table holds one light direction a frame, a flat surface's" } else { "its address unit walks one flat map" }
-        ));
+        let quad_only = |what: &str| {
+            at.err(
+                bump.encoding.as_ref().map_or(bump_span.clone(), |e| e.span()),
+                format!(
+                    "[bump] encoding = \"{what}\": its pipeline renders the quad only ({}); shape = \"quad\"",
+                    if what == "palette" {
+                        "its colour table holds one light direction a frame, a flat surface's"
+                    } else {
+                        "its address unit walks one flat map"
+                    }
+                ),
+            )
+        };
         match encoding {
             Encoding::Palette => return Err(quad_only("palette")),
             Encoding::Heights => return Err(quad_only("heights")),
@@ -561,17 +599,27 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     // the pipeline, and what it can take
     let one_light = |name: &str| -> Result<(), String> {
         match (per, &per_span) {
-            (Some(Per::Vertex), Some(s)) => Err(at.err(s.clone(), format!("[light] per = \"vertex\": the {name} pipeline lights a surface with one light (per = \"surface\")"))),
+            (Some(Per::Vertex), Some(s)) => Err(at.err(
+                s.clone(),
+                format!(
+                    "[light] per = \"vertex\": the {name} pipeline lights a surface with one light (per = \"surface\")"
+                ),
+            )),
             _ => Ok(()),
         }
     };
-    let no = |field: Option<Range<usize>>, what: &str, name: &str| unused(field, &format!("[material] {what}: the {name} pipeline has no {what}"));
+    let no = |field: Option<Range<usize>>, what: &str, name: &str| {
+        unused(field, &format!("[material] {what}: the {name} pipeline has no {what}"))
+    };
     let gloss = mat.gloss.as_ref().map(|g| g.span());
     let (power, weight) = (mat.power.as_ref().map(|p| p.span()), mat.weight.as_ref().map(|w| w.span()));
     let nearest = bump.filter.as_ref().is_some_and(|f| *f.get_ref() == Filter::Nearest);
     let filter_span = bump.filter.as_ref().map(|f| f.span());
     if nearest && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
-        return Err(at.err(filter_span.clone().unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": only the Cartesian encodings (seed, hemi_oct) have a nearest-texel pipeline"));
+        return Err(at.err(
+            filter_span.clone().unwrap_or(bump_span.clone()),
+            "[bump] filter = \"nearest\": only the Cartesian encodings (seed, hemi_oct) have a nearest-texel pipeline",
+        ));
     }
     let pipeline = match encoding {
         Encoding::Seed | Encoding::HemiOct => {

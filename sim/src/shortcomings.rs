@@ -45,13 +45,27 @@ impl Shortcomings {
         let pw_real = polar.pw as f64 / 4.0;
         let ideal = &setup.prepared.ideal;
         let surface_ideal: Vec<f64> = (0..n)
-            .map(|k| 255.0 * ((1.0 - polar.h) + polar.h * dot(ideal[k].normal, setup.surface_dir)).clamp(0.0, 1.0).powf(pw_real))
+            .map(|k| {
+                255.0
+                    * ((1.0 - polar.h) + polar.h * dot(ideal[k].normal, setup.surface_dir))
+                        .clamp(0.0, 1.0)
+                        .powf(pw_real)
+            })
             .collect();
         let mut s = Shortcomings {
-            surface: ErrorStats::default(), own: ErrorStats::default(), surface_ideal, wrap: ErrorStats::default(),
-            rest: ErrorStats::default(), wrap_cartesian: ErrorStats::default(), low_cartesian: ErrorStats::default(),
-            low_polar: ErrorStats::default(), low_below_deg: 0.0, low_moved: false, low_ideal: vec![0.0; n],
-            low_cx: vec![0.0; n], low_px: vec![0.0; n],
+            surface: ErrorStats::default(),
+            own: ErrorStats::default(),
+            surface_ideal,
+            wrap: ErrorStats::default(),
+            rest: ErrorStats::default(),
+            wrap_cartesian: ErrorStats::default(),
+            low_cartesian: ErrorStats::default(),
+            low_polar: ErrorStats::default(),
+            low_below_deg: 0.0,
+            low_moved: false,
+            low_ideal: vec![0.0; n],
+            low_cx: vec![0.0; n],
+            low_px: vec![0.0; n],
         };
         for k in 0..n {
             let a = polar.shade(&polar_model.outs[k]);

@@ -18,7 +18,9 @@ use std::f64::consts::{PI, TAU};
 pub enum Shape {
     Sphere,
     /// the tube's radius (the outer radius is 1)
-    Torus { minor: f64 },
+    Torus {
+        minor: f64,
+    },
 }
 
 /// A tangent frame: T along +u, N out of the surface, B = T × N along +v (unit vectors).
@@ -163,8 +165,14 @@ pub fn rasterise(mesh: &Mesh, view: View, size: usize) -> Vec<Cover> {
         if area.abs() < 1e-12 {
             continue; // degenerate (a pole's sliver)
         }
-        let (x0, x1) = (a[0].min(b[0]).min(c[0]).floor().max(0.0) as usize, a[0].max(b[0]).max(c[0]).ceil().min(size as f64) as usize);
-        let (y0, y1) = (a[1].min(b[1]).min(c[1]).floor().max(0.0) as usize, a[1].max(b[1]).max(c[1]).ceil().min(size as f64) as usize);
+        let (x0, x1) = (
+            a[0].min(b[0]).min(c[0]).floor().max(0.0) as usize,
+            a[0].max(b[0]).max(c[0]).ceil().min(size as f64) as usize,
+        );
+        let (y0, y1) = (
+            a[1].min(b[1]).min(c[1]).floor().max(0.0) as usize,
+            a[1].max(b[1]).max(c[1]).ceil().min(size as f64) as usize,
+        );
         for y in y0..y1 {
             for x in x0..x1 {
                 let (fx, fy) = (x as f64 + 0.5, y as f64 + 0.5);
@@ -183,10 +191,7 @@ pub fn rasterise(mesh: &Mesh, view: View, size: usize) -> Vec<Cover> {
             }
         }
     }
-    hit.iter()
-        .enumerate()
-        .filter_map(|(at, h)| h.map(|(tri, bary)| Cover { at, tri, bary }))
-        .collect()
+    hit.iter().enumerate().filter_map(|(at, h)| h.map(|(tri, bary)| Cover { at, tri, bary })).collect()
 }
 
 #[cfg(test)]
@@ -211,8 +216,16 @@ mod tests {
                 let p = s.point(u, v);
                 let du = s.point(u + e, v);
                 let dv = s.point(u, v + e);
-                let (pu, pv) = (unit([du[0] - p[0], du[1] - p[1], du[2] - p[2]]), unit([dv[0] - p[0], dv[1] - p[1], dv[2] - p[2]]));
-                assert!(dot(pu, f.t) > 0.999 && dot(pv, f.b) > 0.999, "{s:?} at ({u}, {v}): {:?} {:?}", dot(pu, f.t), dot(pv, f.b));
+                let (pu, pv) = (
+                    unit([du[0] - p[0], du[1] - p[1], du[2] - p[2]]),
+                    unit([dv[0] - p[0], dv[1] - p[1], dv[2] - p[2]]),
+                );
+                assert!(
+                    dot(pu, f.t) > 0.999 && dot(pv, f.b) > 0.999,
+                    "{s:?} at ({u}, {v}): {:?} {:?}",
+                    dot(pu, f.t),
+                    dot(pv, f.b)
+                );
                 assert!(dot(f.n, pu).abs() < 1e-5 && dot(f.n, pv).abs() < 1e-5);
                 // outwards: away from the centre (sphere), away from the tube's centre line (torus)
                 let centre = match s {

@@ -14,7 +14,9 @@ pub const FIG8_LIGHT: [f64; 3] = [0.77, 0.5, 0.4];
 /// The demo's procedural heights on a coarse map: the codes (8-bit) and scale, and the same heights in reals.
 pub fn fig8_map(relief: f64) -> (Vec<i64>, i64, Vec<f64>) {
     let n = FIG8_TEXELS;
-    let h: Vec<f64> = (0..n * n).map(|k| crate::scene::height(((k % n) as f64 + 0.5) / n as f64, ((k / n) as f64 + 0.5) / n as f64) * relief).collect();
+    let h: Vec<f64> = (0..n * n)
+        .map(|k| crate::scene::height(((k % n) as f64 + 0.5) / n as f64, ((k / n) as f64 + 0.5) / n as f64) * relief)
+        .collect();
     let (lo, hi) = h.iter().fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
     let (codes, k) = vectors::height_normal::encode_heights(&h, lo, hi);
     let m = 16.0 / k as f64;
@@ -44,7 +46,11 @@ pub fn fig8(size: usize, relief: f64) -> Fig8 {
             })
             .collect()
     };
-    Fig8 { blinn: shade(Filter::Blinn), bspline: shade(Filter::BSpline), jumps: filters::fig8(&Grid { side: n, h: &real }, k as f64, light, 1e-4) }
+    Fig8 {
+        blinn: shade(Filter::Blinn),
+        bspline: shade(Filter::BSpline),
+        jumps: filters::fig8(&Grid { side: n, h: &real }, k as f64, light, 1e-4),
+    }
 }
 
 /// The colour texture's side, texels.
@@ -78,14 +84,22 @@ pub struct Colour {
 pub fn colour(size: usize) -> Colour {
     let n = COLOUR_TEXELS;
     let tex: Vec<[i64; 4]> = (0..n * n)
-        .map(|q| colour_reference(((q % n) as f64 + 0.5) / n as f64, ((q / n) as f64 + 0.5) / n as f64).map(|c| c.round().clamp(0.0, 255.0) as i64))
+        .map(|q| {
+            colour_reference(((q % n) as f64 + 0.5) / n as f64, ((q / n) as f64 + 0.5) / n as f64)
+                .map(|c| c.round().clamp(0.0, 255.0) as i64)
+        })
         .collect();
     let channel = |c: usize| -> Vec<i64> { tex.iter().map(|t| t[c]).collect() };
     let chans: Vec<Vec<i64>> = (0..3).map(channel).collect();
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;
     let mut out = Colour {
-        reference: vec![], bilinear: vec![], bspline: vec![], bilinear_vs_reference: ErrorStats::default(),
-        bspline_vs_reference: ErrorStats::default(), bilinear_vs_own: ErrorStats::default(), bspline_vs_own: ErrorStats::default(),
+        reference: vec![],
+        bilinear: vec![],
+        bspline: vec![],
+        bilinear_vs_reference: ErrorStats::default(),
+        bspline_vs_reference: ErrorStats::default(),
+        bilinear_vs_own: ErrorStats::default(),
+        bspline_vs_own: ErrorStats::default(),
     };
     for p in 0..size * size {
         let (x, z) = ((p % size) as f64 + 0.5, (p / size) as f64 + 0.5);
@@ -100,7 +114,14 @@ pub fn colour(size: usize) -> Colour {
             let (i0, fu, j0, fv) = (ci >> 8, ci & 255, cj >> 8, cj & 255);
             let t = [g.at(i0, j0), g.at(i0 + 1, j0), g.at(i0, j0 + 1), g.at(i0 + 1, j0 + 1)];
             let e = vectors::bilinear::exact_channel(t[0], t[1], t[2], t[3], fu, fv, vectors::bilinear::F);
-            let own = vectors::bilinear::ideal_channel(t[0] as f64, t[1] as f64, t[2] as f64, t[3] as f64, fu as f64 / 256.0, fv as f64 / 256.0);
+            let own = vectors::bilinear::ideal_channel(
+                t[0] as f64,
+                t[1] as f64,
+                t[2] as f64,
+                t[3] as f64,
+                fu as f64 / 256.0,
+                fv as f64 / 256.0,
+            );
             let at = || format!("pixel ({}, {}), channel {c}", p % size, p / size);
             out.bilinear_vs_reference.add((e as f64 - reference[c]).abs(), at);
             out.bilinear_vs_own.add((e as f64 - own).abs(), at);
@@ -108,7 +129,11 @@ pub fn colour(size: usize) -> Colour {
             // the B-spline: the window around (i, j), the factors as they are
             let w = g.window(cu >> 8, cv >> 8);
             let s = filters::bspline_colour_exact(&w, cu & 255, cv & 255);
-            let (own, ..) = vectors::height_pipeline::bspline(&w.map(|x| x as f64), (cu & 255) as f64 / 256.0, (cv & 255) as f64 / 256.0);
+            let (own, ..) = vectors::height_pipeline::bspline(
+                &w.map(|x| x as f64),
+                (cu & 255) as f64 / 256.0,
+                (cv & 255) as f64 / 256.0,
+            );
             out.bspline_vs_reference.add((s as f64 - reference[c]).abs(), at);
             out.bspline_vs_own.add((s as f64 - own).abs(), at);
             bs[c] = s as u8;
@@ -129,7 +154,7 @@ mod tests {
         let c = colour(64);
         assert!(c.bilinear_vs_own.max <= 0.5 + 1e-9, "{}", c.bilinear_vs_own.max);
         assert!(c.bspline_vs_own.max <= 0.5 + 1.0 / 64.0, "{}", c.bspline_vs_own.max); // the height's own floors, then a rounding
-        // against the picture sampled, both err by a few LSB: the texture is coarse
+                                                                                       // against the picture sampled, both err by a few LSB: the texture is coarse
         assert!(c.bilinear_vs_reference.mean() < 8.0 && c.bspline_vs_reference.mean() < 12.0);
     }
 

@@ -23,7 +23,11 @@ pub fn write_vcd<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], path: &P
 }
 
 /// Trace `inputs` through the unit into any writer (standard output, say); Err when a write failed.
-pub fn trace<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], w: Box<dyn std::io::Write>) -> std::io::Result<Vec<Vec<u64>>> {
+pub fn trace<U: StreamUnit>(
+    model: &UnitModel,
+    inputs: &[Vec<i64>],
+    w: Box<dyn std::io::Write>,
+) -> std::io::Result<Vec<Vec<u64>>> {
     let mut r = Runner::<U>::with_vcd(Some(w));
     let slots = inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, model.inputs)));
     let got = r.run(slots);

@@ -16,10 +16,14 @@ const MEASURED: &[(&str, &str, f64, f64)] = &[
 
 #[test]
 fn every_encoder_keeps_its_measured_mean_and_max_angle_within_5_percent() {
-    let rows: Vec<_> = encoders(DIRECTIONS, ENCODER_SEED).into_iter().chain(polar_encoders(DIRECTIONS, ENCODER_SEED)).collect();
+    let rows: Vec<_> =
+        encoders(DIRECTIONS, ENCODER_SEED).into_iter().chain(polar_encoders(DIRECTIONS, ENCODER_SEED)).collect();
     assert_eq!(rows.len(), MEASURED.len(), "an encoder was added or removed: measure it and pin it here");
     for &(unit, metric, mean, max) in MEASURED {
-        let r = rows.iter().find(|r| r.unit == unit && r.metric == metric).unwrap_or_else(|| panic!("no row {unit}: {metric}"));
+        let r = rows
+            .iter()
+            .find(|r| r.unit == unit && r.metric == metric)
+            .unwrap_or_else(|| panic!("no row {unit}: {metric}"));
         let near = |got: f64, want: f64| (got - want).abs() <= 0.05 * want;
         assert!(near(r.stats.mean(), mean), "{unit} {metric}: mean {:.4}° against {mean}°", r.stats.mean());
         assert!(near(r.stats.max, max), "{unit} {metric}: max {:.4}° against {max}°", r.stats.max);

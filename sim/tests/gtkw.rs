@@ -53,10 +53,8 @@ fn a_pipelines_vcd_gets_a_save_file_gtkwave_can_follow() {
     assert_eq!(flag("uut.bump_norm.norm_x[11:0]") & 0x400, 0x400);
     assert_eq!(flag("uut.conc[7:0]"), 0x24);
     // the normaliser's registers in its stages, in order
-    let stages: Vec<u32> = groups
-        .iter()
-        .filter_map(|g| g.strip_prefix("uut.bump_norm stage ").map(|s| s.parse().unwrap()))
-        .collect();
+    let stages: Vec<u32> =
+        groups.iter().filter_map(|g| g.strip_prefix("uut.bump_norm stage ").map(|s| s.parse().unwrap())).collect();
     assert!(stages.len() >= 8 && stages.windows(2).all(|w| w[0] < w[1]), "{stages:?}");
     let at = |n: &str| traces.iter().position(|t| t.0 == n).unwrap_or_else(|| panic!("{n}"));
     assert!(at("uut.bump_norm.s3_s.q[19:0]") < at("uut.bump_norm.s7_p$0.q[22:0]"));

@@ -16,7 +16,11 @@ fn agree(p: &dyn Pipeline) {
     let prep = p.prepare(&scene());
     let model = sim::render::model(m, &prep);
     let hdl = rtl.rust_hdl(m, &prep, &|_| {});
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("bumprtl-scene-{}-{}", m.name, std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+        "bumprtl-scene-{}-{}",
+        m.name,
+        std::process::id()
+    ));
     let vl = rtl.verilator(m, &prep, &dir, 2).unwrap();
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(model.outs.len(), SIZE * SIZE);
@@ -97,7 +101,12 @@ fn the_palette_path_gets_closer_to_its_ideal_with_more_normals() {
         let p = Palette::new(s_n, &s);
         let prep = p.prepare(&s);
         let model = sim::render::model(p.model(), &prep);
-        let e: f64 = model.outs.iter().zip(&prep.ideal).map(|(o, i)| (p.shade(o) - p.surface_ideal(&s, i).unwrap()).abs()).sum::<f64>()
+        let e: f64 = model
+            .outs
+            .iter()
+            .zip(&prep.ideal)
+            .map(|(o, i)| (p.shade(o) - p.surface_ideal(&s, i).unwrap()).abs())
+            .sum::<f64>()
             / (SIZE * SIZE) as f64;
         let angle = p.built().unwrap().error.mean();
         assert!(e < last.0 && angle < last.1, "s_N {s_n}: shade {e:.3} LSB, {angle:.3}° after {last:?}");

@@ -36,7 +36,10 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     let quad = scene_file::load(&scenes_dir().join("quad.toml")).unwrap();
     let d = Scene::default();
     let s = &quad.scene;
-    assert_eq!((s.size, s.tex, s.light_pos, s.conc, s.src, s.dst, s.relief), (d.size, d.tex, d.light_pos, d.conc, d.src, d.dst, d.relief));
+    assert_eq!(
+        (s.size, s.tex, s.light_pos, s.conc, s.src, s.dst, s.relief),
+        (d.size, d.tex, d.light_pos, d.conc, d.src, d.dst, d.relief)
+    );
     assert_eq!(quad.pipeline, PipelineKind::Cartesian { decode: Decode::Seed, gloss: true });
     assert!(!quad.scene.per_surface && quad.scene.curved.is_none());
     let demo = scene_file::load(&scenes_dir().join("demo.toml")).unwrap();
@@ -54,14 +57,18 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     let c = torus.curved.expect("a torus");
     assert_eq!(c.shape, sim::surface::Shape::Torus { minor: 0.32 });
     assert_eq!((c.segments, c.repeat), ([72, 36], [6, 2]));
-    assert_eq!(kind("torus.toml"), PipelineKind::CartSurface(vectors::cart_surface::Variant { decode: Decode::Seed, nearest: false, gloss: true }));
+    assert_eq!(
+        kind("torus.toml"),
+        PipelineKind::CartSurface(vectors::cart_surface::Variant { decode: Decode::Seed, nearest: false, gloss: true })
+    );
     assert!(scene_file::load(&scenes_dir().join("sphere_polar.toml")).unwrap().scene.curved.is_some());
 }
 
 #[test]
 fn curved_surfaces_take_their_own_fields_and_only_the_pipelines_that_can_draw_them() {
     let base = "size = 64\n[bump]\nsource = \"procedural\"\n";
-    let with = |surface: &str, rest: &str| format!("size = 64\n[surface]\n{surface}[bump]\nsource = \"procedural\"\n{rest}");
+    let with =
+        |surface: &str, rest: &str| format!("size = 64\n[surface]\n{surface}[bump]\nsource = \"procedural\"\n{rest}");
     assert!(parse(base).unwrap().scene.curved.is_none());
     let s = parse(&with("shape = \"sphere\"\n", "")).unwrap().scene;
     assert_eq!(s.light_pos, scene_file::DEFAULT_WORLD_LIGHT, "a curved surface's default light is in the world");
@@ -71,8 +78,16 @@ fn curved_surfaces_take_their_own_fields_and_only_the_pipelines_that_can_draw_th
     refused(&with("shape = \"torus\"\nsegments = [2, 8]\n", ""), "s.toml:4:12:", &["3 to 512"]);
     refused(&with("shape = \"torus\"\nrepeat = [1]\n", ""), "s.toml:4:10:", &["two whole numbers"]);
     refused(&with("shape = \"torus\"\ntilt = nan\n", ""), "s.toml:4:8:", &["finite"]);
-    refused(&with("shape = \"torus\"\n", "encoding = \"palette\"\npalette = 16\n[light]\nper = \"surface\"\n"), "s.toml:6:12:", &["renders the quad only"]);
-    refused(&with("shape = \"sphere\"\n", "encoding = \"heights\"\n[light]\nper = \"surface\"\n"), "s.toml:6:12:", &["renders the quad only"]);
+    refused(
+        &with("shape = \"torus\"\n", "encoding = \"palette\"\npalette = 16\n[light]\nper = \"surface\"\n"),
+        "s.toml:6:12:",
+        &["renders the quad only"],
+    );
+    refused(
+        &with("shape = \"sphere\"\n", "encoding = \"heights\"\n[light]\nper = \"surface\"\n"),
+        "s.toml:6:12:",
+        &["renders the quad only"],
+    );
 }
 
 #[test]
@@ -93,20 +108,47 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     };
     let kind = |t: String| parse(&t).unwrap_or_else(|e| panic!("{e}")).pipeline;
     let v = |decode, nearest, gloss| PipelineKind::CartSurface(Variant { decode, nearest, gloss });
-    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 0\n")), PipelineKind::Cartesian { decode: Decode::Seed, gloss: false });
-    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 1\n")), PipelineKind::Cartesian { decode: Decode::Seed, gloss: true });
-    assert_eq!(kind(scene("hemi_oct", "", "vertex", "")), PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: true }, "the default gloss is 96");
-    assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: false });
+    assert_eq!(
+        kind(scene("seed", "", "vertex", "gloss = 0\n")),
+        PipelineKind::Cartesian { decode: Decode::Seed, gloss: false }
+    );
+    assert_eq!(
+        kind(scene("seed", "", "vertex", "gloss = 1\n")),
+        PipelineKind::Cartesian { decode: Decode::Seed, gloss: true }
+    );
+    assert_eq!(
+        kind(scene("hemi_oct", "", "vertex", "")),
+        PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: true },
+        "the default gloss is 96"
+    );
+    assert_eq!(
+        kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")),
+        PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: false }
+    );
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
     assert_eq!(kind(scene("seed", "", "surface", "")), v(Decode::Seed, false, true), "the default gloss is 96");
-    assert_eq!(kind(scene("hemi_oct", "filter = \"nearest\"\n", "surface", "gloss = 0\n")), v(Decode::HemiOct, true, false));
+    assert_eq!(
+        kind(scene("hemi_oct", "filter = \"nearest\"\n", "surface", "gloss = 0\n")),
+        v(Decode::HemiOct, true, false)
+    );
     assert_eq!(kind(scene("seed", "filter = \"bilinear\"\n", "surface", "gloss = 5\n")), v(Decode::Seed, false, true));
-    refused(&scene("seed", "filter = \"nearest\"\n", "vertex", ""), "s.toml:5:10:", &["one light", "per = \"surface\""]);
-    refused(&scene("polar", "filter = \"nearest\"\n", "surface", ""), "s.toml:5:10:", &["only the Cartesian encodings"]);
+    refused(
+        &scene("seed", "filter = \"nearest\"\n", "vertex", ""),
+        "s.toml:5:10:",
+        &["one light", "per = \"surface\""],
+    );
+    refused(
+        &scene("polar", "filter = \"nearest\"\n", "surface", ""),
+        "s.toml:5:10:",
+        &["only the Cartesian encodings"],
+    );
     refused(&scene("seed", "filter = \"cubic\"\n", "surface", ""), "s.toml:5:10:", &["bilinear", "nearest"]);
     assert_eq!(scene_file::load(&scenes_dir().join("up5k.toml")).unwrap().pipeline, v(Decode::Seed, true, false));
-    assert_eq!(scene_file::load(&scenes_dir().join("directional.toml")).unwrap().pipeline, v(Decode::Seed, false, false));
+    assert_eq!(
+        scene_file::load(&scenes_dir().join("directional.toml")).unwrap().pipeline,
+        v(Decode::Seed, false, false)
+    );
 }
 
 const GOOD: &str = "size = 64\n[bump]\nsource = \"procedural\"\ntexels = 16\n[light]\nposition = [0.5, 0.5, 0.5]\n";
@@ -132,9 +174,17 @@ fn bad_scene_text_is_one_line_at_its_line_and_column() {
     refused("size = 64\n[bump\nsource = \"procedural\"\n", "s.toml:2:", &[]);
     // unknown fields, at the top and in a table, and unknown choices
     refused(&format!("{GOOD}colour = 3\n"), "s.toml:", &["unknown field `colour`"]);
-    refused("size = 64\n[bump]\nsource = \"procedural\"\nrelif = 2\n", "s.toml:4:1:", &["unknown field `relif`", "relief"]);
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\nrelif = 2\n",
+        "s.toml:4:1:",
+        &["unknown field `relif`", "relief"],
+    );
     refused("size = 64\n[bump]\nsource = \"photo\"\n", "s.toml:3:10:", &["unknown variant `photo`", "height_map"]);
-    refused("size = 64\n[surface]\nshape = \"cube\"\n[bump]\nsource = \"procedural\"\n", "s.toml:3:9:", &["unknown variant `cube`"]);
+    refused(
+        "size = 64\n[surface]\nshape = \"cube\"\n[bump]\nsource = \"procedural\"\n",
+        "s.toml:3:9:",
+        &["unknown variant `cube`"],
+    );
     // missing fields
     refused("[bump]\nsource = \"procedural\"\n", "s.toml:", &["missing field `size`"]);
     // NaN, infinities, out-of-range numbers
@@ -147,15 +197,39 @@ fn bad_scene_text_is_one_line_at_its_line_and_column() {
     refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"polar\"\n[light]\nper = \"surface\"\n[material]\npower = 1.1\n", "s.toml:8:9:", &["multiple of 0.25"]);
     refused("size = 64\n[bump]\nsource = \"procedural\"\n[light]\nposition = [0, 1e400, 0]\n", "s.toml:5:", &[]);
     // a light of zero length
-    refused("size = 64\n[bump]\nsource = \"procedural\"\n[light]\nkind = \"directional\"\ndirection = [0, 0, 0]\n", "s.toml:6:13:", &["zero length"]);
-    refused("size = 64\n[bump]\nsource = \"procedural\"\n[light]\nkind = \"directional\"\n", "s.toml:", &["needs direction"]);
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\n[light]\nkind = \"directional\"\ndirection = [0, 0, 0]\n",
+        "s.toml:6:13:",
+        &["zero length"],
+    );
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\n[light]\nkind = \"directional\"\n",
+        "s.toml:",
+        &["needs direction"],
+    );
     // fields the other choices leave no use for
-    refused("size = 64\n[bump]\nsource = \"procedural\"\npath = \"a.png\"\n", "s.toml:4:8:", &["procedural map reads no file"]);
-    refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"polar\"\n[light]\nper = \"vertex\"\n", "s.toml:6:7:", &["one light"]);
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\npath = \"a.png\"\n",
+        "s.toml:4:8:",
+        &["procedural map reads no file"],
+    );
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"polar\"\n[light]\nper = \"vertex\"\n",
+        "s.toml:6:7:",
+        &["one light"],
+    );
     refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"heights\"\n[light]\nper = \"surface\"\n[material]\ngloss = 4\n", "s.toml:8:9:", &["no gloss"]);
     refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\n", "s.toml:", &["palette = s_N"]);
-    refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\npalette = 16\n[light]\nper = \"vertex\"\n", "s.toml:7:7:", &["palette pipeline lights a surface with one light"]);
-    refused("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\npalette = 5000\n", "s.toml:5:11:", &["1 to 4096"]);
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\npalette = 16\n[light]\nper = \"vertex\"\n",
+        "s.toml:7:7:",
+        &["palette pipeline lights a surface with one light"],
+    );
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\npalette = 5000\n",
+        "s.toml:5:11:",
+        &["1 to 4096"],
+    );
 }
 
 /// A PNG written under the test folder.
@@ -237,14 +311,93 @@ impl Lcg {
 
 /// Tokens a corrupted scene is made of: the format's own words, numbers at and past every edge, broken syntax.
 const TOKENS: &[&str] = &[
-    "=", "[", "]", "[[", "]]", "\"", "'", "\n", "#", ",", ".", "{", "}", "nan", "inf", "-inf", "+nan", "0", "-1", "1e400",
-    "255", "256", "1024", "1025", "16", "15", "4096", "4097", "63.75", "64", "0.25", "-0.0", "9223372036854775808",
-    "true", "size", "bump", "light", "material", "surface", "source", "path", "green", "texels", "relief", "encoding",
-    "palette", "filter", "kind", "position", "direction", "per", "gloss", "src", "dst", "power", "weight", "shape",
-    "\"procedural\"", "\"height_map\"", "\"normal_map\"", "\"seed\"", "\"hemi_oct\"", "\"polar\"", "\"polar_dc255\"",
-    "\"heights\"", "\"palette\"", "\"vertex\"", "\"surface\"", "\"directional\"", "\"point\"", "\"quad\"", "\"bilinear\"",
-    "\"directx\"", "\"opengl\"", "[0, 0, 0]", "[1, 2]", "[1, 2, 3, 4]", "[1e308, 1e308, 1e308]", "\"\"", "\"a.png\"",
-    "1979-05-27", "\u{0}", "\u{feff}", "é", "\\u0000", "'''", "\"\"\"",
+    "=",
+    "[",
+    "]",
+    "[[",
+    "]]",
+    "\"",
+    "'",
+    "\n",
+    "#",
+    ",",
+    ".",
+    "{",
+    "}",
+    "nan",
+    "inf",
+    "-inf",
+    "+nan",
+    "0",
+    "-1",
+    "1e400",
+    "255",
+    "256",
+    "1024",
+    "1025",
+    "16",
+    "15",
+    "4096",
+    "4097",
+    "63.75",
+    "64",
+    "0.25",
+    "-0.0",
+    "9223372036854775808",
+    "true",
+    "size",
+    "bump",
+    "light",
+    "material",
+    "surface",
+    "source",
+    "path",
+    "green",
+    "texels",
+    "relief",
+    "encoding",
+    "palette",
+    "filter",
+    "kind",
+    "position",
+    "direction",
+    "per",
+    "gloss",
+    "src",
+    "dst",
+    "power",
+    "weight",
+    "shape",
+    "\"procedural\"",
+    "\"height_map\"",
+    "\"normal_map\"",
+    "\"seed\"",
+    "\"hemi_oct\"",
+    "\"polar\"",
+    "\"polar_dc255\"",
+    "\"heights\"",
+    "\"palette\"",
+    "\"vertex\"",
+    "\"surface\"",
+    "\"directional\"",
+    "\"point\"",
+    "\"quad\"",
+    "\"bilinear\"",
+    "\"directx\"",
+    "\"opengl\"",
+    "[0, 0, 0]",
+    "[1, 2]",
+    "[1, 2, 3, 4]",
+    "[1e308, 1e308, 1e308]",
+    "\"\"",
+    "\"a.png\"",
+    "1979-05-27",
+    "\u{0}",
+    "\u{feff}",
+    "é",
+    "\\u0000",
+    "'''",
+    "\"\"\"",
 ];
 
 #[test]
@@ -300,8 +453,12 @@ fn the_png_loader_survives_100000_corrupted_maps() {
     let mut bases = vec![];
     for img in [
         image::DynamicImage::from(image::GrayImage::from_fn(9, 7, |x, y| image::Luma([(x * 25 + y * 3) as u8]))),
-        image::DynamicImage::ImageLuma16(image::ImageBuffer::from_fn(6, 6, |x, y| image::Luma([(x * 9000 + y) as u16]))),
-        image::DynamicImage::from(image::RgbImage::from_fn(8, 5, |x, y| image::Rgb([(x * 30) as u8, (y * 50) as u8, 200]))),
+        image::DynamicImage::ImageLuma16(image::ImageBuffer::from_fn(6, 6, |x, y| {
+            image::Luma([(x * 9000 + y) as u16])
+        })),
+        image::DynamicImage::from(image::RgbImage::from_fn(8, 5, |x, y| {
+            image::Rgb([(x * 30) as u8, (y * 50) as u8, 200])
+        })),
     ] {
         let mut bytes = std::io::Cursor::new(vec![]);
         img.write_to(&mut bytes, image::ImageFormat::Png).unwrap();
@@ -331,7 +488,11 @@ fn the_png_loader_survives_100000_corrupted_maps() {
             sim::heightmap::png_from_bytes(&b, "fuzz.png", "map").map(|img| {
                 // and what the loaders read off a decoded image
                 let _ = (sim::heightmap::depth(&img), sim::heightmap::is_grey(&img));
-                if sim::heightmap::is_grey(&img) { sim::heightmap::grey_values(&img).len() } else { sim::heightmap::normal_values(&img, false).0.len() }
+                if sim::heightmap::is_grey(&img) {
+                    sim::heightmap::grey_values(&img).len()
+                } else {
+                    sim::heightmap::normal_values(&img, false).0.len()
+                }
             })
         });
         match r {

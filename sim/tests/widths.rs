@@ -69,7 +69,8 @@ fn check<U: rtl::StreamUnit>(name: &'static str, m: &vectors::UnitModel) -> (&'s
         match f.format(&s.name) {
             Some(fmt) if fmt.bits == s.bits => {
                 // sound: what the simulation took lies inside what the analysis proves
-                let (lo, hi) = if fmt.signed { (s.smin as i128, s.smax as i128) } else { (s.umin as i128, s.umax as i128) };
+                let (lo, hi) =
+                    if fmt.signed { (s.smin as i128, s.smax as i128) } else { (s.umin as i128, s.umax as i128) };
                 match proven.get(&s.name) {
                     Some(p) => {
                         let pieces = if fmt.signed { p.signed() } else { p.unsigned() };
@@ -81,12 +82,18 @@ fn check<U: rtl::StreamUnit>(name: &'static str, m: &vectors::UnitModel) -> (&'s
                     }
                     None => bad.push(format!("{}: no proven range", s.name)),
                 }
-                let fits = if fmt.signed { s.smin >= -(1i64 << (s.bits - 1)) && s.smax < 1i64 << (s.bits - 1) } else { s.bits >= 64 || s.umax < 1u64 << s.bits };
+                let fits = if fmt.signed {
+                    s.smin >= -(1i64 << (s.bits - 1)) && s.smax < 1i64 << (s.bits - 1)
+                } else {
+                    s.bits >= 64 || s.umax < 1u64 << s.bits
+                };
                 if !fits {
                     bad.push(format!("{}: seen outside {}", s.name, fmt.q()));
                 }
             }
-            Some(fmt) => bad.push(format!("{}: declared {} ({} bits), simulated {} bits", s.name, fmt.name, fmt.bits, s.bits)),
+            Some(fmt) => {
+                bad.push(format!("{}: declared {} ({} bits), simulated {} bits", s.name, fmt.name, fmt.bits, s.bits))
+            }
             None => bad.push(format!("{}: no declared format", s.name)),
         }
     }
@@ -159,7 +166,13 @@ fn no_step_wraps_unless_it_is_listed_with_its_reason() {
     }
     unlisted.sort();
     unlisted.dedup();
-    assert!(unlisted.is_empty(), "{} steps may wrap and are not listed in sim::widths::wraps:\n{}", unlisted.len(), unlisted.join("\n"));
-    let stale: Vec<String> = waived.iter().zip(&used).filter(|(_, u)| !**u).map(|(w, _)| format!("{} {}", w.block, w.signal)).collect();
+    assert!(
+        unlisted.is_empty(),
+        "{} steps may wrap and are not listed in sim::widths::wraps:\n{}",
+        unlisted.len(),
+        unlisted.join("\n")
+    );
+    let stale: Vec<String> =
+        waived.iter().zip(&used).filter(|(_, u)| !**u).map(|(w, _)| format!("{} {}", w.block, w.signal)).collect();
     assert!(stale.is_empty(), "listed, but no step of any unit wraps there: {stale:?}");
 }

@@ -108,7 +108,11 @@ mod tests {
         assert_eq!(get_in(&dir, &k, "report"), None);
         assert_eq!(get_in(&dir, &key("module m2; endmodule", &[]), "cells"), None);
         // nothing half-written left beside it
-        assert!(std::fs::read_dir(&dir).unwrap().all(|e| !e.unwrap().file_name().to_string_lossy().contains("partial")));
+        assert!(std::fs::read_dir(&dir).unwrap().all(|e| !e
+            .unwrap()
+            .file_name()
+            .to_string_lossy()
+            .contains("partial")));
         // two writers of one result at once: one whole file
         std::thread::scope(|s| {
             for v in ["a b", "a b"] {

@@ -56,7 +56,12 @@ pub struct LintReport {
 }
 
 /// Lint the unit `module` in `file`; `design` is the unit's own waivers (signal, reason).
-pub fn lint(dir: &Path, file: &Path, module: &str, design: &[(&'static str, &'static str)]) -> Result<LintReport, String> {
+pub fn lint(
+    dir: &Path,
+    file: &Path,
+    module: &str,
+    design: &[(&'static str, &'static str)],
+) -> Result<LintReport, String> {
     let f = file.to_str().ok_or("non-UTF-8 path")?;
     let out = std::process::Command::new("verilator")
         .args(["--lint-only", "-Wall", "--top-module", module, f])

@@ -53,7 +53,12 @@ fn no_generated_file_lives_in_the_source_tree() {
     assert!(all.iter().any(|p| p.ends_with("vectors/data/gloss.csv")), "the walk sees the golden files");
     let generated: Vec<&PathBuf> = all
         .iter()
-        .filter(|p| matches!(p.extension().and_then(|e| e.to_str()), Some("v" | "sv" | "vcd" | "png" | "hex" | "json" | "asc" | "bin")))
+        .filter(|p| {
+            matches!(
+                p.extension().and_then(|e| e.to_str()),
+                Some("v" | "sv" | "vcd" | "png" | "hex" | "json" | "asc" | "bin")
+            )
+        })
         .collect();
     assert!(generated.is_empty(), "generated files outside target/: {generated:?}");
 }
@@ -61,7 +66,10 @@ fn no_generated_file_lives_in_the_source_tree() {
 fn rust_sources(dir: &str) -> Vec<(PathBuf, String)> {
     let mut all = vec![];
     files(&root().join(dir), &mut all);
-    all.into_iter().filter(|p| p.extension().is_some_and(|e| e == "rs")).map(|p| (p.clone(), std::fs::read_to_string(&p).unwrap())).collect()
+    all.into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
+        .map(|p| (p.clone(), std::fs::read_to_string(&p).unwrap()))
+        .collect()
 }
 
 #[test]
@@ -89,7 +97,12 @@ fn no_block_uses_rust_hdl_signed() {
     for (path, text) in rust_sources("rtl/src") {
         for (n, line) in text.lines().enumerate() {
             let code = line.split("//").next().unwrap();
-            assert!(!code.contains("Signed<") && !code.contains("signed_bit_cast"), "{}:{}: {line}", path.display(), n + 1);
+            assert!(
+                !code.contains("Signed<") && !code.contains("signed_bit_cast"),
+                "{}:{}: {line}",
+                path.display(),
+                n + 1
+            );
         }
     }
 }
@@ -111,7 +124,11 @@ fn nothing_writes_into_the_system_temp_folder() {
             if path.ends_with("architecture.rs") {
                 continue;
             }
-            assert!(!text.contains("temp_dir()") && !text.contains("\"/tmp"), "{} writes into the system temp folder", path.display());
+            assert!(
+                !text.contains("temp_dir()") && !text.contains("\"/tmp"),
+                "{} writes into the system temp folder",
+                path.display()
+            );
         }
     }
 }
@@ -153,7 +170,12 @@ fn every_rtl_datapath_line_says_its_width() {
                 .iter()
                 .rev()
                 .map(|l| l.trim())
-                .find(|t| !(t.starts_with("if ") || t.starts_with("} else") || *t == "}" || (t.contains(".next =") && !t.contains("//"))))
+                .find(|t| {
+                    !(t.starts_with("if ")
+                        || t.starts_with("} else")
+                        || *t == "}"
+                        || (t.contains(".next =") && !t.contains("//")))
+                })
                 .is_some_and(|t| t.starts_with("//"));
             if !covered {
                 bare.push(format!("{}:{}: {}", path.display(), i + 1, line.trim()));

@@ -30,8 +30,8 @@ fn bilinear_hard_cases() {
 
 /// One `BilinearUnit<W, F, D>` driven directly, one vector per clock: (t00, t10, t01, t11, u, v) → (out, wide).
 fn run_unit<const W: usize, const F: usize, const D: usize>(vecs: &[[i64; 6]]) -> Vec<(i64, i64)> {
-    use rust_hdl::prelude::*;
     use rtl::bilinear::{BilinearUnit, LATENCY};
+    use rust_hdl::prelude::*;
     let mut uut = BilinearUnit::<W, F, D>::default();
     uut.connect_all();
     let mut out = vec![];

@@ -18,7 +18,8 @@ fn cart_pipeline_hemi_oct_random_vs_model_verilator() {
 #[test]
 fn cart_pipeline_hemi_oct_hard_cases() {
     let h = (MODEL_HEMI_OCT.hard_cases)();
-    rust_hdl::<CartPipelineHemiOct>(&MODEL_HEMI_OCT, &h, Bubbles::Random { one_in: 2, seed: 5 }).assert_clean("hard cases");
+    rust_hdl::<CartPipelineHemiOct>(&MODEL_HEMI_OCT, &h, Bubbles::Random { one_in: 2, seed: 5 })
+        .assert_clean("hard cases");
     let tr = |k: usize| exact_trace_with(Decode::HemiOct, &h[k]);
     let n = h.len();
     // the square's corner (0, 0) is (−1, 0, 0) on the horizon: lit along itself it is full, lit from above it is dark

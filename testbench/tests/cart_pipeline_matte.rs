@@ -2,7 +2,9 @@
 //! material with C = 0), each against its model, three ways, and the hard cases without C.
 use rtl::cart_pipeline::{CartPipelineHemiOctMatte, CartPipelineMatte};
 use testbench::{random_vs_model, random_vs_model_verilator, rust_hdl, unit_tests, Bubbles};
-use vectors::cart_pipeline::{exact_trace, exact_trace_with, with_zero_conc, Decode, MODEL_HEMI_OCT_MATTE, MODEL_MATTE};
+use vectors::cart_pipeline::{
+    exact_trace, exact_trace_with, with_zero_conc, Decode, MODEL_HEMI_OCT_MATTE, MODEL_MATTE,
+};
 
 unit_tests!(cart_pipeline_matte, CartPipelineMatte, MODEL_MATTE);
 unit_tests!(cart_pipeline_hemi_oct_matte, CartPipelineHemiOctMatte, MODEL_HEMI_OCT_MATTE);
@@ -29,7 +31,8 @@ fn hard_cases() {
     assert_eq!((tr(1).p, tr(2).p), (0, 0));
     // texel 255 guarded; opposite vertex lights through zero length give no light
     assert_eq!(tr(3).bump, [127, 1, 127]);
-    let z = h.iter().map(|v| exact_trace(&with_zero_conc(v))).find(|t| t.light == [0, 0, 0]).expect("a zero-length light");
+    let z =
+        h.iter().map(|v| exact_trace(&with_zero_conc(v))).find(|t| t.light == [0, 0, 0]).expect("a zero-length light");
     assert_eq!((z.light_n, z.p), ([0, 0, 0], 0));
     let h = (MODEL_HEMI_OCT_MATTE.hard_cases)();
     rust_hdl::<CartPipelineHemiOctMatte>(&MODEL_HEMI_OCT_MATTE, &h, Bubbles::Random { one_in: 2, seed: 6 })

@@ -27,5 +27,6 @@ fn gloss_threaded_simulation_agrees() {
     let (inputs, _) = testbench::golden(&MODEL);
     let s = testbench::slots(&MODEL, &inputs, Bubbles::Random { one_in: 4, seed: 7 });
     let got = rtl::stream::run_threaded::<Gloss>(s.clone()).unwrap_or_else(|e| panic!("{e}"));
-    testbench::check(&MODEL, <Gloss as rtl::StreamUnit>::LATENCY, &inputs, &s, &got).assert_clean("threaded Simulation");
+    testbench::check(&MODEL, <Gloss as rtl::StreamUnit>::LATENCY, &inputs, &s, &got)
+        .assert_clean("threaded Simulation");
 }

@@ -30,5 +30,6 @@ fn height_addr_every_coordinate_of_a_1_a_128_and_a_256_texel_axis() {
             inputs.extend((0..1i64 << 16).map(|c| vec![c, size_log2, wrap, height]));
         }
     }
-    external::<HeightAddr>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::BackToBack).assert_clean("every coordinate");
+    external::<HeightAddr>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::BackToBack)
+        .assert_clean("every coordinate");
 }

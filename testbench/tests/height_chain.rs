@@ -18,7 +18,10 @@ fn through<U: StreamUnit>(model: &vectors::UnitModel, inputs: &[Vec<i64>]) -> Ve
     let slots = inputs.iter().map(|v| Some(to_patterns(v, model.inputs)));
     let got = Runner::<U>::new().run(slots);
     assert_eq!(got.outputs.len(), inputs.len(), "{}: outputs lost", U::NAME);
-    got.outputs.iter().map(|o| o.iter().zip(model.outputs).map(|(&p, port)| from_pattern(p, port.bits, port.signed)).collect()).collect()
+    got.outputs
+        .iter()
+        .map(|o| o.iter().zip(model.outputs).map(|(&p, port)| from_pattern(p, port.bits, port.signed)).collect())
+        .collect()
 }
 
 fn chain(name: &str, w: usize, h: usize, heights: &[i64]) {
@@ -44,7 +47,11 @@ fn chain(name: &str, w: usize, h: usize, heights: &[i64]) {
         fetch_in.extend(au.iter().zip(&av).map(|(u, v)| Map::read(u[0], v[0], ul, vl, wrap, wrap)));
         let windows = through::<HeightFetch>(&vectors::height_fetch::MODEL, &fetch_in);
         let k = 16;
-        let normal_in: Vec<Vec<i64>> = windows[n_writes..].iter().zip(au.iter().zip(&av)).map(|(win, (u, v))| [win.clone(), vec![u[1], v[1], k]].concat()).collect();
+        let normal_in: Vec<Vec<i64>> = windows[n_writes..]
+            .iter()
+            .zip(au.iter().zip(&av))
+            .map(|(win, (u, v))| [win.clone(), vec![u[1], v[1], k]].concat())
+            .collect();
         let normals = through::<HeightPipeline>(&vectors::height_pipeline::MODEL, &normal_in);
         let grid = Grid { side: w.max(h), h: heights };
         for (q, ((cu, cv), n)) in coords.iter().zip(&normals).enumerate() {

@@ -18,7 +18,13 @@ fn height_fetch_random_after_the_hard_cases_verilator() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(17);
     let mut inputs = (MODEL.hard_cases)();
     inputs.extend((0..50_000).map(|_| (MODEL.random)(&mut rng)));
-    external::<HeightFetch>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::Random { one_in: 3, seed: 17 }).assert_clean("verilator, random");
+    external::<HeightFetch>(
+        synth::cosim::Simulator::Verilator,
+        &MODEL,
+        &inputs,
+        Bubbles::Random { one_in: 3, seed: 17 },
+    )
+    .assert_clean("verilator, random");
 }
 
 #[test]
@@ -46,5 +52,6 @@ fn height_fetch_every_window_of_a_16_by_8_map_and_of_a_1_by_8_map() {
         }
     }
     rust_hdl::<HeightFetch>(&MODEL, &inputs, Bubbles::Random { one_in: 3, seed: 5 }).assert_clean("rust-hdl");
-    external::<HeightFetch>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::BackToBack).assert_clean("verilator");
+    external::<HeightFetch>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::BackToBack)
+        .assert_clean("verilator");
 }

@@ -71,7 +71,9 @@ fn other_table_sizes_three_ways() {
     testbench::three_ways::<Normalise<12>>(&T12, &vectors_of(&T12), "normalise_t12");
     // and they are other sizes: the model's outputs differ from the unit's somewhere
     let v = vectors_of(&MODEL);
-    assert!(v.iter().any(|i| (T8.exact)(i) != (MODEL.exact)(i)) && v.iter().any(|i| (T12.exact)(i) != (MODEL.exact)(i)));
+    assert!(
+        v.iter().any(|i| (T8.exact)(i) != (MODEL.exact)(i)) && v.iter().any(|i| (T12.exact)(i) != (MODEL.exact)(i))
+    );
 }
 
 #[test]

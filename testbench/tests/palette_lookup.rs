@@ -19,8 +19,13 @@ fn palette_lookup_random_after_the_hard_cases_verilator() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(19);
     let mut inputs = (MODEL.hard_cases)();
     inputs.extend((0..50_000).map(|_| (MODEL.random)(&mut rng)));
-    external::<PaletteLookup<8, 9>>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::Random { one_in: 3, seed: 19 })
-        .assert_clean("verilator, random");
+    external::<PaletteLookup<8, 9>>(
+        synth::cosim::Simulator::Verilator,
+        &MODEL,
+        &inputs,
+        Bubbles::Random { one_in: 3, seed: 19 },
+    )
+    .assert_clean("verilator, random");
 }
 
 fn run_sized<const B: u32>(v: &[Vec<i64>]) -> Vec<Vec<i64>> {
@@ -38,7 +43,8 @@ fn hard_sized<const B: u32>() -> Vec<Vec<i64>> {
 
 macro_rules! sized {
     ($name:ident, $b:literal, $ins:ident) => {
-        const $ins: &[Port] = &[Port::u("frame", 1), Port::u("idx", $b), Port::u("we", 1), Port::u("waddr", $b), Port::u("wdata", 32)];
+        const $ins: &[Port] =
+            &[Port::u("frame", 1), Port::u("idx", $b), Port::u("we", 1), Port::u("waddr", $b), Port::u("wdata", 32)];
         static $name: UnitModel = UnitModel {
             name: "palette_lookup",
             inputs: $ins,

@@ -16,12 +16,18 @@ fn stream(count: usize, seed: u64) -> Vec<Vec<i64>> {
 #[test]
 fn palette_pipeline_12_random_after_the_hard_cases_with_bubbles() {
     for (seed, one_in) in [(31, 2), (32, 5)] {
-        rust_hdl::<PalettePipeline12>(&MODEL_12, &stream(3_000, seed), Bubbles::Random { one_in, seed }).assert_clean("rust-hdl, bubbles");
+        rust_hdl::<PalettePipeline12>(&MODEL_12, &stream(3_000, seed), Bubbles::Random { one_in, seed })
+            .assert_clean("rust-hdl, bubbles");
     }
 }
 
 #[test]
 fn palette_pipeline_12_random_after_the_hard_cases_verilator() {
-    external::<PalettePipeline12>(synth::cosim::Simulator::Verilator, &MODEL_12, &stream(50_000, 33), Bubbles::Random { one_in: 3, seed: 33 })
-        .assert_clean("verilator, random");
+    external::<PalettePipeline12>(
+        synth::cosim::Simulator::Verilator,
+        &MODEL_12,
+        &stream(50_000, 33),
+        Bubbles::Random { one_in: 3, seed: 33 },
+    )
+    .assert_clean("verilator, random");
 }

@@ -15,12 +15,18 @@ fn stream(count: usize, seed: u64) -> Vec<Vec<i64>> {
 #[test]
 fn palette_pipeline_shared_random_after_the_hard_cases_with_bubbles() {
     for (seed, one_in) in [(41, 2), (42, 5)] {
-        rust_hdl::<PalettePipelineShared>(&MODEL, &stream(3_000, seed), Bubbles::Random { one_in, seed }).assert_clean("rust-hdl, bubbles");
+        rust_hdl::<PalettePipelineShared>(&MODEL, &stream(3_000, seed), Bubbles::Random { one_in, seed })
+            .assert_clean("rust-hdl, bubbles");
     }
 }
 
 #[test]
 fn palette_pipeline_shared_random_after_the_hard_cases_verilator() {
-    external::<PalettePipelineShared>(synth::cosim::Simulator::Verilator, &MODEL, &stream(50_000, 43), Bubbles::Random { one_in: 3, seed: 43 })
-        .assert_clean("verilator, random");
+    external::<PalettePipelineShared>(
+        synth::cosim::Simulator::Verilator,
+        &MODEL,
+        &stream(50_000, 43),
+        Bubbles::Random { one_in: 3, seed: 43 },
+    )
+    .assert_clean("verilator, random");
 }

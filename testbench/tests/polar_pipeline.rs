@@ -44,5 +44,6 @@ fn polar_pipeline_random_vs_model_verilator() {
 
 #[test]
 fn polar_pipeline_hard_cases() {
-    rust_hdl::<PolarPipeline>(&MODEL, &(MODEL.hard_cases)(), Bubbles::Random { one_in: 2, seed: 9 }).assert_clean("hard cases");
+    rust_hdl::<PolarPipeline>(&MODEL, &(MODEL.hard_cases)(), Bubbles::Random { one_in: 2, seed: 9 })
+        .assert_clean("hard cases");
 }

@@ -5,7 +5,6 @@ use vectors::power::MODEL;
 
 unit_tests!(power, Power, MODEL, exhaustive: [rust_hdl, verilator, icarus] with Bubbles::Random { one_in: 7, seed: 5 });
 
-
 // Other table sizes of the same block (the width sweep's), three ways on every (x, p).
 fn exact_sized<const LF: u32, const EB: u32>(i: &[i64]) -> Vec<i64> {
     vec![vectors::power::exact_with(i[0], i[1], LF, EB)]

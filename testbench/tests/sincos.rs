@@ -33,7 +33,8 @@ fn the_polar_shade_unit_holds_the_tested_table_blocks() {
     // a type check: polar_shade's sine/cosine and cosine blocks are the units `sincos` and `cos_sign` (with the
     // Dreamcast contents in polar_shade_dc); this fails to compile if either becomes a block of its own again
     fn same<T>(_: &T, _: &T) {}
-    let (seed, dc) = (rtl::polar_shade::PolarShade::<false>::default(), rtl::polar_shade::PolarShade::<true>::default());
+    let (seed, dc) =
+        (rtl::polar_shade::PolarShade::<false>::default(), rtl::polar_shade::PolarShade::<true>::default());
     same(&seed.sin_cos, &SinCosUnit::default());
     same(&seed.cos_sign, &rtl::cos_sign::CosSignUnit::default());
     same(&dc.sin_cos, &SinCos::<8, 8, true>::default());

@@ -36,7 +36,11 @@ fn synthesis_keeps_one_set_of_four_bilinear_units() {
     let cells = synth_unit::<TextureFilter>(&dir, Family::Ecp5).unwrap_or_else(|e| panic!("{e}"));
     let b = blocks_of::<TextureFilter>(&dir, Family::Ecp5);
     let units: Vec<&(String, u64, u64)> = b.by_instance.iter().filter(|(n, ..)| n.starts_with("unit$")).collect();
-    assert_eq!(units.iter().map(|u| u.0.as_str()).collect::<Vec<_>>(), ["unit$0", "unit$1", "unit$2", "unit$3"], "{b:?}");
+    assert_eq!(
+        units.iter().map(|u| u.0.as_str()).collect::<Vec<_>>(),
+        ["unit$0", "unit$1", "unit$2", "unit$3"],
+        "{b:?}"
+    );
     assert!(units.iter().all(|u| u.1 == 3), "three multipliers a unit: {b:?}");
     // the rest are the tangent, normal and normaliser behind them
     let rest: u64 = b.by_instance.iter().filter(|(n, ..)| !n.starts_with("unit$")).map(|x| x.1).sum();

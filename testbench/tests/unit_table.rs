@@ -36,7 +36,10 @@ fn every_entry_has_its_golden_file_and_its_standard_tests() {
         .filter_map(|e| std::fs::read_to_string(e.ok()?.path()).ok())
         .collect();
     for (name, ..) in entries() {
-        assert!(root().join("vectors/data").join(format!("{name}.csv")).is_file(), "no vectors/data/{name}.csv: `bumprtl vectors {name}` writes it");
+        assert!(
+            root().join("vectors/data").join(format!("{name}.csv")).is_file(),
+            "no vectors/data/{name}.csv: `bumprtl vectors {name}` writes it"
+        );
         assert!(tests.contains(&format!("unit_tests!({name},")), "no `unit_tests!({name}, ...)` in testbench/tests");
     }
 }
@@ -46,7 +49,10 @@ fn every_waiver_names_a_signal_of_its_unit() {
     for (name, _, _, verilog, waived) in entries() {
         for sig in waived {
             let (inst, port) = sig.split_once('$').expect("instance$port");
-            assert!(verilog.contains(&format!("{inst}${port}")), "`{name}` waives `{sig}`, which its Verilog does not have");
+            assert!(
+                verilog.contains(&format!("{inst}${port}")),
+                "`{name}` waives `{sig}`, which its Verilog does not have"
+            );
         }
     }
 }

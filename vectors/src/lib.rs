@@ -65,8 +65,11 @@ pub mod unit;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, cart_surface, light_iter};
+pub use height::{
+    blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent,
+    texture_filter,
+};
+pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
-pub use height::{blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent, texture_filter};
-pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
 pub use unit::{Port, UnitModel, UNITS};

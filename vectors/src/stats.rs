@@ -40,7 +40,11 @@ pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// A 3-vector scaled to unit length; a zero vector stays as it is.
 pub fn unit(v: [f64; 3]) -> [f64; 3] {
     let l = dot(v, v).sqrt();
-    if l > 0.0 { v.map(|c| c / l) } else { v }
+    if l > 0.0 {
+        v.map(|c| c / l)
+    } else {
+        v
+    }
 }
 
 /// Angle in degrees between two 3-vectors; zero-length vectors give NaN (callers decide what that means).

@@ -120,7 +120,17 @@ impl UnitModel {
         random: fn(&mut dyn rand::RngCore) -> Vec<i64>,
         hard_cases: fn() -> Vec<Vec<i64>>,
     ) -> UnitModel {
-        UnitModel { name, inputs: ports.0, outputs: ports.1, exact, random, exhaustive: None, hard_cases, accuracy: None, stream: None }
+        UnitModel {
+            name,
+            inputs: ports.0,
+            outputs: ports.1,
+            exact,
+            random,
+            exhaustive: None,
+            hard_cases,
+            accuracy: None,
+            stream: None,
+        }
     }
 
     pub const fn with_exhaustive(self, all: fn() -> Vec<Vec<i64>>) -> UnitModel {

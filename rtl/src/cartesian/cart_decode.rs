@@ -3,12 +3,11 @@
 //! `|BumpZ| = 127 + az − ax`, `BumpY = 1`. Latency 4: |T − 127|; ax + az and ax − az; the guard mux; the signs.
 
 use crate::delay::Delay;
-use rust_hdl::prelude::*;
 use crate::q::{Sq8_0, U8};
+use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 4;
-
 
 crate::stream_block! {
     #[derive(Default)]
@@ -62,8 +61,10 @@ crate::stream_block! {
 impl Logic for CartDecode {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_ax, s1_az, s1_sx, s1_sz, s2_sum, s2_dxz, s2_ax, s2_az, s2_sx, s2_sz, s3_mx, s3_mz,
-            s3_by, s3_sx, s3_sz, s4_bx, s4_by, s4_bz);
+        dff_setup!(
+            self, clock, s1_ax, s1_az, s1_sx, s1_sz, s2_sum, s2_dxz, s2_ax, s2_az, s2_sx, s2_sz, s3_mx, s3_mz, s3_by,
+            s3_sx, s3_sz, s4_bx, s4_by, s4_bz
+        );
         clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1: the distance from 127 of T saturated to 254, and its side, with one 7-bit incrementer:
@@ -133,4 +134,3 @@ impl Logic for CartDecode {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

@@ -3,12 +3,11 @@
 //! texel is legal. Latency 3: the two sums; their magnitudes; BumpY.
 
 use crate::delay::Delay;
-use rust_hdl::prelude::*;
 use crate::q::{Sq8_0, U8};
+use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 3;
-
 
 crate::stream_block! {
     #[derive(Default)]
@@ -76,4 +75,3 @@ impl Logic for CartDecodeHemiOct {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

@@ -5,7 +5,7 @@
 //! the placer can put it beside the DSP: the long route lands on a register-to-register path.
 
 use crate::delay::Delay;
-use crate::q::{SBits, S8, S9, Sq11_8, Sq7_2};
+use crate::q::{SBits, Sq11_8, Sq7_2, S8, S9};
 use crate::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
@@ -46,10 +46,10 @@ pub struct LightLane {
     w_e0: Signal<Local, S9>, // l0 sign-extended to S9
     w_e1: Signal<Local, S9>,
     w_e2: Signal<Local, S9>,
-    w_e20: Signal<Local, Sq11_8>, // l0 sign-extended to 20 bits
-    w_p1: Signal<Local, Sq11_8>,  // |d1|·w1 (U17 in 20 bits)
+    w_e20: Signal<Local, Sq11_8>,  // l0 sign-extended to 20 bits
+    w_p1: Signal<Local, Sq11_8>,   // |d1|·w1 (U17 in 20 bits)
     w_q: Signal<Local, SBits<14>>, // acc >> 6 (floor): S14
-    w_hi: Signal<Local, Bits<5>>, // its bits 13..9: all equal when it fits S10
+    w_hi: Signal<Local, Bits<5>>,  // its bits 13..9: all equal when it fits S10
 }
 
 impl Logic for LightLane {
@@ -77,7 +77,7 @@ impl Logic for LightLane {
             self.w_e20.next = self.w_e20.val() | 0xFFF00;
         }
         self.s1_base.d.next = self.w_e20.val() << 8; // l0·256: S16 in S20, exact
-        // stages 2–4: the products, the base beside them
+                                                     // stages 2–4: the products, the base beside them
         self.mul1.x.next = self.s1_d1.q.val();
         self.mul1.w.next = self.w1.val();
         self.mul2.x.next = self.s1_d2.q.val();

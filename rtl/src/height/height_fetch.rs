@@ -111,7 +111,10 @@ crate::stream_block! {
 impl Logic for HeightFetch {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s0_um, s0_vm, s0_uwrap, s0_vwrap, s0_rd, s0_we, s0_waddr, s0_wdata, s1_rd, wr_en, wr_addr, wr_data, s2_rd, s3_rd);
+        dff_setup!(
+            self, clock, s0_um, s0_vm, s0_uwrap, s0_vwrap, s0_rd, s0_we, s0_waddr, s0_wdata, s1_rd, wr_en, wr_addr,
+            wr_data, s2_rd, s3_rd
+        );
         clock!(self, clock, valid);
         for n in 0..3 {
             self.s0_x[n].clock.next = self.clock.val();
@@ -200,17 +203,21 @@ impl Logic for HeightFetch {
         // else the last column's (x2 >> 1); the bank address takes the word's column and row halved (x >> 2)
         if self.s1_x[0].q.val().get_bit(1) {
             self.w_cx0.next = bit_cast::<12, 6>(self.s1_x[2].q.val().get_bits::<6>(2)); // U6 in 12, a slice widened
-            self.w_cx1.next = bit_cast::<12, 6>(self.s1_x[0].q.val().get_bits::<6>(2)); // U6 in 12
+            self.w_cx1.next = bit_cast::<12, 6>(self.s1_x[0].q.val().get_bits::<6>(2));
+        // U6 in 12
         } else {
             self.w_cx0.next = bit_cast::<12, 6>(self.s1_x[0].q.val().get_bits::<6>(2)); // U6 in 12
-            self.w_cx1.next = bit_cast::<12, 6>(self.s1_x[2].q.val().get_bits::<6>(2)); // U6 in 12
+            self.w_cx1.next = bit_cast::<12, 6>(self.s1_x[2].q.val().get_bits::<6>(2));
+            // U6 in 12
         }
         if self.s1_y[0].q.val().get_bit(1) {
             self.w_ry0.next = bit_cast::<12, 6>(self.s1_y[2].q.val().get_bits::<6>(2)); // U6 in 12
-            self.w_ry1.next = bit_cast::<12, 6>(self.s1_y[0].q.val().get_bits::<6>(2)); // U6 in 12
+            self.w_ry1.next = bit_cast::<12, 6>(self.s1_y[0].q.val().get_bits::<6>(2));
+        // U6 in 12
         } else {
             self.w_ry0.next = bit_cast::<12, 6>(self.s1_y[0].q.val().get_bits::<6>(2)); // U6 in 12
-            self.w_ry1.next = bit_cast::<12, 6>(self.s1_y[2].q.val().get_bits::<6>(2)); // U6 in 12
+            self.w_ry1.next = bit_cast::<12, 6>(self.s1_y[2].q.val().get_bits::<6>(2));
+            // U6 in 12
         }
         self.w_ry0s.next = self.w_ry0.val() << 6; // row · 64: U12, exact
         self.w_ry1s.next = self.w_ry1.val() << 6; // U12, exact
@@ -218,7 +225,7 @@ impl Logic for HeightFetch {
         self.bank[1].read_address.next = self.w_ry0s.val() | self.w_cx1.val(); // (odd X, even Y)
         self.bank[2].read_address.next = self.w_ry1s.val() | self.w_cx0.val(); // (even X, odd Y)
         self.bank[3].read_address.next = self.w_ry1s.val() | self.w_cx1.val(); // (odd X, odd Y)
-        // the write: word (X, Y) = (waddr[6:0], waddr[13:7]) goes to bank (X mod 2, Y mod 2) at (Y >> 1)·64 + (X >> 1)
+                                                                               // the write: word (X, Y) = (waddr[6:0], waddr[13:7]) goes to bank (X mod 2, Y mod 2) at (Y >> 1)·64 + (X >> 1)
         self.w_wx.next = bit_cast::<12, 6>(self.wr_addr.q.val().get_bits::<6>(1)); // X >> 1: U6 in 12
         self.w_wy.next = bit_cast::<12, 6>(self.wr_addr.q.val().get_bits::<6>(8)); // Y >> 1: U6 in 12
         self.w_wys.next = self.w_wy.val() << 6; // U12, exact
@@ -226,10 +233,14 @@ impl Logic for HeightFetch {
             self.bank[n].write_address.next = self.w_wys.val() | self.w_wx.val(); // U12, fields side by side
             self.bank[n].write_data.next = self.wr_data.q.val();
         }
-        self.bank[0].write_enable.next = self.wr_en.q.val() & !self.wr_addr.q.val().get_bit(0) & !self.wr_addr.q.val().get_bit(7);
-        self.bank[1].write_enable.next = self.wr_en.q.val() & self.wr_addr.q.val().get_bit(0) & !self.wr_addr.q.val().get_bit(7);
-        self.bank[2].write_enable.next = self.wr_en.q.val() & !self.wr_addr.q.val().get_bit(0) & self.wr_addr.q.val().get_bit(7);
-        self.bank[3].write_enable.next = self.wr_en.q.val() & self.wr_addr.q.val().get_bit(0) & self.wr_addr.q.val().get_bit(7);
+        self.bank[0].write_enable.next =
+            self.wr_en.q.val() & !self.wr_addr.q.val().get_bit(0) & !self.wr_addr.q.val().get_bit(7);
+        self.bank[1].write_enable.next =
+            self.wr_en.q.val() & self.wr_addr.q.val().get_bit(0) & !self.wr_addr.q.val().get_bit(7);
+        self.bank[2].write_enable.next =
+            self.wr_en.q.val() & !self.wr_addr.q.val().get_bit(0) & self.wr_addr.q.val().get_bit(7);
+        self.bank[3].write_enable.next =
+            self.wr_en.q.val() & self.wr_addr.q.val().get_bit(0) & self.wr_addr.q.val().get_bit(7);
         // each height's place in the four words: 8·(x mod 2) + 32·((x >> 1) mod 2) by column, 16·(y mod 2) +
         // 64·((y >> 1) mod 2) by row
         for n in 0..3 {

@@ -45,7 +45,10 @@ crate::stream_block! {
 
 impl<const A: usize, const R: usize> Default for PaletteLookup<A, R> {
     fn default() -> Self {
-        assert!(R == A + 1 && (1..=16).contains(&A), "PaletteLookup<A, R>: R = A + 1, A from 1 to 16 (A = {A}, R = {R})");
+        assert!(
+            R == A + 1 && (1..=16).contains(&A),
+            "PaletteLookup<A, R>: R = A + 1, A from 1 to 16 (A = {A}, R = {R})"
+        );
         Self {
             clock: Default::default(),
             valid_in: Default::default(),

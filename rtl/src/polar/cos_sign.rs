@@ -74,6 +74,5 @@ impl<const TB: usize, const W: usize, const DC: bool> Logic for CosSign<TB, W, D
     }
 }
 
-
 /// The unit `cos_sign`: the size the polar shade unit uses.
 pub type CosSignUnit = CosSign<8, 8>;

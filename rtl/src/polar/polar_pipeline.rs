@@ -6,10 +6,9 @@
 use crate::delay::Delay;
 use crate::polar_shade::PolarShade;
 use crate::power::Power;
+use crate::q::U8;
 use crate::ram_delay::DelayedBlend;
 use rust_hdl::prelude::*;
-use crate::q::U8;
-
 
 pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
 pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 17
@@ -84,7 +83,6 @@ impl<const DC: bool> Logic for PolarPipeline<DC> {
         self.out_b.next = self.blend.out_b.val();
     }
 }
-
 
 /// The polar pipeline in the seed's angle scale (the default) and in the Dreamcast toolchains'.
 pub type PolarPipelineSeed = PolarPipeline<false>;

@@ -9,17 +9,16 @@
 //! 9 add or subtract by the cosine's sign bit [24, 26]: S11;
 //! 10 the clamp to U8 [28].
 
+use crate::cos_sign::CosSign;
 use crate::delay::Delay;
 use crate::div255::Div255;
-use crate::cos_sign::CosSign;
+use crate::q::{S11, U8};
 use crate::sincos::SinCos;
 use rust_hdl::prelude::*;
-use crate::q::{S11, U8};
 
 pub const LATENCY: usize = 10;
 // the two table blocks run side by side, so they must take as long as each other
 const _: () = assert!(crate::sincos::LATENCY == crate::cos_sign::LATENCY);
-
 
 crate::stream_block! {
     /// `DC`: the Dreamcast toolchains' angle scale (255 steps) in both tables; the seed's (256) when false.
@@ -90,8 +89,10 @@ crate::stream_block! {
 impl<const DC: bool> Logic for PolarShade<DC> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_k1, s1_k2, s1_k3, s2_k1, s2_k2, s2_k3, s3_p12, s3_p14,
-            s3_k1, s3_cd, s3_neg, s6_p20, s6_a22, s6_neg, s9_sum, s10_shade, s10_sum);
+        dff_setup!(
+            self, clock, s1_k1, s1_k2, s1_k3, s2_k1, s2_k2, s2_k3, s3_p12, s3_p14, s3_k1, s3_cd, s3_neg, s6_p20,
+            s6_a22, s6_neg, s9_sum, s10_shade, s10_sum
+        );
         clock!(self, clock, sin_cos, cos_sign);
         clock!(self, clock, div12, div14, div20, k1_dly, cd_dly, neg_dly, a22_dly, neg2_dly, valid);
         // the table blocks carry the valid flag through stages 1–2 (both the same flag), the chain the rest
@@ -123,7 +124,7 @@ impl<const DC: bool> Logic for PolarShade<DC> {
         self.s3_k1.d.next = self.s2_k1.q.val();
         self.s3_cd.d.next = self.cos_sign.mag.val();
         self.s3_neg.d.next = self.cos_sign.neg.val().any(); // Bits<1> → Bit (a scalar in Verilog: no bit select)
-        // stages 4–5: /255, rounded
+                                                            // stages 4–5: /255, rounded
         self.div12.num.next = self.s3_p12.q.val();
         self.div14.num.next = self.s3_p14.q.val();
         self.k1_dly.d.next = self.s3_k1.q.val();
@@ -162,4 +163,3 @@ impl<const DC: bool> Logic for PolarShade<DC> {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

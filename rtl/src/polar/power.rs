@@ -9,12 +9,11 @@
 //! registers keep the default's widths, which hold every smaller setting.
 
 use crate::delay::Delay;
+use crate::q::U8;
 use crate::tables::{ExpTable, LogTable};
 use rust_hdl::prelude::*;
-use crate::q::U8;
 
 pub const LATENCY: usize = 7;
-
 
 crate::stream_block! {
     pub struct Power<const LF: usize = 12, const EB: usize = 8>: unit("power", LATENCY) {
@@ -64,7 +63,10 @@ crate::stream_block! {
 
 impl<const LF: usize, const EB: usize> Default for Power<LF, EB> {
     fn default() -> Self {
-        assert!(LF <= 12 && EB < 2 + LF && EB <= 12, "Power<{LF}, {EB}>: L fits U15 for LF ≤ 12; g drops 2 + LF − EB ≥ 1 bits");
+        assert!(
+            LF <= 12 && EB < 2 + LF && EB <= 12,
+            "Power<{LF}, {EB}>: L fits U15 for LF ≤ 12; g drops 2 + LF − EB ≥ 1 bits"
+        );
         let k = 2 + LF - EB;
         Self {
             clock: Default::default(),
@@ -156,4 +158,3 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

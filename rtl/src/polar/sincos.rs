@@ -76,6 +76,5 @@ impl<const TB: usize, const W: usize, const DC: bool> Logic for SinCos<TB, W, DC
     }
 }
 
-
 /// The unit `sincos`: the size the polar shade unit uses.
 pub type SinCosUnit = SinCos<8, 8>;

@@ -16,7 +16,11 @@ fn unorm(x: f64, w: usize) -> u64 {
 
 /// Steps per quarter / full turn of an 8-bit angle: 256 in the seed's scale, 255 in the Dreamcast toolchains'.
 fn steps(dc: bool) -> f64 {
-    if dc { 255.0 } else { 256.0 }
+    if dc {
+        255.0
+    } else {
+        256.0
+    }
 }
 
 /// The elevation table [10]: 2^tb entries over a quarter turn, entry i standing for i·90°/2^tb (seed) or
@@ -49,7 +53,9 @@ pub fn log2() -> Vec<u64> {
 
 /// −log2(x/255)·2^lf, rounded (U15 for lf ≤ 12); entry 0 unused.
 pub fn log2_of(lf: usize) -> Vec<u64> {
-    (0..256).map(|x| if x == 0 { 0 } else { (-(x as f64 / 255.0).log2() * (1u64 << lf) as f64).round() as u64 }).collect()
+    (0..256)
+        .map(|x| if x == 0 { 0 } else { (-(x as f64 / 255.0).log2() * (1u64 << lf) as f64).round() as u64 })
+        .collect()
 }
 
 /// 255·2^(−f/256)·2^7, rounded (U15): the power unit's own.

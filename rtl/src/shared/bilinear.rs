@@ -76,11 +76,11 @@ pub struct BilinearUnit<const W: usize, const F: usize, const D: usize = 0> {
     // stages 8–10: |b − a|·v < 2^(W+2F), a carried
     mul2: SmMul<17>,
     a: Delay<Bits<17>, { sm_mul::LATENCY }>,
-    w_ad: Signal<Local, Bits<17>>, // a >> D (U(W+F−D)), truncated
-    w_bd: Signal<Local, Bits<17>>, // b >> D, truncated
-    w_a: Signal<Local, Bits<32>>, // a'·2^F (U(W+2F−D))
+    w_ad: Signal<Local, Bits<17>>,   // a >> D (U(W+F−D)), truncated
+    w_bd: Signal<Local, Bits<17>>,   // b >> D, truncated
+    w_a: Signal<Local, Bits<32>>,    // a'·2^F (U(W+2F−D))
     w_wide: Signal<Local, Bits<32>>, // a'·2^F ± |b' − a'|·v ∈ 0..2^(W+2F−D) (≤ 25 bits), exact
-    w_r: Signal<Local, Bits<32>>, // that + 2^(2F−D−1), < 2^(W+2F−D), exact
+    w_r: Signal<Local, Bits<32>>,    // that + 2^(2F−D−1), < 2^(W+2F−D), exact
     // stage 11: the top W bits of W + 2F − D: truncation of the rounded sum, so round half up overall; and wide
     s11_out: DFF<Bits<W>>,
     s11_wide: DFF<Bits<32>>,
@@ -150,7 +150,7 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         clock!(self, clock, mul0, mul1, b0, b1, s6_a, s6_b, s7_e, s7_a, mul2, a, s11_out, s11_wide);
         self.u.d.next = bit_cast::<16, F>(self.ublend.val()); // UF in 16, widening
         self.v.d.next = bit_cast::<16, F>(self.vblend.val()); // UF in 16, widening
-        // stage 1: widening only
+                                                              // stage 1: widening only
         self.s1_t00.d.next = bit_cast::<16, W>(self.t00.val());
         self.s1_t10.d.next = bit_cast::<16, W>(self.t10.val());
         self.s1_t01.d.next = bit_cast::<16, W>(self.t01.val());
@@ -184,7 +184,7 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         }
         self.s6_a.d.next = self.w_sa.val().get_bits::<17>(0); // the weighted mean's U(W+F) ≤ U17: exact
         self.s6_b.d.next = self.w_sb.val().get_bits::<17>(0); // the same
-        // stage 7: b − a, wrapping in 32 bits to its two's complement
+                                                              // stage 7: b − a, wrapping in 32 bits to its two's complement
         self.w_ad.next = self.s6_a.q.val() >> self.shift_d.val(); // U(W+F) → U(W+F−D), truncated
         self.w_bd.next = self.s6_b.q.val() >> self.shift_d.val(); // the same
         self.s7_e.d.next = self.w_bd.val() - self.w_ad.val(); // S(W+F−D), |b' − a'| < 2^16: wrapping in 17 bits to its two's complement
@@ -289,7 +289,8 @@ impl<const F: usize, const D: usize> Logic for Bilinear<F, D> {
         for i in 0..4 {
             self.unit[i].clock.next = self.clock.val();
             self.unit[i].ublend.next = self.ublend.val().get_bits::<F>(self.blend_at.val().index()); // the top F bits, floor
-            self.unit[i].vblend.next = self.vblend.val().get_bits::<F>(self.blend_at.val().index()); // the same
+            self.unit[i].vblend.next = self.vblend.val().get_bits::<F>(self.blend_at.val().index());
+            // the same
         }
         self.valid.d.next = self.valid_in.val();
         self.unit[0].t00.next = self.t00_r.val();
@@ -315,4 +316,3 @@ impl<const F: usize, const D: usize> Logic for Bilinear<F, D> {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

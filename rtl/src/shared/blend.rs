@@ -4,12 +4,11 @@
 //! products; the sum + 128; the /255.
 
 use crate::delay::Delay;
-use rust_hdl::prelude::*;
 use crate::q::{U16, U8};
+use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 5;
-
 
 crate::stream_block! {
     #[derive(Default)]
@@ -114,4 +113,3 @@ impl Logic for Blend {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

@@ -12,7 +12,12 @@ pub struct Delay<T: Synth, const N: usize> {
 
 impl<T: Synth, const N: usize> Default for Delay<T, N> {
     fn default() -> Self {
-        Self { clock: Default::default(), d: Default::default(), q: Default::default(), line: std::array::from_fn(|_| DFF::default()) }
+        Self {
+            clock: Default::default(),
+            d: Default::default(),
+            q: Default::default(),
+            line: std::array::from_fn(|_| DFF::default()),
+        }
     }
 }
 

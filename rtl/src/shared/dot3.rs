@@ -3,12 +3,11 @@
 //! products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
 
 use crate::delay::Delay;
-use rust_hdl::prelude::*;
 use crate::q::{SBits, Sq1_10, Sq4_20};
+use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 6;
-
 
 crate::stream_block! {
     #[derive(Default)]
@@ -122,4 +121,3 @@ impl Logic for Dot3 {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

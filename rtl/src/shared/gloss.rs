@@ -6,12 +6,11 @@
 //! placer can put it beside the DSP and the long route lands on a register-to-register path.
 
 use crate::delay::Delay;
+use crate::q::{Uq0_10, Uq6_3, U8};
 use rust_hdl::prelude::*;
-use crate::q::{U8, Uq0_10, Uq6_3};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
-
 
 crate::stream_block! {
     pub struct Gloss: unit("gloss", LATENCY) {
@@ -128,8 +127,10 @@ impl Default for Gloss {
 impl Logic for Gloss {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_k, s1_t, s1_c, s1b_k, s1b_t, s1b_c, s2_m, s2_c, s3_l, s3_c, s3b_l, s3b_c, s4_ll,
-            s4_l, s4_c, s5_d, s5_l, s5_c, s5b_d, s5b_l, s5b_c, s6_prod, s6_l, s7_q, s7_l, s8_p);
+        dff_setup!(
+            self, clock, s1_k, s1_t, s1_c, s1b_k, s1b_t, s1b_c, s2_m, s2_c, s3_l, s3_c, s3b_l, s3b_c, s4_ll, s4_l,
+            s4_c, s5_d, s5_l, s5_c, s5b_d, s5b_l, s5b_c, s6_prod, s6_l, s7_q, s7_l, s8_p
+        );
         clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         // stage 1
@@ -188,4 +189,3 @@ impl Logic for Gloss {
         self.valid_out.next = self.valid.q.val();
     }
 }
-

@@ -9,9 +9,9 @@
 //! the signs.
 
 use crate::delay::Delay;
+use crate::q::{Sq1_10, Sq9_0, Uq1_12};
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
-use crate::q::{Sq1_10, Sq9_0, Uq1_12};
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
@@ -113,8 +113,11 @@ impl<const T: usize, const N: usize> Default for Normalise<T, N> {
     fn default() -> Self {
         assert!((4..=14).contains(&T), "Normalise<T, N>: a table of 2^4 to 2^14 entries (T = {T})");
         assert!(N <= 2, "Normalise<T, N>: at most 2 Newton steps (N = {N}); a third cannot improve a Uq1.12 seed");
-        let rom: std::collections::BTreeMap<Bits<T>, Uq1_12> =
-            table_of(T as u32).into_iter().enumerate().map(|(k, v)| (Bits::<T>::from(k as u64), Uq1_12::from(v))).collect();
+        let rom: std::collections::BTreeMap<Bits<T>, Uq1_12> = table_of(T as u32)
+            .into_iter()
+            .enumerate()
+            .map(|(k, v)| (Bits::<T>::from(k as u64), Uq1_12::from(v)))
+            .collect();
         Self {
             clock: Default::default(),
             valid_in: Default::default(),
@@ -505,5 +508,3 @@ impl Logic for NewtonStep {
         self.r_out.next = self.s5_r.q.val();
     }
 }
-
-

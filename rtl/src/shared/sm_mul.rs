@@ -231,7 +231,8 @@ mod tests {
 
     #[test]
     fn the_wide_multiplier_takes_magnitudes_beyond_16_bits() {
-        let pairs: Vec<(i64, u64)> = vec![(-(1 << 21) + 1, 255), ((1 << 21) - 1, 255), (-1_048_576, 1785), (65_536, 1), (0, 9), (-7, 3)];
+        let pairs: Vec<(i64, u64)> =
+            vec![(-(1 << 21) + 1, 255), ((1 << 21) - 1, 255), (-1_048_576, 1785), (65_536, 1), (0, 9), (-7, 3)];
         let mut uut = SmMulWide::<22>::default();
         uut.connect_all();
         let mut got = vec![];

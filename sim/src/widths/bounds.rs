@@ -12,7 +12,8 @@
 //! grows: the least fixed point, which holds every value any input sequence within the ports' ranges can produce.
 
 use rust_hdl::core::ast::{
-    Verilog, VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogOp, VerilogOpUnary, VerilogStatement as S,
+    Verilog, VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogOp, VerilogOpUnary,
+    VerilogStatement as S,
 };
 use rust_hdl::core::atom::{Atom, AtomKind};
 use rust_hdl::core::block::Block;
@@ -47,7 +48,11 @@ impl V {
         self.hi - self.lo + 1 >= m(self.bits)
     }
     fn norm(self) -> V {
-        if self.hi - self.lo + 1 >= m(self.bits) { V { lit: false, ..V::full(self.bits) } } else { self }
+        if self.hi - self.lo + 1 >= m(self.bits) {
+            V { lit: false, ..V::full(self.bits) }
+        } else {
+            self
+        }
     }
     fn with_bits(self, bits: u32) -> V {
         V { bits, lit: false, ..self }.norm()
@@ -59,7 +64,11 @@ impl V {
         }
         let a = self.lo.rem_euclid(m(self.bits));
         let len = self.hi - self.lo;
-        if a + len < m(self.bits) { vec![(a, a + len)] } else { vec![(a, m(self.bits) - 1), (0, a + len - m(self.bits))] }
+        if a + len < m(self.bits) {
+            vec![(a, a + len)]
+        } else {
+            vec![(a, m(self.bits) - 1), (0, a + len - m(self.bits))]
+        }
     }
     /// The patterns read as two's complement, as one or two intervals in [−2^(bits−1), 2^(bits−1)).
     pub fn signed(&self) -> Vec<(i128, i128)> {
@@ -68,7 +77,13 @@ impl V {
             .unsigned()
             .into_iter()
             .flat_map(|(a, b)| {
-                if b < h { vec![(a, b)] } else if a >= h { vec![(a - m(self.bits), b - m(self.bits))] } else { vec![(h - m(self.bits), b - m(self.bits)), (a, h - 1)] }
+                if b < h {
+                    vec![(a, b)]
+                } else if a >= h {
+                    vec![(a - m(self.bits), b - m(self.bits))]
+                } else {
+                    vec![(h - m(self.bits), b - m(self.bits)), (a, h - 1)]
+                }
             })
             .collect();
         // pieces that touch are one run: [−6, −1] and [0, 4] are [−6, 4]
@@ -114,8 +129,10 @@ impl V {
     }
     /// Restricted to the patterns whose `signed`/unsigned reading lies in [lo, hi]; None when none does.
     fn within(self, signed: bool, lo: i128, hi: i128) -> Option<V> {
-        let p: Vec<(i128, i128)> =
-            (if signed { self.signed() } else { self.unsigned() }).into_iter().filter_map(|(a, b)| (a.max(lo) <= b.min(hi)).then(|| (a.max(lo), b.min(hi)))).collect();
+        let p: Vec<(i128, i128)> = (if signed { self.signed() } else { self.unsigned() })
+            .into_iter()
+            .filter_map(|(a, b)| (a.max(lo) <= b.min(hi)).then(|| (a.max(lo), b.min(hi))))
+            .collect();
         if p.is_empty() {
             return None;
         }
@@ -198,7 +215,10 @@ fn binary(a: V, op: &VerilogOp, b: V) -> V {
         VerilogOp::BitOr => V::new(amin.max(bmin), ((1i128 << bitlen(amax.max(bmax))) - 1).min(amax + bmax), bits),
         VerilogOp::BitXor => V::new(0, ((1i128 << bitlen(amax.max(bmax))) - 1).min(amax + bmax), bits),
         VerilogOp::LogicalAnd | VerilogOp::LogicalOr => {
-            let (ta, tb) = ((amin > 0).then_some(true).or((amax == 0).then_some(false)), (bmin > 0).then_some(true).or((bmax == 0).then_some(false)));
+            let (ta, tb) = (
+                (amin > 0).then_some(true).or((amax == 0).then_some(false)),
+                (bmin > 0).then_some(true).or((bmax == 0).then_some(false)),
+            );
             bool_of(match op {
                 VerilogOp::LogicalAnd => match (ta, tb) {
                     (Some(false), _) | (_, Some(false)) => Some(false),
@@ -219,12 +239,26 @@ fn binary(a: V, op: &VerilogOp, b: V) -> V {
             _ => V::full(bits),
         },
         VerilogOp::Shr => match (b.lo == b.hi, b.lo) {
-            (true, k) if (0..128).contains(&k) => V::from_pieces(&ua.iter().map(|(x, y)| (x >> k, y >> k)).collect::<Vec<_>>(), bits),
+            (true, k) if (0..128).contains(&k) => {
+                V::from_pieces(&ua.iter().map(|(x, y)| (x >> k, y >> k)).collect::<Vec<_>>(), bits)
+            }
             _ if ub.len() == 1 && bmax < 128 => V::new(amin >> bmax, amax >> bmin, bits),
             _ => V::new(0, amax, bits),
         },
-        VerilogOp::Eq => bool_of(if amin == amax && bmin == bmax && ua.len() == 1 && ub.len() == 1 { Some(amin == bmin) } else if amax < bmin || bmax < amin { Some(false) } else { None }),
-        VerilogOp::Ne => bool_of(if amin == amax && bmin == bmax && ua.len() == 1 && ub.len() == 1 { Some(amin != bmin) } else if amax < bmin || bmax < amin { Some(true) } else { None }),
+        VerilogOp::Eq => bool_of(if amin == amax && bmin == bmax && ua.len() == 1 && ub.len() == 1 {
+            Some(amin == bmin)
+        } else if amax < bmin || bmax < amin {
+            Some(false)
+        } else {
+            None
+        }),
+        VerilogOp::Ne => bool_of(if amin == amax && bmin == bmax && ua.len() == 1 && ub.len() == 1 {
+            Some(amin != bmin)
+        } else if amax < bmin || bmax < amin {
+            Some(true)
+        } else {
+            None
+        }),
         VerilogOp::Lt => bool_of(cmp(&|x, y| x < y)),
         VerilogOp::Le => bool_of(cmp(&|x, y| x <= y)),
         VerilogOp::Gt => bool_of(cmp(&|x, y| x > y)),
@@ -284,14 +318,27 @@ impl Probe for Collect {
             Verilog::Combinatorial(b) => Code::Comb(b),
             Verilog::Custom(t) if t.contains("q <= d") => Code::Dff,
             Verilog::Custom(t) if t.contains("case (address)") => {
-                let vals: Vec<i128> = t.lines().filter_map(|l| l.split_once("data = ")).filter(|(k, _)| !k.contains("default")).filter_map(|(_, v)| literal(v.trim_end_matches(';').trim()).map(|x| x.0)).collect();
+                let vals: Vec<i128> = t
+                    .lines()
+                    .filter_map(|l| l.split_once("data = "))
+                    .filter(|(k, _)| !k.contains("default"))
+                    .filter_map(|(_, v)| literal(v.trim_end_matches(';').trim()).map(|x| x.0))
+                    .collect();
                 let cases = vals.len();
-                let addr_bits = t.lines().filter_map(|l| l.trim().split_once(':')).filter_map(|(k, _)| literal(k.trim()).map(|x| x.1)).next().unwrap_or(0);
+                let addr_bits = t
+                    .lines()
+                    .filter_map(|l| l.trim().split_once(':'))
+                    .filter_map(|(k, _)| literal(k.trim()).map(|x| x.1))
+                    .next()
+                    .unwrap_or(0);
                 Code::Rom(vals, cases as i128 == m(addr_bits))
             }
-            Verilog::Custom(t) if t.contains("read_data <= mem") => {
-                Code::Ram(t.lines().filter_map(|l| l.split_once("] = ")).filter_map(|(_, v)| literal(v.trim_end_matches(';').trim()).map(|x| x.0)).collect())
-            }
+            Verilog::Custom(t) if t.contains("read_data <= mem") => Code::Ram(
+                t.lines()
+                    .filter_map(|l| l.split_once("] = "))
+                    .filter_map(|(_, v)| literal(v.trim_end_matches(';').trim()).map(|x| x.0))
+                    .collect(),
+            ),
             _ => Code::Other,
         };
         self.modules.push(Module { path: self.path.join("."), code });
@@ -383,7 +430,11 @@ impl State<'_> {
     /// A value as the signal `name` holds it: at its width (a literal takes it; a narrower value is zero-extended).
     fn fit(&self, name: &str, v: V) -> V {
         let bits = self.widths.get(name).copied().unwrap_or(v.bits);
-        if v.lit || v.bits >= bits { v.with_bits(bits) } else { V::from_pieces(&v.unsigned(), bits) }
+        if v.lit || v.bits >= bits {
+            v.with_bits(bits)
+        } else {
+            V::from_pieces(&v.unsigned(), bits)
+        }
     }
 
     fn grow(&mut self, name: &str, v: V) {
@@ -470,7 +521,9 @@ impl Eval<'_, '_> {
                 (a.div_euclid(1 << k.lo), b.div_euclid(1 << k.lo))
             }
             // `!x + 1`, two's complement negation written out: −x, whatever x's format (its patterns are −x's)
-            E::Binary(a, VerilogOp::Add, b) if matches!(&**a, E::Unary(VerilogOpUnary::Not, _)) && literal_value(b) == Some(1) => {
+            E::Binary(a, VerilogOp::Add, b)
+                if matches!(&**a, E::Unary(VerilogOpUnary::Not, _)) && literal_value(b) == Some(1) =>
+            {
                 let E::Unary(_, x) = &**a else { unreachable!() };
                 let (lo, hi) = self.exact(x)?;
                 (-hi, -lo)
@@ -500,7 +553,11 @@ impl Eval<'_, '_> {
                     _ => false,
                 };
                 let (a, b) = self.exact(x)?;
-                if signed { (-b - 1, -a - 1) } else { (m(v.bits) - 1 - b, m(v.bits) - 1 - a) }
+                if signed {
+                    (-b - 1, -a - 1)
+                } else {
+                    (m(v.bits) - 1 - b, m(v.bits) - 1 - a)
+                }
             }
             E::Unary(VerilogOpUnary::Neg, x) => {
                 let (a, b) = self.exact(x)?;
@@ -524,7 +581,11 @@ impl Eval<'_, '_> {
             E::Cast(x, w) => {
                 let v = self.expr(x)?;
                 let w = *w as u32;
-                if w >= v.bits { V::from_pieces(&v.unsigned(), w) } else { v.with_bits(w) }
+                if w >= v.bits {
+                    V::from_pieces(&v.unsigned(), w)
+                } else {
+                    v.with_bits(w)
+                }
             }
             E::Slice(x, w, off) => {
                 let (v, k) = (self.expr(x)?, self.expr(off)?);
@@ -545,7 +606,11 @@ impl Eval<'_, '_> {
                     return Some(V::new(0, 1, 1));
                 }
                 let (a, b) = (v.lo.div_euclid(1 << i.lo), v.hi.div_euclid(1 << i.lo));
-                if a == b { V::exact(a.rem_euclid(2), 1) } else { V::new(0, 1, 1) }
+                if a == b {
+                    V::exact(a.rem_euclid(2), 1)
+                } else {
+                    V::new(0, 1, 1)
+                }
             }
             E::Binary(a, op, b) => binary(self.expr(a)?, op, self.expr(b)?),
             E::Unary(op, x) => {
@@ -634,7 +699,12 @@ impl Eval<'_, '_> {
         }
     }
 
-    fn branch(&mut self, refine: Option<(String, V)>, then: &dyn Fn(&mut Self), base: &HashMap<String, Write>) -> HashMap<String, Write> {
+    fn branch(
+        &mut self,
+        refine: Option<(String, V)>,
+        then: &dyn Fn(&mut Self),
+        base: &HashMap<String, Write>,
+    ) -> HashMap<String, Write> {
         let saved = self.refine.clone();
         let mut w = base.clone();
         if let Some((n, v)) = refine {
@@ -646,7 +716,8 @@ impl Eval<'_, '_> {
                 if let Some(e) = x.2.clone() {
                     self.loops = e.1.clone();
                     if let Some(v) = self.expr(&e.0) {
-                        let bitwise = matches!(&e.0, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
+                        let bitwise =
+                            matches!(&e.0, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
                         *x = (v, if bitwise { None } else { self.exact(&e.0) }, x.2.clone());
                     }
                 }
@@ -668,7 +739,8 @@ impl Eval<'_, '_> {
                     // the exact value rides with the write: a later assignment on the same path replaces both. A
                     // bitwise step (a sign extension `x | 0x100`, fields put side by side) is no arithmetic to
                     // overflow: its patterns are the value, read in the target's format
-                    let bitwise = matches!(value, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
+                    let bitwise =
+                        matches!(value, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
                     let exact = if bitwise { None } else { self.exact(value) };
                     let w = (v, exact, Some(std::rc::Rc::new((value.clone(), self.loops.clone()))));
                     self.cur.insert(n, w);
@@ -714,11 +786,15 @@ impl Eval<'_, '_> {
             }
             S::Match(mt) => {
                 let base = self.cur.clone();
-                let outs: Vec<HashMap<String, Write>> = mt.cases.iter().map(|c| self.branch(None, &|e| e.block(&c.block), &base)).collect();
+                let outs: Vec<HashMap<String, Write>> =
+                    mt.cases.iter().map(|c| self.branch(None, &|e| e.block(&c.block), &base)).collect();
                 self.merge(&base, outs);
             }
             S::Loop(l) => {
-                let (from, to) = (literal(&l.from.to_string()).map(|x| x.0).unwrap_or(0), literal(&l.to.to_string()).map(|x| x.0).unwrap_or(0));
+                let (from, to) = (
+                    literal(&l.from.to_string()).map(|x| x.0).unwrap_or(0),
+                    literal(&l.to.to_string()).map(|x| x.0).unwrap_or(0),
+                );
                 for k in from..to {
                     self.loops.push((l.index.clone(), k));
                     self.block(&l.block);
@@ -744,7 +820,11 @@ impl Eval<'_, '_> {
             let (mut v, mut ex): (Option<V>, Option<(i128, i128)>) = (None, None);
             for o in &outs {
                 // not written on this branch: what the path wrote before, or the signal's value (which fits)
-                let x = o.get(n).cloned().or_else(|| base.get(n).cloned()).or_else(|| self.st.vals.get(n).map(|v| (*v, None, None)));
+                let x = o
+                    .get(n)
+                    .cloned()
+                    .or_else(|| base.get(n).cloned())
+                    .or_else(|| self.st.vals.get(n).map(|v| (*v, None, None)));
                 if let Some((xv, xe, _)) = x {
                     v = Some(v.map_or(xv, |a| a.join(xv)));
                     ex = match (ex, xe) {
@@ -799,7 +879,8 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
             match &md.code {
                 Code::Comb(b) => {
                     let writes = {
-                        let mut e = Eval { st: &st, path: p, loops: vec![], refine: HashMap::new(), cur: HashMap::new() };
+                        let mut e =
+                            Eval { st: &st, path: p, loops: vec![], refine: HashMap::new(), cur: HashMap::new() };
                         e.block(b);
                         e.cur
                     };
@@ -809,7 +890,8 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
                         }
                         // the final write's exact value against the target's range in its declared format
                         if let (Some((a, b)), Some(&bits)) = (exact, c.widths.get(&n)) {
-                            let (lo, hi) = if (st.signed)(&n) { (-m(bits) / 2, m(bits) / 2 - 1) } else { (0, m(bits) - 1) };
+                            let (lo, hi) =
+                                if (st.signed)(&n) { (-m(bits) / 2, m(bits) / 2 - 1) } else { (0, m(bits) - 1) };
                             if a < lo || b > hi {
                                 let w = st.wraps.entry((p.to_string(), n.clone())).or_insert((a, b));
                                 *w = (w.0.min(a), w.1.max(b));
@@ -829,7 +911,9 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
                 Code::Rom(vals, full) => {
                     let n = format!("{p}.data");
                     let bits = c.widths.get(&n).copied().unwrap_or(1);
-                    let mut v = vals.iter().fold(None, |acc: Option<V>, &x| Some(acc.map_or(V::exact(x, bits), |a| a.join(V::exact(x, bits)))));
+                    let mut v = vals.iter().fold(None, |acc: Option<V>, &x| {
+                        Some(acc.map_or(V::exact(x, bits), |a| a.join(V::exact(x, bits))))
+                    });
                     if !full {
                         v = Some(v.map_or(V::exact(0, bits), |a| a.join(V::exact(0, bits))));
                     }
@@ -857,7 +941,8 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
         if let Some(before) = before {
             // past a feed-forward pipeline's depth many times over, something still grows (a counter, an
             // accumulator, a loop through a register): whatever grew this sweep takes every pattern (widening)
-            let grew: Vec<String> = st.vals.iter().filter(|(n, v)| before.get(*n) != Some(*v)).map(|(n, _)| n.clone()).collect();
+            let grew: Vec<String> =
+                st.vals.iter().filter(|(n, v)| before.get(*n) != Some(*v)).map(|(n, _)| n.clone()).collect();
             for n in grew {
                 let bits = st.vals[&n].bits;
                 st.vals.insert(n, V::full(bits));
@@ -893,16 +978,31 @@ mod tests {
         assert_eq!(binary(V::new(-2000, 2000, 12), &VerilogOp::Add, b).range(true), (-1997, 2003));
         let mag = V::new(0, 2048, 16);
         assert_eq!(binary(mag, &VerilogOp::Mul, mag).range(false), (0, 2048 * 2048));
-        assert_eq!(binary(V::new(-4, 4, 8), &VerilogOp::Shr, V { lit: true, ..V::exact(1, 32) }).range(false), (0, 127));
+        assert_eq!(
+            binary(V::new(-4, 4, 8), &VerilogOp::Shr, V { lit: true, ..V::exact(1, 32) }).range(false),
+            (0, 127)
+        );
         // a shift by a variable amount: 1 << (0..7) is 1..128; 1000 >> (1..3) is 125..500
         assert_eq!(binary(V::new(1, 1, 32), &VerilogOp::Shl, V::new(0, 7, 5)).range(false), (1, 128));
         assert_eq!(binary(V::new(1000, 1000, 16), &VerilogOp::Shr, V::new(1, 3, 4)).range(false), (125, 500));
         assert!(binary(V::new(1, 3, 8), &VerilogOp::Shl, V::new(0, 7, 3)).is_full());
         // sign extension of a negative S8 into 9 bits: −128..−1 exactly
-        assert_eq!(binary(V::new(128, 255, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(true), (-128, -1));
-        assert_eq!(binary(V::new(0, 256, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(false), (256, 511));
-        assert_eq!(binary(V::new(0, 1023, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(), [(0, 0)]);
-        assert_eq!(binary(V::new(0, 1024, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(), [(0, 1)]);
+        assert_eq!(
+            binary(V::new(128, 255, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(true),
+            (-128, -1)
+        );
+        assert_eq!(
+            binary(V::new(0, 256, 9), &VerilogOp::BitOr, V { lit: true, ..V::exact(0x100, 32) }).range(false),
+            (256, 511)
+        );
+        assert_eq!(
+            binary(V::new(0, 1023, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(),
+            [(0, 0)]
+        );
+        assert_eq!(
+            binary(V::new(0, 1024, 15), &VerilogOp::Gt, V { lit: true, ..V::exact(1023, 32) }).unsigned(),
+            [(0, 1)]
+        );
     }
 
     #[test]

@@ -263,7 +263,9 @@ fn expand_macros(defs: &str, s: &str) -> Vec<String> {
         let Some(body) = p.balanced(b'{', b'}') else { continue };
         // the matcher without its repetitions, then its parameters in order; the optional groups' markers and
         // parameters apart
-        let names = |t: &str| -> Vec<String> { t.split('$').skip(1).filter_map(|t| t.split_once(':').map(|(n, _)| n.trim().to_string())).collect() };
+        let names = |t: &str| -> Vec<String> {
+            t.split('$').skip(1).filter_map(|t| t.split_once(':').map(|(n, _)| n.trim().to_string())).collect()
+        };
         let mut plain = String::new();
         let mut groups: Vec<(String, Vec<String>)> = vec![];
         let mut m = Parser { s: matcher.as_bytes(), i: 0 };
@@ -272,7 +274,12 @@ fn expand_macros(defs: &str, s: &str) -> Vec<String> {
                 m.i += 2;
                 let inner = m.balanced(b'(', b')').unwrap_or_default();
                 if m.s.get(m.i + 1) == Some(&b'?') {
-                    let marker = inner.split('$').next().unwrap_or("").trim_matches(|c: char| c == ',' || c.is_whitespace()).trim_end_matches(':');
+                    let marker = inner
+                        .split('$')
+                        .next()
+                        .unwrap_or("")
+                        .trim_matches(|c: char| c == ',' || c.is_whitespace())
+                        .trim_end_matches(':');
                     groups.push((marker.to_string(), names(&inner)));
                 }
                 m.i += 2; // `)` and the repetition's `*`, `+` or `?`
@@ -302,7 +309,13 @@ fn expand_macros(defs: &str, s: &str) -> Vec<String> {
             let mut bound: Vec<(String, String)> = params.iter().cloned().zip(args.iter().cloned()).collect();
             let mut rest = &args[params.len()..];
             for (marker, group) in &groups {
-                let Some(first) = rest.first().and_then(|a| a.strip_prefix(marker.as_str())).and_then(|a| a.trim_start().strip_prefix(':')) else { continue };
+                let Some(first) = rest
+                    .first()
+                    .and_then(|a| a.strip_prefix(marker.as_str()))
+                    .and_then(|a| a.trim_start().strip_prefix(':'))
+                else {
+                    continue;
+                };
                 if marker.is_empty() || rest.len() < group.len() {
                     break;
                 }
@@ -338,7 +351,10 @@ fn optional_groups(body: &str, bound: &[(String, String)]) -> String {
             p.i += 2;
             let inner = p.balanced(b'(', b')').unwrap_or_default();
             if p.s.get(p.i + 1) == Some(&b'?') {
-                let used = inner.split('$').skip(1).map(|t| t.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect::<String>());
+                let used = inner
+                    .split('$')
+                    .skip(1)
+                    .map(|t| t.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect::<String>());
                 let all_bound = used.filter(|n| !n.is_empty()).all(|n| bound.iter().any(|(b, _)| *b == n));
                 if all_bound {
                     out.extend_from_slice(inner.as_bytes());
@@ -365,7 +381,8 @@ pub fn declarations() -> (HashMap<String, Decl>, HashMap<String, Ty>) {
     let mut sources: Vec<String> = vec![strip(LIBRARY)];
     let files: Vec<String> = rtl::source::FILES.iter().map(|f| strip(f.1)).collect();
     // a file whose macros are re-exported by path (`pub(crate) use name;`) lends them to every other file
-    let lenders: Vec<&String> = files.iter().filter(|s| s.contains("macro_rules!") && s.contains("pub(crate) use ")).collect();
+    let lenders: Vec<&String> =
+        files.iter().filter(|s| s.contains("macro_rules!") && s.contains("pub(crate) use ")).collect();
     for s in &files {
         sources.extend(expand_local_macros(s));
         for d in lenders.iter().filter(|d| !std::ptr::eq(**d, s)) {
@@ -529,7 +546,9 @@ impl Format {
                 let Ty::Expr(w) = &a[0] else { return None };
                 f(false, num(w)?, 0)
             }
-            Ty::Path(n, a) if a.is_empty() && depth < 4 => Format::of(n, aliases, depth + 1).map(|x| Format { name: name.to_string(), ..x }),
+            Ty::Path(n, a) if a.is_empty() && depth < 4 => {
+                Format::of(n, aliases, depth + 1).map(|x| Format { name: name.to_string(), ..x })
+            }
             _ => None,
         }
     }
@@ -542,7 +561,9 @@ fn leaf_format(t: &Ty, aliases: &HashMap<String, Ty>) -> Option<Format> {
             Ty::Expr(w) => Some(Format { name: format!("Bits<{w}>"), signed: false, bits: w.parse().ok()?, frac: 0 }),
             // a named constant
             Ty::Path(c, ca) if ca.is_empty() => match aliases.get(c) {
-                Some(Ty::Expr(w)) => Some(Format { name: format!("Bits<{c}>"), signed: false, bits: w.parse().ok()?, frac: 0 }),
+                Some(Ty::Expr(w)) => {
+                    Some(Format { name: format!("Bits<{c}>"), signed: false, bits: w.parse().ok()?, frac: 0 })
+                }
                 _ => None,
             },
             _ => None,
@@ -717,7 +738,8 @@ pub fn seen_ticking<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>], tick: &dy
     let mut r = Runner::<U>::new();
     let mut ranges = Ranges::default();
     let zeros = vec![0u64; U::INPUTS.len()];
-    let slots = inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).chain((0..U::LATENCY + 1).map(|_| None));
+    let slots =
+        inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).chain((0..U::LATENCY + 1).map(|_| None));
     for (k, s) in slots.enumerate() {
         if k % 4096 == 0 {
             tick(k.min(inputs.len()));
@@ -737,11 +759,7 @@ pub fn seen_ticking<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>], tick: &dy
 /// many outputs are missing: the evidence behind the steps `wraps` argues for, since the model does not wrap.
 pub fn mismatches(m: &UnitModel, inputs: &[Vec<i64>], outputs: &[Vec<u64>]) -> usize {
     let want = m.run(inputs);
-    let differ = want
-        .iter()
-        .zip(outputs)
-        .filter(|(w, o)| vectors::unit::from_patterns(o, m.outputs) != **w)
-        .count();
+    let differ = want.iter().zip(outputs).filter(|(w, o)| vectors::unit::from_patterns(o, m.outputs) != **w).count();
     differ + want.len().abs_diff(outputs.len())
 }
 
@@ -809,11 +827,17 @@ mod tests {
         assert_eq!(
             Ty::parse("[Delay<Sq1_10, { table_builder::LATENCY }>; 3]"),
             Some(Ty::Array(
-                Box::new(Ty::Path("Delay".into(), vec![Ty::Path("Sq1_10".into(), vec![]), Ty::Expr("table_builder::LATENCY".into())])),
+                Box::new(Ty::Path(
+                    "Delay".into(),
+                    vec![Ty::Path("Sq1_10".into(), vec![]), Ty::Expr("table_builder::LATENCY".into())]
+                )),
                 "3".into()
             ))
         );
-        assert_eq!(Ty::parse("rtl::palette::palette_pipeline::PalettePipeline<8, 9>").map(|t| t.text()), Some("PalettePipeline<8, 9>".into()));
+        assert_eq!(
+            Ty::parse("rtl::palette::palette_pipeline::PalettePipeline<8, 9>").map(|t| t.text()),
+            Some("PalettePipeline<8, 9>".into())
+        );
         assert_eq!(Ty::parse("Signal<Local, Bits<16>>").map(|t| t.text()), Some("Signal<Local, Bits<16>>".into()));
     }
 

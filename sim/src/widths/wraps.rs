@@ -58,7 +58,8 @@ const fn w(block: &'static str, signal: &'static str, kind: Kind, why: &'static 
 
 use Kind::{Bound, Modular, Split};
 
-const BILINEAR_MEAN: &str = "t·2^F ± |t' − t|·u with u < 2^F is the weighted mean t·(2^F − u) + t'·u of two UW values: \
+const BILINEAR_MEAN: &str =
+    "t·2^F ± |t' − t|·u with u < 2^F is the weighted mean t·(2^F − u) + t'·u of two UW values: \
     0 .. (2^W − 1)·2^F; intervals see the sign and the magnitude of t' − t apart";
 const BILINEAR_WIDE: &str = "a bilinear unit's exact result is a weighted mean of weighted means of UW texels: below \
     2^(W + 2F − D) ≤ 2^25";

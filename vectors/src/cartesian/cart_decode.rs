@@ -90,17 +90,33 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     let mut v = vec![];
     for (x, z) in [
         (127, 127), // pole
-        (255, 127), (127, 255), (255, 255), (0, 0), (0, 255), (255, 0), (254, 254),
-        (254, 127), (0, 127), (127, 0), (127, 254), // diamond corners
-        (190, 191), (191, 191), (64, 63), (63, 63), // on the edge and one step past it
-        (128, 127), (127, 128), (126, 127), // the smallest tilts
+        (255, 127),
+        (127, 255),
+        (255, 255),
+        (0, 0),
+        (0, 255),
+        (255, 0),
+        (254, 254),
+        (254, 127),
+        (0, 127),
+        (127, 0),
+        (127, 254), // diamond corners
+        (190, 191),
+        (191, 191),
+        (64, 63),
+        (63, 63), // on the edge and one step past it
+        (128, 127),
+        (127, 128),
+        (126, 127), // the smallest tilts
     ] {
         v.push(vec![x, z]);
     }
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("cart_decode", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("cart_decode", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+    .with_exhaustive(exhaustive)
+    .with_accuracy(accuracy);
 
 /// Every texel, the angle of the decoded bump against the direction it stands for: the seed's decode and the
 /// consistent one (L1 = 254).

@@ -52,17 +52,31 @@ fn exhaustive() -> Vec<Vec<i64>> {
 /// neighbours (the smallest tilts), and the two centre-most texels (U + V = 255: BumpX = 0).
 pub fn hard_cases() -> Vec<Vec<i64>> {
     [
-        (0, 0), (255, 255), (0, 255), (255, 0), // corners: (∓1, 0, 0) and (0, 0, ±1), on the horizon
-        (127, 0), (0, 127), (255, 128), (128, 255), // edge midpoints, also on the horizon
-        (127, 127), (128, 128), (127, 128), (128, 127), // around the pole
-        (129, 126), (1, 254), (254, 1),
+        (0, 0),
+        (255, 255),
+        (0, 255),
+        (255, 0), // corners: (∓1, 0, 0) and (0, 0, ±1), on the horizon
+        (127, 0),
+        (0, 127),
+        (255, 128),
+        (128, 255), // edge midpoints, also on the horizon
+        (127, 127),
+        (128, 128),
+        (127, 128),
+        (128, 127), // around the pole
+        (129, 126),
+        (1, 254),
+        (254, 1),
     ]
     .iter()
     .map(|&(u, v)| vec![u, v])
     .collect()
 }
 
-pub static MODEL: UnitModel = UnitModel::new("cart_decode_hemi_oct", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("cart_decode_hemi_oct", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+        .with_exhaustive(exhaustive)
+        .with_accuracy(accuracy);
 
 /// Every texel, the angle of the decoded vector against what it means (the decode is exact: this is a check).
 fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {

@@ -182,11 +182,11 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
         v
     };
     let mut v = vec![
-        base(127, 127, [0, 127, 0], [0, 0], 0),    // pole lit from above: full
-        base(127, 127, [127, 0, 0], [0, 0], 0),    // light on the horizon: 0
-        base(127, 127, [0, -127, 0], [0, 0], 255), // light below: 0
+        base(127, 127, [0, 127, 0], [0, 0], 0),     // pole lit from above: full
+        base(127, 127, [127, 0, 0], [0, 0], 0),     // light on the horizon: 0
+        base(127, 127, [0, -127, 0], [0, 0], 255),  // light below: 0
         base(255, 255, [127, 0, 127], [0, 0], 255), // texel 255 guarded, lit along its tilt
-        base(127, 127, [1, 127, 0], [0, 0], 128),  // the seed's minimal step near the pole
+        base(127, 127, [1, 127, 0], [0, 0], 128),   // the seed's minimal step near the pole
     ];
     // opposite vertex lights interpolated through zero length
     let mut z = base(127, 127, [127, 0, 0], [128, 0], 0);
@@ -237,10 +237,16 @@ fn hard_cases_hemi_oct_matte() -> Vec<Vec<i64>> {
 
 pub static MODEL: UnitModel = UnitModel::new("cart_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases);
 
-pub static MODEL_HEMI_OCT: UnitModel = UnitModel::new("cart_pipeline_hemi_oct", (INPUTS, OUTPUTS), exact_ports_hemi_oct, random, hard_cases_hemi_oct);
+pub static MODEL_HEMI_OCT: UnitModel =
+    UnitModel::new("cart_pipeline_hemi_oct", (INPUTS, OUTPUTS), exact_ports_hemi_oct, random, hard_cases_hemi_oct);
 
-pub static MODEL_MATTE: UnitModel =
-    UnitModel::new("cart_pipeline_matte", (matte::INPUTS, matte::OUTPUTS), exact_ports_matte, random_matte, hard_cases_matte);
+pub static MODEL_MATTE: UnitModel = UnitModel::new(
+    "cart_pipeline_matte",
+    (matte::INPUTS, matte::OUTPUTS),
+    exact_ports_matte,
+    random_matte,
+    hard_cases_matte,
+);
 
 pub static MODEL_HEMI_OCT_MATTE: UnitModel = UnitModel::new(
     "cart_pipeline_hemi_oct_matte",

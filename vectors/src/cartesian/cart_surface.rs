@@ -117,9 +117,13 @@ macro_rules! bilinear_texels {
 
 pub const GLOSSY: Layout = layout!(glossy, bilinear_texels!(glossy), Some(glossy::input::conc));
 pub const MATTE: Layout = layout!(matte, bilinear_texels!(matte), None);
-pub const NEAREST_GLOSSY: Layout =
-    layout!(nearest_glossy, Texels::Nearest([nearest_glossy::input::t_x, nearest_glossy::input::t_z]), Some(nearest_glossy::input::conc));
-pub const NEAREST_MATTE: Layout = layout!(nearest_matte, Texels::Nearest([nearest_matte::input::t_x, nearest_matte::input::t_z]), None);
+pub const NEAREST_GLOSSY: Layout = layout!(
+    nearest_glossy,
+    Texels::Nearest([nearest_glossy::input::t_x, nearest_glossy::input::t_z]),
+    Some(nearest_glossy::input::conc)
+);
+pub const NEAREST_MATTE: Layout =
+    layout!(nearest_matte, Texels::Nearest([nearest_matte::input::t_x, nearest_matte::input::t_z]), None);
 
 /// A variant: its texel decode, its filter, and whether it has the gloss unit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -154,7 +158,8 @@ impl Variant {
     }
 
     pub fn model(self) -> &'static UnitModel {
-        let k = (self.nearest as usize) * 4 + matches!(self.decode, Decode::HemiOct) as usize * 2 + !self.gloss as usize;
+        let k =
+            (self.nearest as usize) * 4 + matches!(self.decode, Decode::HemiOct) as usize * 2 + !self.gloss as usize;
         MODELS[k]
     }
 }
@@ -298,7 +303,7 @@ pub fn set_texels(at: Layout, x: &mut [i64], f: &[i64]) {
 /// opposite vertex lights interpolated to zero becomes the zero light), then the light's own ends: each axis at
 /// ±1.0 exactly (±1024) against the pole and the texel-255 guard, and every component at its most negative code.
 fn hard_cases_with(v: Variant) -> Vec<Vec<i64>> {
-    use crate::cart_pipeline::{input as full, LIGHTS, SRC, DST, TEXELS};
+    use crate::cart_pipeline::{input as full, DST, LIGHTS, SRC, TEXELS};
     let at = v.layout();
     let full_cases = match v.decode {
         Decode::Seed => crate::cart_pipeline::hard_cases(),
@@ -326,7 +331,13 @@ fn hard_cases_with(v: Variant) -> Vec<Vec<i64>> {
         out.push(x);
     }
     let base = out[0].clone();
-    for (texel, light) in [(127, [0, 1024, 0]), (127, [0, -1024, 0]), (255, [1024, 0, 0]), (255, [0, 0, -1024]), (127, [-2048, -2048, -2048])] {
+    for (texel, light) in [
+        (127, [0, 1024, 0]),
+        (127, [0, -1024, 0]),
+        (255, [1024, 0, 0]),
+        (255, [0, 0, -1024]),
+        (127, [-2048, -2048, -2048]),
+    ] {
         let mut x = base.clone();
         let mut f = vec![0; crate::cart_pipeline::INPUTS.len()];
         for t in TEXELS {
@@ -356,7 +367,8 @@ macro_rules! variant {
             accuracy_with(Variant::ALL[$k], samples, seed)
         }
         pub static $model: UnitModel =
-            UnitModel::new($name, (Variant::ALL[$k].layout().inputs, OUTPUTS), $exact, $random, $hard).with_accuracy($acc);
+            UnitModel::new($name, (Variant::ALL[$k].layout().inputs, OUTPUTS), $exact, $random, $hard)
+                .with_accuracy($acc);
     };
 }
 
@@ -371,8 +383,14 @@ variant!(MODEL_NEAREST_HEMI_OCT_MATTE, "cart_surface_nearest_hemi_oct_matte", 7,
 
 /// The models in `Variant::ALL`'s order.
 static MODELS: [&UnitModel; 8] = [
-    &MODEL, &MODEL_MATTE, &MODEL_HEMI_OCT, &MODEL_HEMI_OCT_MATTE,
-    &MODEL_NEAREST, &MODEL_NEAREST_MATTE, &MODEL_NEAREST_HEMI_OCT, &MODEL_NEAREST_HEMI_OCT_MATTE,
+    &MODEL,
+    &MODEL_MATTE,
+    &MODEL_HEMI_OCT,
+    &MODEL_HEMI_OCT_MATTE,
+    &MODEL_NEAREST,
+    &MODEL_NEAREST_MATTE,
+    &MODEL_NEAREST_HEMI_OCT,
+    &MODEL_NEAREST_HEMI_OCT_MATTE,
 ];
 
 #[cfg(test)]
@@ -384,7 +402,7 @@ mod tests {
     /// The full pipeline's random vector with its three vertex lights set equal, and the same pixel as a surface
     /// variant's vector.
     fn pair(v: Variant, rng: &mut rand_chacha::ChaCha8Rng) -> (Vec<i64>, Vec<i64>) {
-        use cart_pipeline::{input as full, LIGHTS, SRC, DST, TEXELS};
+        use cart_pipeline::{input as full, DST, LIGHTS, SRC, TEXELS};
         let mut f = (cart_pipeline::MODEL.random)(rng);
         let q: [i64; 3] = std::array::from_fn(|c| f[LIGHTS[0][c]]);
         for k in LIGHTS {
@@ -482,11 +500,17 @@ mod tests {
             let at = v.layout();
             let name = |k: usize| at.inputs[k].name;
             assert_eq!(at.light.map(name), ["l_x", "l_y", "l_z"]);
-            assert_eq!((name(at.mode), at.conc.map(name)), ("mode", at.inputs.iter().any(|p| p.name == "conc").then_some("conc")));
+            assert_eq!(
+                (name(at.mode), at.conc.map(name)),
+                ("mode", at.inputs.iter().any(|p| p.name == "conc").then_some("conc"))
+            );
             assert_eq!(at.src.map(name), ["src_r", "src_g", "src_b"]);
             match at.texels {
                 Texels::Bilinear { corners, ublend, vblend } => {
-                    assert_eq!((corners[3].map(name), name(ublend), name(vblend)), (["t11_x", "t11_z"], "ublend", "vblend"))
+                    assert_eq!(
+                        (corners[3].map(name), name(ublend), name(vblend)),
+                        (["t11_x", "t11_z"], "ublend", "vblend")
+                    )
                 }
                 Texels::Nearest(t) => assert_eq!(t.map(name), ["t_x", "t_z"]),
             }

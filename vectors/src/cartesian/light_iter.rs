@@ -73,7 +73,8 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("light_iter", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("light_iter", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
 
 /// Random vectors against the reals, every component (the ideal clamped to the output's range).
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {

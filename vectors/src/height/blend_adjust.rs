@@ -50,5 +50,6 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
     vec![Accuracy::new("1/512 LSB, every factor", s)]
 }
 
-pub static MODEL: UnitModel =
-    UnitModel::new("blend_adjust", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("blend_adjust", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+    .with_exhaustive(exhaustive)
+    .with_accuracy(accuracy);

@@ -54,7 +54,10 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
 /// Random windows, factors and scales: the exact normal against the method in reals on the same codes.
 fn accuracy(samples: usize, seed: u64) -> Vec<Accuracy> {
     vec![Accuracy::over_random("degrees, random windows, factors and scales", samples, seed, random_inputs, |v| {
-        vec![crate::stats::angle_deg(exact_ports(v).iter().map(|&c| c as f64).collect::<Vec<_>>().try_into().unwrap_or([0.0; 3]), ideal(v))]
+        vec![crate::stats::angle_deg(
+            exact_ports(v).iter().map(|&c| c as f64).collect::<Vec<_>>().try_into().unwrap_or([0.0; 3]),
+            ideal(v),
+        )]
     })]
 }
 
@@ -74,7 +77,13 @@ mod tests {
             let mut w = window(&v).to_vec();
             w[8] = 200; // texel k: unread
             let map = filters::Grid { side: 3, h: &w };
-            let want = filters::Filter::Blinn.exact(&map, &map, v[input::scale], 256 + v[input::ublend], 256 + v[input::vblend]);
+            let want = filters::Filter::Blinn.exact(
+                &map,
+                &map,
+                v[input::scale],
+                256 + v[input::ublend],
+                256 + v[input::vblend],
+            );
             assert_eq!(exact_ports(&v), want.to_vec());
         }
     }

@@ -39,8 +39,16 @@ pub enum Filter {
     Trilinear,
 }
 
-pub const ALL: [Filter; 8] =
-    [Filter::BSpline, Filter::BSpline4, Filter::Bezier, Filter::Blinn, Filter::FourTap, Filter::Sobel, Filter::Prewitt, Filter::Trilinear];
+pub const ALL: [Filter; 8] = [
+    Filter::BSpline,
+    Filter::BSpline4,
+    Filter::Bezier,
+    Filter::Blinn,
+    Filter::FourTap,
+    Filter::Sobel,
+    Filter::Prewitt,
+    Filter::Trilinear,
+];
 
 /// The LOD fraction the trilinear path is measured at (U8: 128 = ½).
 pub const TRILINEAR_LOD: i64 = 128;
@@ -61,7 +69,11 @@ impl Filter {
 
     /// The bits of the map's heights.
     pub fn bits(self) -> u32 {
-        if self == Filter::BSpline4 { 4 } else { 8 }
+        if self == Filter::BSpline4 {
+            4
+        } else {
+            8
+        }
     }
 
     /// The unit normal (Sq1.10) at height-mode coordinate (cu, cv) (UQ8.8 texels) of a map of 8-bit UQ6.2 codes
@@ -74,7 +86,9 @@ impl Filter {
                 let net = bezier_points(&map.window(i, j));
                 let g = replicate::grids(&net);
                 // the plain factors, doubled to the units' 9 bits (exact)
-                let r: [i64; 4] = std::array::from_fn(|c| bilinear::exact_wide(g[c][0], g[c][1], g[c][2], g[c][3], 2 * ub, 2 * vb, B, D));
+                let r: [i64; 4] = std::array::from_fn(|c| {
+                    bilinear::exact_wide(g[c][0], g[c][1], g[c][2], g[c][3], 2 * ub, 2 * vb, B, D)
+                });
                 let (t1, t2) = tangent::exact(r[0], r[1], r[2], r[3], ub, vb);
                 height_normal::exact(t1, t2, k)
             }
@@ -94,7 +108,8 @@ impl Filter {
                 // for Prewitt's D = 6) so that a flat map's (0, 64·D·c·2^16, 0) shifts to 448 or 480, which the
                 // normaliser returns as exactly (0, 1024, 0) (as `height_normal`'s factor 7 does)
                 let c = if self == Filter::Prewitt { 5 } else { 7 };
-                height_normal::to_s10([-c * k * gb[0], (64 * c * divisor(self)) << 16, -c * k * gb[1]]) // S42 at most, exact
+                height_normal::to_s10([-c * k * gb[0], (64 * c * divisor(self)) << 16, -c * k * gb[1]])
+                // S42 at most, exact
             }
             Filter::Trilinear => {
                 let (t1, t2) = trilinear_tangents(map, level1, cu, cv, TRILINEAR_LOD);
@@ -116,7 +131,8 @@ impl Filter {
             }
             Filter::Blinn => {
                 let g = replicate::grids(&map.window(i, j));
-                let r: [f64; 3] = std::array::from_fn(|c| bilinear::ideal_channel(g[c][0], g[c][1], g[c][2], g[c][3], u, v));
+                let r: [f64; 3] =
+                    std::array::from_fn(|c| bilinear::ideal_channel(g[c][0], g[c][1], g[c][2], g[c][3], u, v));
                 height_normal::ideal((r[1] - r[0]) / 2.0, (r[2] - r[0]) / 2.0, k)
             }
             Filter::FourTap | Filter::Sobel | Filter::Prewitt => {
@@ -156,7 +172,8 @@ fn bspline_tangents(map: &Grid<f64>, cu: f64, cv: f64) -> [f64; 2] {
 /// unit takes half of each with 12 fraction bits: one arithmetic shift of 6, floor. `blinn_pipeline`'s model.
 pub fn blinn_tangents(w: &[i64; 9], ub: i64, vb: i64) -> ([i64; 3], i64, i64) {
     let g = replicate::grids(w);
-    let r: [i64; 3] = std::array::from_fn(|c| bilinear::exact_wide(g[c][0], g[c][1], g[c][2], g[c][3], 2 * ub, 2 * vb, B, D));
+    let r: [i64; 3] =
+        std::array::from_fn(|c| bilinear::exact_wide(g[c][0], g[c][1], g[c][2], g[c][3], 2 * ub, 2 * vb, B, D));
     let half = tangent::IN_FRAC - tangent::FRAC + 1;
     (r, truncate(r[1] - r[0], half), truncate(r[2] - r[0], half)) // S26 → S20, floor
 }
@@ -175,13 +192,15 @@ pub fn bspline_exact(w: &[i64; 9], ub: i64, vb: i64, k: i64) -> [i64; 3] {
 /// its tangents halved, floor), blended by the LOD fraction `lod` (U8): t0 + (t1/2 − t0)·lod/256, floor.
 pub fn trilinear_tangents(map: &Grid<i64>, level1: &Grid<i64>, cu: i64, cv: i64, lod: i64) -> (i64, i64) {
     let t = |g: &Grid<i64>, cu: i64, cv: i64| {
-        let x = height_pipeline::exact_trace(&[g.window(cu >> 8, cv >> 8).to_vec(), vec![cu & 255, cv & 255, 16]].concat());
+        let x =
+            height_pipeline::exact_trace(&[g.window(cu >> 8, cv >> 8).to_vec(), vec![cu & 255, cv & 255, 16]].concat());
         (x.t1, x.t2)
     };
     let (a1, a2) = t(map, cu, cv);
     let (b1, b2) = t(level1, cu >> 1, cv >> 1); // the coordinate in level-1 texels: UQ8.8, floor
     let (b1, b2) = (b1 >> 1, b2 >> 1); // per level-0 texel: halved, floor
-    (truncate(a1 * 256 + (b1 - a1) * lod, 8), truncate(a2 * 256 + (b2 - a2) * lod, 8)) // S30 → S21, floor
+    (truncate(a1 * 256 + (b1 - a1) * lod, 8), truncate(a2 * 256 + (b2 - a2) * lod, 8))
+    // S30 → S21, floor
 }
 
 /// Equation 1: the Bézier points of a 3×3 window of B-spline points, rounded half up to 8 bits.
@@ -197,7 +216,9 @@ pub fn bezier_points(w: &[i64; 9]) -> [i64; 9] {
 }
 
 /// The derivative filter's two gradients (∂/∂x, ∂/∂y) at the centre of a 3×3 window, times `divisor`.
-pub fn gradient<T: Copy + std::ops::Sub<Output = T> + std::ops::Add<Output = T> + std::ops::Mul<Output = T> + From<i32>>(
+pub fn gradient<
+    T: Copy + std::ops::Sub<Output = T> + std::ops::Add<Output = T> + std::ops::Mul<Output = T> + From<i32>,
+>(
     f: Filter,
     w: &[T; 9],
 ) -> [T; 2] {
@@ -240,19 +261,24 @@ impl<T: Copy> Grid<'_, T> {
 /// MIP level 1 of 8-bit codes: each 2×2 block's mean, rounded half up, in the same height units.
 pub fn mip_exact(h: &[i64], side: usize) -> Vec<i64> {
     let s = side / 2;
-    (0..s * s).map(|q| {
-        let (x, y) = (2 * (q % s), 2 * (q / s));
-        round_half_up(h[y * side + x] + h[y * side + x + 1] + h[(y + 1) * side + x] + h[(y + 1) * side + x + 1], 2) // U10 → U8
-    }).collect()
+    (0..s * s)
+        .map(|q| {
+            let (x, y) = (2 * (q % s), 2 * (q / s));
+            round_half_up(h[y * side + x] + h[y * side + x + 1] + h[(y + 1) * side + x] + h[(y + 1) * side + x + 1], 2)
+            // U10 → U8
+        })
+        .collect()
 }
 
 /// The same in reals.
 pub fn mip_ideal(h: &[f64], side: usize) -> Vec<f64> {
     let s = side / 2;
-    (0..s * s).map(|q| {
-        let (x, y) = (2 * (q % s), 2 * (q / s));
-        (h[y * side + x] + h[y * side + x + 1] + h[(y + 1) * side + x] + h[(y + 1) * side + x + 1]) / 4.0
-    }).collect()
+    (0..s * s)
+        .map(|q| {
+            let (x, y) = (2 * (q % s), 2 * (q / s));
+            (h[y * side + x] + h[y * side + x + 1] + h[(y + 1) * side + x] + h[(y + 1) * side + x + 1]) / 4.0
+        })
+        .collect()
 }
 
 /// ¶84: the B-spline's height itself, a third blend of the four units' results at the plain factors:
@@ -322,7 +348,13 @@ pub fn fig8(map: &Grid<f64>, k: f64, light: [f64; 3], step: f64) -> Fig8 {
             for b in 3..n - 2 {
                 let (along, edge) = (a as f64 + 0.37, b as f64);
                 s = s.max(jump(&shade, edge, along, 1.0, 0.0)).max(jump(&shade, along, edge, 0.0, 1.0));
-                c = c.max(jump(&|x, z| t(x, z)[1], edge, along, 1.0, 0.0)).max(jump(&|x, z| t(x, z)[0], along, edge, 0.0, 1.0));
+                c = c.max(jump(&|x, z| t(x, z)[1], edge, along, 1.0, 0.0)).max(jump(
+                    &|x, z| t(x, z)[0],
+                    along,
+                    edge,
+                    0.0,
+                    1.0,
+                ));
             }
         }
         (s, c)
@@ -365,7 +397,8 @@ mod tests {
         });
         let (u, v) = (0.3, 0.8);
         let (gb, ga) = (replicate::grids(&netf), replicate::grids(&wf));
-        let f = [(0.5 + u / 2.0, 0.5 + v / 2.0), (u / 2.0, 0.5 + v / 2.0), (0.5 + u / 2.0, v / 2.0), (u / 2.0, v / 2.0)];
+        let f =
+            [(0.5 + u / 2.0, 0.5 + v / 2.0), (u / 2.0, 0.5 + v / 2.0), (0.5 + u / 2.0, v / 2.0), (u / 2.0, v / 2.0)];
         for c in 0..4 {
             let bez = bilinear::ideal_channel(gb[c][0], gb[c][1], gb[c][2], gb[c][3], u, v);
             let adj = bilinear::ideal_channel(ga[c][0], ga[c][1], ga[c][2], ga[c][3], f[c].0, f[c].1);
@@ -417,9 +450,13 @@ mod tests {
         let (g0, g1) = (Grid { side: 16, h: &map }, Grid { side: 8, h: &l1 });
         for _ in 0..2_000 {
             let (cu, cv) = (rng.gen_range(256..15 * 256), rng.gen_range(256..15 * 256));
-            let t0 = height_pipeline::exact_trace(&[g0.window(cu >> 8, cv >> 8).to_vec(), vec![cu & 255, cv & 255, 16]].concat());
+            let t0 = height_pipeline::exact_trace(
+                &[g0.window(cu >> 8, cv >> 8).to_vec(), vec![cu & 255, cv & 255, 16]].concat(),
+            );
             assert_eq!(trilinear_tangents(&g0, &g1, cu, cv, 0), (t0.t1, t0.t2));
-            let t1 = height_pipeline::exact_trace(&[g1.window(cu >> 9, cv >> 9).to_vec(), vec![(cu >> 1) & 255, (cv >> 1) & 255, 16]].concat());
+            let t1 = height_pipeline::exact_trace(
+                &[g1.window(cu >> 9, cv >> 9).to_vec(), vec![(cu >> 1) & 255, (cv >> 1) & 255, 16]].concat(),
+            );
             let (a, b) = trilinear_tangents(&g0, &g1, cu, cv, 255);
             // 255/256 of the way: within 1/256 of the level-0 minus level-1 difference, plus the floors
             let near = |x: i64, lo: i64, hi: i64| (x - (hi >> 1)).abs() <= ((hi >> 1) - lo).abs() / 256 + 2;
@@ -454,7 +491,6 @@ mod tests {
         // derivative jumps for both
         assert!(b.blinn.0 > 0.05 && b.bspline.0 > 0.05, "{b:?}");
     }
-
 }
 
 /// Equation 1 against blend adjust on random windows and factors at the map's own relief (k = 1): how many

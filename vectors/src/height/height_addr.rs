@@ -86,10 +86,14 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
             }
         }
     }
-    vec![Accuracy::new("blend, 1/256 LSB, every 7th coordinate, all sizes", s), Accuracy::new("texel differs (0 or 1)", t)]
+    vec![
+        Accuracy::new("blend, 1/256 LSB, every 7th coordinate, all sizes", s),
+        Accuracy::new("texel differs (0 or 1)", t),
+    ]
 }
 
-pub static MODEL: UnitModel = UnitModel::new("height_addr", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("height_addr", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
 
 #[cfg(test)]
 mod tests {

@@ -30,7 +30,11 @@ pub fn axis(t: i64, size_log2: i64, wrap: bool) -> [i64; 3] {
     let size = 1i64 << crate::fixed::saturate(size_log2, 0, 8);
     std::array::from_fn(|c| {
         let x = t + c as i64 - 1; // S10: −1..256
-        if wrap { x.rem_euclid(size) } else { crate::fixed::saturate(x, 0, size - 1) }
+        if wrap {
+            x.rem_euclid(size)
+        } else {
+            crate::fixed::saturate(x, 0, size - 1)
+        }
     })
 }
 
@@ -177,7 +181,13 @@ fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
         let (x, y) = (rng.gen_range(0..words), rng.gen_range(0..words));
         vec![0, 0, 0, 0, 0, 0, 1, y * WORDS as i64 + x, rng.gen_range(0..=u32::MAX as i64)]
     } else {
-        let centre = |rng: &mut dyn rand::RngCore| if rng.gen_range(0..4) == 0 { rng.gen_range(0..256) } else { rng.gen_range(0..32) };
+        let centre = |rng: &mut dyn rand::RngCore| {
+            if rng.gen_range(0..4) == 0 {
+                rng.gen_range(0..256)
+            } else {
+                rng.gen_range(0..32)
+            }
+        };
         let (i, j) = (centre(rng), centre(rng));
         let (ul, vl) = (rng.gen_range(0..=REGION_LOG2), rng.gen_range(0..=REGION_LOG2));
         Map::read(i, j, ul, vl, rng.gen_range(0..2) == 1, rng.gen_range(0..2) == 1)
@@ -203,10 +213,15 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
         let at = |t: i64, log2: i64, wrap: i64| {
             let size = (1i64 << log2.min(8)) as f64;
             let x = t as f64;
-            if wrap == 1 { x.rem_euclid(size) as usize } else { x.clamp(0.0, size - 1.0) as usize }
+            if wrap == 1 {
+                x.rem_euclid(size) as usize
+            } else {
+                x.clamp(0.0, size - 1.0) as usize
+            }
         };
         for p in 0..9 {
-            let (x, y) = (at(v[i] + p as i64 % 3 - 1, v[ulog2], v[uwrap]), at(v[j] + p as i64 / 3 - 1, v[vlog2], v[vwrap]));
+            let (x, y) =
+                (at(v[i] + p as i64 % 3 - 1, v[ulog2], v[uwrap]), at(v[j] + p as i64 / 3 - 1, v[vlog2], v[vwrap]));
             let want = plain.get(&(x, y)).copied().unwrap_or(0);
             s.add((o[p] - want).abs() as f64, || format!("{v:?}, position {p}"));
         }
@@ -214,8 +229,9 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
     vec![Accuracy::new("8-bit LSB against the map read directly (a fetch: exact)", s)]
 }
 
-pub static MODEL: UnitModel =
-    UnitModel::new("height_fetch", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("height_fetch", (INPUTS, OUTPUTS), exact_ports, random, hard_cases)
+    .with_stream(run)
+    .with_accuracy(accuracy);
 
 #[cfg(test)]
 mod tests {

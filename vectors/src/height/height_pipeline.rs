@@ -126,13 +126,26 @@ fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
     };
     let angle = |v: &[i64]| vec![crate::stats::angle_deg(exact_trace(v).normal.map(|c| c as f64), ideal(v))];
     vec![
-        crate::unit::Accuracy::over_random("degrees, random windows, factors and scales", samples, seed, random_inputs, angle),
-        crate::unit::Accuracy::over_random("degrees, smooth windows (slopes ≤ 4 LSB/texel·4), k = 1", samples, seed, smooth, angle),
+        crate::unit::Accuracy::over_random(
+            "degrees, random windows, factors and scales",
+            samples,
+            seed,
+            random_inputs,
+            angle,
+        ),
+        crate::unit::Accuracy::over_random(
+            "degrees, smooth windows (slopes ≤ 4 LSB/texel·4), k = 1",
+            samples,
+            seed,
+            smooth,
+            angle,
+        ),
     ]
 }
 
 pub static MODEL: crate::unit::UnitModel =
-    crate::unit::UnitModel::new("height_pipeline", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
+    crate::unit::UnitModel::new("height_pipeline", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+        .with_accuracy(accuracy);
 
 #[cfg(test)]
 mod tests {
@@ -144,8 +157,14 @@ mod tests {
         let w = [12.0, 200.0, 37.0, 90.0, 5.0, 255.0, 61.0, 140.0, 33.0];
         for (u, v) in [(0.0, 0.0), (0.25, 0.75), (0.5, 0.5), (0.99, 0.01)] {
             let g = replicate::grids(&w);
-            let f = [(0.5 + u / 2.0, 0.5 + v / 2.0), (u / 2.0, 0.5 + v / 2.0), (0.5 + u / 2.0, v / 2.0), (u / 2.0, v / 2.0)];
-            let r: Vec<f64> = (0..4).map(|k| bilinear::ideal_channel(g[k][0], g[k][1], g[k][2], g[k][3], f[k].0, f[k].1)).collect();
+            let f = [
+                (0.5 + u / 2.0, 0.5 + v / 2.0),
+                (u / 2.0, 0.5 + v / 2.0),
+                (0.5 + u / 2.0, v / 2.0),
+                (u / 2.0, v / 2.0),
+            ];
+            let r: Vec<f64> =
+                (0..4).map(|k| bilinear::ideal_channel(g[k][0], g[k][1], g[k][2], g[k][3], f[k].0, f[k].1)).collect();
             let (t1, t2) = tangent::ideal(r[0], r[1], r[2], r[3], u, v);
             let (_, hu, hv) = bspline(&w, u, v);
             assert!((2.0 * t1 - hu).abs() < 1e-9 && (2.0 * t2 - hv).abs() < 1e-9, "({u}, {v}): {t1} {hu} / {t2} {hv}");
@@ -168,7 +187,8 @@ mod tests {
         let bump = |x: f64, z: f64| 200.0 * (-((x - 8.0).powi(2) + (z - 8.0).powi(2)) / 8.0).exp();
         let light = [0.8f64, 0.6, 0.0];
         let shade_at = |cx: i64| {
-            let w: Vec<i64> = (0..9).map(|p| bump((cx + p % 3 - 1) as f64, (8 + p / 3 - 1) as f64).round() as i64).collect();
+            let w: Vec<i64> =
+                (0..9).map(|p| bump((cx + p % 3 - 1) as f64, (8 + p / 3 - 1) as f64).round() as i64).collect();
             let n = exact_trace(&[w, vec![128, 128, 16]].concat()).normal.map(|c| c as f64 / 1024.0);
             n[0] * light[0] + n[1] * light[1] + n[2] * light[2]
         };
@@ -176,7 +196,8 @@ mod tests {
         let (facing, away) = (shade_at(10), shade_at(6));
         assert!(facing > shade_at(8) && shade_at(8) > away, "facing {facing}, top {}, away {away}", shade_at(8));
         // and on the facing flank the normal leans towards +x: N_x > 0 where H falls along u
-        let w: Vec<i64> = (0..9).map(|p| bump((10 + p % 3 - 1) as f64, (8 + p / 3 - 1) as f64).round() as i64).collect();
+        let w: Vec<i64> =
+            (0..9).map(|p| bump((10 + p % 3 - 1) as f64, (8 + p / 3 - 1) as f64).round() as i64).collect();
         assert!(exact_trace(&[w, vec![128, 128, 16]].concat()).normal[0] > 0);
     }
 
@@ -184,7 +205,14 @@ mod tests {
     fn the_exact_path_is_close_to_its_own_ideal() {
         let rows = accuracy(20_000, 1);
         for r in &rows {
-            assert!(r.stats.mean() < 0.1, "{}: mean {:.4}°, max {:.4}° at {}", r.metric, r.stats.mean(), r.stats.max, r.stats.argmax);
+            assert!(
+                r.stats.mean() < 0.1,
+                "{}: mean {:.4}°, max {:.4}° at {}",
+                r.metric,
+                r.stats.mean(),
+                r.stats.max,
+                r.stats.argmax
+            );
         }
     }
 }

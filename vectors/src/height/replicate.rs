@@ -38,9 +38,11 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
 fn accuracy(samples: usize, seed: u64) -> Vec<Accuracy> {
     vec![Accuracy::over_random("8-bit LSB (wiring, exact)", samples, seed, random_inputs, |v| {
         let out = exact_ports(v);
-        let want = [[v[0], v[1], v[3], v[4]], [v[1], v[2], v[4], v[5]], [v[3], v[4], v[6], v[7]], [v[4], v[5], v[7], v[8]]];
+        let want =
+            [[v[0], v[1], v[3], v[4]], [v[1], v[2], v[4], v[5]], [v[3], v[4], v[6], v[7]], [v[4], v[5], v[7], v[8]]];
         out.iter().zip(want.concat()).map(|(o, w)| (o - w).abs() as f64).collect()
     })]
 }
 
-pub static MODEL: UnitModel = UnitModel::new("replicate", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("replicate", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);

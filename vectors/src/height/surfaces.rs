@@ -38,14 +38,29 @@ pub fn cap() -> Surface {
     let (r, c, base) = (24.0f64, 24.0f64, 16.0f64);
     let h = move |x: f64, z: f64| {
         let d2 = (x - c).powi(2) + (z - c).powi(2);
-        if d2 < r * r { ((r * r - d2).sqrt() - base).max(0.0) } else { 0.0 }
+        if d2 < r * r {
+            ((r * r - d2).sqrt() - base).max(0.0)
+        } else {
+            0.0
+        }
     };
     let grad = move |x: f64, z: f64| {
         let d2 = (x - c).powi(2) + (z - c).powi(2);
         let y = (r * r - d2).max(0.0).sqrt();
-        if y > base { (-(x - c) / y, -(z - c) / y) } else { (0.0, 0.0) }
+        if y > base {
+            (-(x - c) / y, -(z - c) / y)
+        } else {
+            (0.0, 0.0)
+        }
     };
-    Surface { name: "spherical cap, radius 24, 8 texels high".into(), h: Box::new(h), grad: Box::new(grad), texels: 48, lo: 0.0, hi: r - base }
+    Surface {
+        name: "spherical cap, radius 24, 8 texels high".into(),
+        h: Box::new(h),
+        grad: Box::new(grad),
+        texels: 48,
+        lo: 0.0,
+        hi: r - base,
+    }
 }
 
 pub struct Row {
@@ -85,11 +100,21 @@ pub fn measure_filter(f: Filter, s: &Surface, per: usize) -> Row {
     // MIP level 1: the stored (rounded) codes, which the method in reals on the codes reads too; of the true heights
     let l1 = filters::mip_exact(&codes, n);
     let (l1_true, l1_codes) = (filters::mip_ideal(&true_c, n), l1.iter().map(|&c| c as f64).collect::<Vec<f64>>());
-    let (g_true, g_codes_f, g_codes) = (Grid { side: n, h: &true_c[..] }, Grid { side: n, h: &codes_f[..] }, Grid { side: n, h: &codes[..] });
-    let (h_true, h_codes_f, h_codes) = (Grid { side: n / 2, h: &l1_true[..] }, Grid { side: n / 2, h: &l1_codes[..] }, Grid { side: n / 2, h: &l1[..] });
+    let (g_true, g_codes_f, g_codes) =
+        (Grid { side: n, h: &true_c[..] }, Grid { side: n, h: &codes_f[..] }, Grid { side: n, h: &codes[..] });
+    let (h_true, h_codes_f, h_codes) = (
+        Grid { side: n / 2, h: &l1_true[..] },
+        Grid { side: n / 2, h: &l1_codes[..] },
+        Grid { side: n / 2, h: &l1[..] },
+    );
     let mut row = Row {
-        name: s.name.clone(), filter: f.name(), scale, float_true: ErrorStats::default(), float_codes: ErrorStats::default(),
-        exact: ErrorStats::default(), exact_vs_float: ErrorStats::default(),
+        name: s.name.clone(),
+        filter: f.name(),
+        scale,
+        float_true: ErrorStats::default(),
+        float_codes: ErrorStats::default(),
+        exact: ErrorStats::default(),
+        exact_vs_float: ErrorStats::default(),
     };
     for j in 2..n - 2 {
         for i in 2..n - 2 {
@@ -131,9 +156,20 @@ mod tests {
                 if f == Filter::Bezier {
                     // equation 1's points rounded to the units' 8 bits cost more than the blend-adjusted path's floors
                     let seed = measure_filter(Filter::BSpline, &s, 2);
-                    assert!(r.exact_vs_float.mean() > seed.exact_vs_float.mean(), "{}: {:.4}°", r.name, r.exact_vs_float.mean());
+                    assert!(
+                        r.exact_vs_float.mean() > seed.exact_vs_float.mean(),
+                        "{}: {:.4}°",
+                        r.name,
+                        r.exact_vs_float.mean()
+                    );
                 } else if f.bits() == 8 {
-                    assert!(r.exact_vs_float.mean() < 0.1, "{} / {}: {:.4}° mean", r.filter, r.name, r.exact_vs_float.mean());
+                    assert!(
+                        r.exact_vs_float.mean() < 0.1,
+                        "{} / {}: {:.4}° mean",
+                        r.filter,
+                        r.name,
+                        r.exact_vs_float.mean()
+                    );
                 }
                 // and the B-spline in reals follows a long wave closely
                 if s.name.contains("wavelength 32") && f == Filter::BSpline {

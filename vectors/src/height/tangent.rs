@@ -67,10 +67,12 @@ fn accuracy(samples: usize, seed: u64) -> Vec<Accuracy> {
         use input::*;
         let f = |x: i64| x as f64 / (1 << IN_FRAC) as f64;
         let (e1, e2) = exact(v[red], v[green], v[blue], v[alpha], v[ublend], v[vblend]);
-        let (i1, i2) = ideal(f(v[red]), f(v[green]), f(v[blue]), f(v[alpha]), v[ublend] as f64 / 256.0, v[vblend] as f64 / 256.0);
+        let (i1, i2) =
+            ideal(f(v[red]), f(v[green]), f(v[blue]), f(v[alpha]), v[ublend] as f64 / 256.0, v[vblend] as f64 / 256.0);
         let q = (1 << FRAC) as f64;
         vec![(e1 as f64 / q - i1).abs() * q, (e2 as f64 / q - i2).abs() * q]
     })]
 }
 
-pub static MODEL: UnitModel = UnitModel::new("tangent", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("tangent", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);

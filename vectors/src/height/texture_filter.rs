@@ -52,8 +52,12 @@ fn exact_ports(i: &[i64]) -> Vec<i64> {
     use input::*;
     let f = feeds(i);
     let (b, d) = (crate::height::height_pipeline::BLEND_BITS, crate::height::height_pipeline::DROPPED);
-    let wide: [i64; 4] = std::array::from_fn(|c| bilinear::exact_wide(f[c].0[0], f[c].0[1], f[c].0[2], f[c].0[3], f[c].1 .0, f[c].1 .1, b, d));
-    let out: Vec<i64> = (0..4).map(|c| bilinear::exact_channel_with(f[c].0[0], f[c].0[1], f[c].0[2], f[c].0[3], f[c].1 .0, f[c].1 .1, b, d)).collect();
+    let wide: [i64; 4] = std::array::from_fn(|c| {
+        bilinear::exact_wide(f[c].0[0], f[c].0[1], f[c].0[2], f[c].0[3], f[c].1 .0, f[c].1 .1, b, d)
+    });
+    let out: Vec<i64> = (0..4)
+        .map(|c| bilinear::exact_channel_with(f[c].0[0], f[c].0[1], f[c].0[2], f[c].0[3], f[c].1 .0, f[c].1 .1, b, d))
+        .collect();
     let (t1, t2) = tangent::exact(wide[0], wide[1], wide[2], wide[3], i[ublend], i[vblend]);
     let n = normalise::exact(height_normal::exact(t1, t2, i[scale]));
     [out, n.to_vec()].concat()
@@ -69,7 +73,10 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
         for (ox, oy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
             v.push([texels.clone(), vec![ub, vb, 1, ox, oy, 16]].concat());
             v.push([vec![200; 16], vec![ub, vb, 1, ox, oy, 255]].concat());
-            v.push([vec![0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255], vec![ub, vb, 1, ox, oy, 16]].concat());
+            v.push(
+                [vec![0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255, 0, 255], vec![ub, vb, 1, ox, oy, 16]]
+                    .concat(),
+            );
         }
     }
     v
@@ -95,7 +102,14 @@ fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
             (0..4)
                 .map(|c| {
                     let t = f[c].0.map(|x| x as f64);
-                    let ideal = bilinear::ideal_channel(t[0], t[1], t[2], t[3], f[c].1 .0 as f64 / 512.0, f[c].1 .1 as f64 / 512.0);
+                    let ideal = bilinear::ideal_channel(
+                        t[0],
+                        t[1],
+                        t[2],
+                        t[3],
+                        f[c].1 .0 as f64 / 512.0,
+                        f[c].1 .1 as f64 / 512.0,
+                    );
                     (out[c] as f64 - ideal).abs()
                 })
                 .collect()
@@ -104,13 +118,17 @@ fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
             let w = window(&std::array::from_fn(|q| std::array::from_fn(|c| v[4 * q + c])), v[input::ox], v[input::oy]);
             let hp = [w.to_vec(), vec![v[input::ublend], v[input::vblend], v[input::scale]]].concat();
             let out = exact_ports(v);
-            vec![crate::stats::angle_deg([out[4], out[5], out[6]].map(|c| c as f64), crate::height::height_pipeline::ideal(&hp))]
+            vec![crate::stats::angle_deg(
+                [out[4], out[5], out[6]].map(|c| c as f64),
+                crate::height::height_pipeline::ideal(&hp),
+            )]
         }),
     ]
 }
 
 pub static MODEL: crate::unit::UnitModel =
-    crate::unit::UnitModel::new("texture_filter", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
+    crate::unit::UnitModel::new("texture_filter", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+        .with_accuracy(accuracy);
 
 #[cfg(test)]
 mod tests {

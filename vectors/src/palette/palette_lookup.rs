@@ -70,7 +70,11 @@ pub fn in_region(rng: &mut dyn rand::RngCore, bits: u32) -> i64 {
     use rand::Rng;
     let n = region_end(bits);
     let k = rng.gen_range(0..2 * n);
-    if k < n { k } else { (1i64 << bits) - 1 - (k - n) }
+    if k < n {
+        k
+    } else {
+        (1i64 << bits) - 1 - (k - n)
+    }
 }
 
 /// Both tables' first and last entries written (each write while the other table is read), then frames flipped
@@ -140,8 +144,9 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
     vec![Accuracy::new("8-bit LSB against the entry last written (a read: exact)", s)]
 }
 
-pub static MODEL: UnitModel =
-    UnitModel::new("palette_lookup", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("palette_lookup", (INPUTS, OUTPUTS), exact_ports, random, hard_cases)
+    .with_stream(run)
+    .with_accuracy(accuracy);
 
 #[cfg(test)]
 mod tests {
@@ -149,7 +154,14 @@ mod tests {
 
     #[test]
     fn a_frame_never_sees_the_table_being_written() {
-        let v = vec![write(0, 5, 5, 0x1111_1111), read(0, 5), read(1, 5), write(1, 5, 5, 0x2222_2222), read(1, 5), read(0, 5)];
+        let v = vec![
+            write(0, 5, 5, 0x1111_1111),
+            read(0, 5),
+            read(1, 5),
+            write(1, 5, 5, 0x2222_2222),
+            read(1, 5),
+            read(0, 5),
+        ];
         let o = run(&v);
         assert_eq!(o[1], vec![0; 4], "frame 0 still shows the empty table");
         assert_eq!(o[2], vec![0x11; 4], "flipped: the table written");

@@ -30,7 +30,13 @@ pub fn pack(e: [i64; 4]) -> i64 {
 /// The lookup's vector for one of ours: the pixel, and the built entry packed when building.
 fn lookup_vector(v: &[i64]) -> Vec<i64> {
     use input::*;
-    let e = table_builder::exact([v[n_x], v[n_y], v[n_z]], [v[l_x], v[l_y], v[l_z]], [v[h_x], v[h_y], v[h_z]], v[conc], [v[spec_r], v[spec_g], v[spec_b]]);
+    let e = table_builder::exact(
+        [v[n_x], v[n_y], v[n_z]],
+        [v[l_x], v[l_y], v[l_z]],
+        [v[h_x], v[h_y], v[h_z]],
+        v[conc],
+        [v[spec_r], v[spec_g], v[spec_b]],
+    );
     vec![v[frame], v[idx], v[build], v[b_idx], if v[build] == 1 { pack(e) } else { 0 }]
 }
 
@@ -115,7 +121,10 @@ fn random_with(rng: &mut dyn rand::RngCore, bits: u32) -> Vec<i64> {
     if bits > 8 {
         (v[input::idx], v[input::b_idx]) = (palette_lookup::in_region(rng, bits), palette_lookup::in_region(rng, bits));
     }
-    let (l, h) = (table_builder::sq1_10([rng.gen_range(-1.0..1.0), 1.0, rng.gen_range(-1.0..1.0)]), table_builder::sq1_10([rng.gen_range(-0.5..0.5), 1.0, rng.gen_range(-0.5..0.5)]));
+    let (l, h) = (
+        table_builder::sq1_10([rng.gen_range(-1.0..1.0), 1.0, rng.gen_range(-1.0..1.0)]),
+        table_builder::sq1_10([rng.gen_range(-0.5..0.5), 1.0, rng.gen_range(-0.5..0.5)]),
+    );
     for c in 0..3 {
         v[input::l_x + c] = l[c];
         v[input::h_x + c] = h[c];
@@ -144,9 +153,11 @@ pub mod wide {
     }
 }
 
-pub static MODEL: UnitModel = UnitModel::new("palette_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
+pub static MODEL: UnitModel =
+    UnitModel::new("palette_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
 pub static MODEL_12: UnitModel =
-    UnitModel::new("palette_pipeline_12", (wide::INPUTS, wide::OUTPUTS), exact_ports_12, random_12, hard_cases_12).with_stream(run_12);
+    UnitModel::new("palette_pipeline_12", (wide::INPUTS, wide::OUTPUTS), exact_ports_12, random_12, hard_cases_12)
+        .with_stream(run_12);
 
 #[cfg(test)]
 mod tests {
@@ -172,7 +183,13 @@ mod tests {
         v.push(pixel(1, 2));
         v.push(pixel(0, 2));
         let o = run(&v);
-        let want = table_builder::exact(normal_of(2), table_builder::sq1_10([0.3, 1.0, 0.2]), [0, 1024, 0], 96, [255, 200, 120]);
+        let want = table_builder::exact(
+            normal_of(2),
+            table_builder::sq1_10([0.3, 1.0, 0.2]),
+            [0, 1024, 0],
+            96,
+            [255, 200, 120],
+        );
         assert_eq!(o[4], vec![0; 4], "frame 0 reads table 0, still empty");
         assert_eq!(o[5], want.to_vec(), "frame 1 reads the table built for it");
         assert_eq!(o[7], want.to_vec(), "and does not see table 0 being rebuilt");

@@ -45,7 +45,13 @@ pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
         .zip(taken(inputs))
         .map(|(v, take)| {
             let packed = if take {
-                palette_pipeline::pack(table_builder::exact_normalised([v[n_x], v[n_y], v[n_z]], [v[l_x], v[l_y], v[l_z]], [v[h_x], v[h_y], v[h_z]], v[conc], [v[spec_r], v[spec_g], v[spec_b]]))
+                palette_pipeline::pack(table_builder::exact_normalised(
+                    [v[n_x], v[n_y], v[n_z]],
+                    [v[l_x], v[l_y], v[l_z]],
+                    [v[h_x], v[h_y], v[h_z]],
+                    v[conc],
+                    [v[spec_r], v[spec_g], v[spec_b]],
+                ))
             } else {
                 0
             };
@@ -97,7 +103,16 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
         v.push(palette_pipeline::pixel(1, e));
     }
     // the most negative normal components (an unnormalised word: the RAM is the user's)
-    v.push([vec![0, 0, 1, 30], vec![-2048; 3], table_builder::sq1_10([-1.0, -1.0, -1.0]).to_vec(), table_builder::sq1_10([-1.0, -1.0, -1.0]).to_vec(), vec![255, 255, 255, 255]].concat());
+    v.push(
+        [
+            vec![0, 0, 1, 30],
+            vec![-2048; 3],
+            table_builder::sq1_10([-1.0, -1.0, -1.0]).to_vec(),
+            table_builder::sq1_10([-1.0, -1.0, -1.0]).to_vec(),
+            vec![255, 255, 255, 255],
+        ]
+        .concat(),
+    );
     v.push(palette_pipeline::pixel(1, 30));
     v
 }
@@ -111,13 +126,17 @@ fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
         let n = crate::normalise::exact([rng.gen_range(-512..512), rng.gen_range(-512..512), rng.gen_range(-512..512)]);
         v[input::n_x..=input::n_z].copy_from_slice(&n);
     }
-    let (l, h) = (table_builder::sq1_10([rng.gen_range(-1.0..1.0), 1.0, rng.gen_range(-1.0..1.0)]), table_builder::sq1_10([rng.gen_range(-0.5..0.5), 1.0, rng.gen_range(-0.5..0.5)]));
+    let (l, h) = (
+        table_builder::sq1_10([rng.gen_range(-1.0..1.0), 1.0, rng.gen_range(-1.0..1.0)]),
+        table_builder::sq1_10([rng.gen_range(-0.5..0.5), 1.0, rng.gen_range(-0.5..0.5)]),
+    );
     v[input::l_x..=input::l_z].copy_from_slice(&l);
     v[input::h_x..=input::h_z].copy_from_slice(&h);
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("palette_pipeline_shared", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
+pub static MODEL: UnitModel =
+    UnitModel::new("palette_pipeline_shared", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
 
 #[cfg(test)]
 mod tests {
@@ -134,7 +153,10 @@ mod tests {
     #[test]
     fn an_entry_is_palette_pipeline_s_for_the_same_palette() {
         // the same stream, builds alternating with pixels: the shared unit reads what the unshared one reads
-        let s: Vec<Vec<i64>> = palette_pipeline::hard_cases().iter().flat_map(|u| [u.clone(), palette_pipeline::pixel(u[input::frame], u[input::idx])]).collect();
+        let s: Vec<Vec<i64>> = palette_pipeline::hard_cases()
+            .iter()
+            .flat_map(|u| [u.clone(), palette_pipeline::pixel(u[input::frame], u[input::idx])])
+            .collect();
         let shared: Vec<Vec<i64>> = s.iter().map(|u| from_unshared(u)).collect();
         assert!(taken(&shared).iter().zip(&s).all(|(&t, u)| t == (u[input::build] == 1)));
         let (a, b) = (palette_pipeline::run(&s), run(&shared));
@@ -145,7 +167,8 @@ mod tests {
     #[test]
     fn a_refused_build_leaves_the_entry_as_it_was() {
         let b = |e, n| from_unshared(&palette_pipeline::build(0, 0, e, n, 96));
-        let o = run(&[b(5, [0, 400, 0]), b(6, [0, 400, 0]), palette_pipeline::pixel(1, 5), palette_pipeline::pixel(1, 6)]);
+        let o =
+            run(&[b(5, [0, 400, 0]), b(6, [0, 400, 0]), palette_pipeline::pixel(1, 5), palette_pipeline::pixel(1, 6)]);
         assert_ne!(o[2], vec![0; 4], "entry 5 built");
         assert_eq!(o[3], vec![0; 4], "entry 6 refused: still empty");
     }

@@ -80,7 +80,9 @@ mod tests {
         let hm = [1.0, 4.0, 2.0, 7.0, 3.0, 9.0, 5.0, 6.0, 8.0];
         let g = |q| {
             let mut pts = vec![(0.0, 0.0, hm[4])];
-            pts.extend(neighbours(q).iter().map(|&(dx, dy)| (dx as f64, dy as f64, hm[((1 + dy) * 3 + 1 + dx) as usize])));
+            pts.extend(
+                neighbours(q).iter().map(|&(dx, dy)| (dx as f64, dy as f64, hm[((1 + dy) * 3 + 1 + dx) as usize])),
+            );
             fit(&pts)
         };
         let [a0, a1, _] = g(4);

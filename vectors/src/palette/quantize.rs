@@ -16,7 +16,11 @@ use crate::stats::dot;
 
 /// A mean or a sum of normals at unit length; one that cancels to zero is taken as straight up.
 fn unit(v: [f64; 3]) -> [f64; 3] {
-    if dot(v, v) > 0.0 { crate::stats::unit(v) } else { [0.0, 1.0, 0.0] }
+    if dot(v, v) > 0.0 {
+        crate::stats::unit(v)
+    } else {
+        [0.0, 1.0, 0.0]
+    }
 }
 
 /// Bits an index into `n` palette entries takes: ⌈log2 n⌉, at least 1.
@@ -65,7 +69,8 @@ fn median_cut(pts: &[[f64; 3]], wts: &[u64], target: usize) -> Vec<Vec<usize>> {
     let extent = |b: &[usize]| -> (usize, f64) {
         let mut best = (0, -1.0);
         for axis in 0..3 {
-            let (lo, hi) = b.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &i| (lo.min(pts[i][axis]), hi.max(pts[i][axis])));
+            let (lo, hi) =
+                b.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &i| (lo.min(pts[i][axis]), hi.max(pts[i][axis])));
             if hi - lo > best.1 {
                 best = (axis, hi - lo);
             }
@@ -353,12 +358,17 @@ mod tests {
     #[test]
     fn the_k_d_tree_finds_the_nearest() {
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
-        let pts: Vec<[f64; 3]> = (0..300).map(|_| unit([rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0)])).collect();
+        let pts: Vec<[f64; 3]> = (0..300)
+            .map(|_| unit([rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0)]))
+            .collect();
         let t = Nearest::new(&pts);
         for _ in 0..2_000 {
             let q = unit([rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0), rng.gen_range(-1.0..1.0)]);
             let brute = (0..pts.len()).min_by(|&a, &b| {
-                let (da, db) = ((0..3).map(|c| (pts[a][c] - q[c]).powi(2)).sum::<f64>(), (0..3).map(|c| (pts[b][c] - q[c]).powi(2)).sum::<f64>());
+                let (da, db) = (
+                    (0..3).map(|c| (pts[a][c] - q[c]).powi(2)).sum::<f64>(),
+                    (0..3).map(|c| (pts[b][c] - q[c]).powi(2)).sum::<f64>(),
+                );
                 da.total_cmp(&db)
             });
             assert_eq!(Some(t.find(q)), brute);

@@ -48,7 +48,13 @@ pub fn ideal(n: [i64; 3], l: [i64; 3], h: [i64; 3], conc: i64, spec: [i64; 3]) -
 
 fn split(i: &[i64]) -> ([i64; 3], [i64; 3], [i64; 3], i64, [i64; 3]) {
     use input::*;
-    ([i[n_x], i[n_y], i[n_z]], [i[l_x], i[l_y], i[l_z]], [i[h_x], i[h_y], i[h_z]], i[conc], [i[spec_r], i[spec_g], i[spec_b]])
+    (
+        [i[n_x], i[n_y], i[n_z]],
+        [i[l_x], i[l_y], i[l_z]],
+        [i[h_x], i[h_y], i[h_z]],
+        i[conc],
+        [i[spec_r], i[spec_g], i[spec_b]],
+    )
 }
 
 fn exact_ports(i: &[i64]) -> Vec<i64> {
@@ -64,7 +70,9 @@ pub fn sq1_10(v: [f64; 3]) -> [i64; 3] {
 /// Any normal (S10, zero included), unit L and H (Sq1.10), any C and specular colour.
 fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
     use rand::Rng;
-    let dir = |rng: &mut dyn rand::RngCore| sq1_10([rng.gen_range(-1.0..1.0), rng.gen_range(-0.2..1.0), rng.gen_range(-1.0..1.0)]);
+    let dir = |rng: &mut dyn rand::RngCore| {
+        sq1_10([rng.gen_range(-1.0..1.0), rng.gen_range(-0.2..1.0), rng.gen_range(-1.0..1.0)])
+    };
     let (l, h) = (dir(rng), dir(rng));
     let mut v = random_inputs(rng);
     for c in 0..3 {
@@ -107,7 +115,8 @@ fn accuracy(samples: usize, seed: u64) -> Vec<Accuracy> {
     })]
 }
 
-pub static MODEL: UnitModel = UnitModel::new("table_builder", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("table_builder", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
 
 #[cfg(test)]
 mod tests {
@@ -126,6 +135,12 @@ mod tests {
         // the worst entries sit on the steep flank of a tight highlight: at C = 255 the gloss curve turns one LSB of
         // N·H (a rounding of N, a floor of the dot product) into about 32 of P (10 bits), 8 of the 8-bit colour
         let a = accuracy(50_000, 4);
-        assert!(a[0].stats.mean() < 0.25 && a[0].stats.max < 32.0, "{:.3} / {:.3} at {}", a[0].stats.mean(), a[0].stats.max, a[0].stats.argmax);
+        assert!(
+            a[0].stats.mean() < 0.25 && a[0].stats.max < 32.0,
+            "{:.3} / {:.3} at {}",
+            a[0].stats.mean(),
+            a[0].stats.max,
+            a[0].stats.argmax
+        );
     }
 }

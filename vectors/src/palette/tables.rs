@@ -111,7 +111,11 @@ pub fn entry(s: &Shading, n: [f64; 3], view: [f64; 3]) -> [f64; 4] {
         }
         Shading::Chrome => {
             let r = reflect(unit(view), n);
-            let c = if r[1] >= 0.0 { [0.3 + 0.2 * r[1], 0.5 + 0.3 * r[1], 0.85 + 0.15 * r[1]] } else { [0.45 + 0.2 * r[1], 0.3 + 0.1 * r[1], 0.15] };
+            let c = if r[1] >= 0.0 {
+                [0.3 + 0.2 * r[1], 0.5 + 0.3 * r[1], 0.85 + 0.15 * r[1]]
+            } else {
+                [0.45 + 0.2 * r[1], 0.3 + 0.1 * r[1], 0.15]
+            };
             [c[0], c[1], c[2], 1.0]
         }
         Shading::DoubleAngle { p, light } => {
@@ -156,7 +160,10 @@ impl Materials {
     /// The table: each interval shaded by its material's model.
     pub fn table(&self, models: &[Shading], view: [f64; 3]) -> Vec<[u8; 4]> {
         (0..self.normals.len())
-            .map(|i| entry(&models[self.material_of(i)], self.normals[i], view).map(|c| (c * 255.0).round().clamp(0.0, 255.0) as u8))
+            .map(|i| {
+                entry(&models[self.material_of(i)], self.normals[i], view)
+                    .map(|c| (c * 255.0).round().clamp(0.0, 255.0) as u8)
+            })
             .collect()
     }
 }
@@ -214,7 +221,13 @@ mod tests {
     fn specular_peaks_at_the_half_vector_and_the_npr_shade_at_a_quarter_of_the_angle() {
         let l = unit([1.0, 1.0, 0.0]);
         let v = unit([-1.0, 1.0, 0.0]);
-        let s = Shading::Specular { ambient: 0.0, diffuse: [0.0; 3], specular: [1.0; 3], p: 50.0, lights: vec![Light { dir: l, colour: [1.0; 3] }] };
+        let s = Shading::Specular {
+            ambient: 0.0,
+            diffuse: [0.0; 3],
+            specular: [1.0; 3],
+            p: 50.0,
+            lights: vec![Light { dir: l, colour: [1.0; 3] }],
+        };
         assert!((entry(&s, UP, v)[0] - 1.0).abs() < 1e-12);
         assert!(entry(&s, unit([0.3, 1.0, 0.0]), v)[0] < 0.5);
         // doubling the angle: a mirror one angle off is dimmer than Phong would make it

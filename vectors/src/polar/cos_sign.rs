@@ -31,7 +31,8 @@ crate::ports! {
 
 /// The table entry for d with a 2^tb-entry table of w-bit magnitudes: (|cos|, negative).
 pub fn exact_with(tb: u32, w: u32, d: i64) -> (i64, bool) {
-    crate::sincos::cos_sign_entry(crate::polar_encode::Scale::Seed, tb, w, d >> (8 - tb)) // truncate to the table's resolution
+    crate::sincos::cos_sign_entry(crate::polar_encode::Scale::Seed, tb, w, d >> (8 - tb))
+    // truncate to the table's resolution
 }
 
 /// cos d ×255, signed.
@@ -53,7 +54,9 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     [0, 63, 64, 65, 128, 191, 192, 193, 255].iter().map(|&d| vec![d]).collect()
 }
 
-pub static MODEL: UnitModel = UnitModel::new("cos_sign", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("cos_sign", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+    .with_exhaustive(exhaustive)
+    .with_accuracy(accuracy);
 
 /// Mean and max |error| of the signed cosine over every d, in LSBs of an 8-bit output, and where the max is.
 pub fn size_error(tb: u32, w: u32) -> crate::sincos::SizeRow {

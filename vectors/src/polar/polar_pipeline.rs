@@ -31,7 +31,16 @@ pub fn exact_trace(sc: Scale, i: &[i64]) -> Trace {
 
 /// The pipeline with a 2^tb-entry elevation table in its shading unit (`polar_shade::exact_trace_sized`).
 pub fn exact_trace_sized(sc: Scale, tb: u32, i: &[i64]) -> Trace {
-    let t = polar_shade::exact_trace_sized(sc, tb, i[input::s], i[input::r], i[input::q], i[input::k1], i[input::k2], i[input::k3]);
+    let t = polar_shade::exact_trace_sized(
+        sc,
+        tb,
+        i[input::s],
+        i[input::r],
+        i[input::q],
+        i[input::k1],
+        i[input::k2],
+        i[input::k3],
+    );
     let (sum, shade) = (t.sum, t.shade);
     let alpha = power::exact(shade, i[input::pw]);
     let src = [input::src_r, input::src_g, input::src_b];
@@ -69,11 +78,13 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("polar_pipeline", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases);
+pub static MODEL: UnitModel =
+    UnitModel::new("polar_pipeline", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases);
 
 /// The same pipeline with the Dreamcast toolchains' angle scale in its tables: maps made by those tools shade as
 /// their authors saw them.
-pub static MODEL_DC: UnitModel = UnitModel::new("polar_pipeline_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases);
+pub static MODEL_DC: UnitModel =
+    UnitModel::new("polar_pipeline_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases);
 
 /// The pipeline's model for a scale, indexed by `Scale as usize`.
 pub static MODEL_FOR: [&UnitModel; 2] = [&MODEL, &MODEL_DC];

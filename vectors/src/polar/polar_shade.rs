@@ -65,7 +65,8 @@ pub fn exact_trace(sc: Scale, s: i64, r: i64, q: i64, k1: i64, k2: i64, k3: i64)
 #[allow(clippy::too_many_arguments)]
 pub fn exact_trace_sized(sc: Scale, tb: u32, s: i64, r: i64, q: i64, k1: i64, k2: i64, k3: i64) -> Trace {
     let t = tables(sc);
-    let (sin_s, cos_s) = if tb == TABLE_BITS { t.elevation[s as usize] } else { elevation_entry(sc, tb, WIDTH, s >> (8 - tb)) };
+    let (sin_s, cos_s) =
+        if tb == TABLE_BITS { t.elevation[s as usize] } else { elevation_entry(sc, tb, WIDTH, s >> (8 - tb)) };
     let t12 = div255(k2 * sin_s); // U16 / 255, rounded: U8
     let t14 = div255(k3 * cos_s); // U16 / 255, rounded: U8
     let d = (r - q).rem_euclid(256); // U8, modulo-256 wrap
@@ -102,7 +103,16 @@ fn exact_ports_dc(i: &[i64]) -> Vec<i64> {
 }
 
 /// The k sweep of the exhaustive set: every (S, R − Q) pair is run under each of these (k1, k2, k3).
-pub const K_SWEEP: &[(i64, i64, i64)] = &[(0, 0, 255), (0, 255, 255), (255, 255, 255), (128, 90, 90), (0, 180, 180), (255, 0, 0), (64, 1, 254), (17, 200, 73)];
+pub const K_SWEEP: &[(i64, i64, i64)] = &[
+    (0, 0, 255),
+    (0, 255, 255),
+    (255, 255, 255),
+    (128, 90, 90),
+    (0, 180, 180),
+    (255, 0, 0),
+    (64, 1, 254),
+    (17, 200, 73),
+];
 
 /// All 2^16 (S, R) pairs with Q = 0 (R − Q takes every value), under each k triple of the sweep: 2^19 vectors.
 fn exhaustive() -> Vec<Vec<i64>> {
@@ -144,11 +154,16 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("polar_shade", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("polar_shade", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+    .with_exhaustive(exhaustive)
+    .with_accuracy(accuracy);
 
 /// The same unit with the Dreamcast toolchains' angle scale in its tables (the block `PolarShade<true>`, inside
 /// `polar_pipeline_dc`).
-pub static MODEL_DC: UnitModel = UnitModel::new("polar_shade_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy_dc);
+pub static MODEL_DC: UnitModel =
+    UnitModel::new("polar_shade_dc", (INPUTS, OUTPUTS), exact_ports_dc, random_inputs, hard_cases)
+        .with_exhaustive(exhaustive)
+        .with_accuracy(accuracy_dc);
 
 /// Random vectors against equation 3 on the angles the codes stand for: the S11 before the clamp and the shade.
 fn accuracy_in(scale: Scale, samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
@@ -189,7 +204,10 @@ mod tests {
                 assert_eq!(a, b);
             }
         }
-        let moved = (0..256).filter(|&s| exact_trace_sized(Scale::Seed, 6, s, 40, 7, 30, 200, 180) != exact_trace(Scale::Seed, s, 40, 7, 30, 200, 180));
+        let moved = (0..256).filter(|&s| {
+            exact_trace_sized(Scale::Seed, 6, s, 40, 7, 30, 200, 180)
+                != exact_trace(Scale::Seed, s, 40, 7, 30, 200, 180)
+        });
         assert!(moved.count() > 64);
     }
 

@@ -44,7 +44,11 @@ macro_rules! power_sizes {
 
 /// L(x) with `lf` fraction bits, entry 0 unused (0).
 pub fn log_entry(x: u64, lf: u32) -> i64 {
-    if x == 0 { 0 } else { (-(x as f64 / 255.0).log2() * (1u64 << lf) as f64).round() as i64 }
+    if x == 0 {
+        0
+    } else {
+        (-(x as f64 / 255.0).log2() * (1u64 << lf) as f64).round() as i64
+    }
 }
 
 /// E(f) of a 2^eb-entry table: 255·2^(−f/2^eb)·2^7, rounded (U15).
@@ -133,7 +137,9 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("power", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("power", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+    .with_exhaustive(exhaustive)
+    .with_accuracy(accuracy);
 
 /// Every (x, p) against `powf`.
 fn accuracy(_samples: usize, _seed: u64) -> Vec<crate::unit::Accuracy> {
@@ -180,7 +186,9 @@ mod tests {
         for (lf, eb) in crate::power_sizes!(sizes) {
             assert!(eb < 2 + lf && lf <= LOG_FRAC, "({lf}, {eb})");
             // L fits U15 and e + the rounding half fits U23
-            assert!((1..256).all(|x| log_entry(x, lf) < 1 << 15) && 255 * log_entry(1, lf) + (1 << (1 + lf - eb)) < 1 << 23);
+            assert!(
+                (1..256).all(|x| log_entry(x, lf) < 1 << 15) && 255 * log_entry(1, lf) + (1 << (1 + lf - eb)) < 1 << 23
+            );
             for pw in 0..256 {
                 assert_eq!(exact_with(255, pw, lf, eb), 255, "({lf}, {eb}): 1^p");
                 assert_eq!(exact_with(0, pw, lf, eb), if pw == 0 { 255 } else { 0 }, "({lf}, {eb}): 0^p");

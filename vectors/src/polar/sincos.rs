@@ -110,7 +110,9 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     [0, 1, 3, 4, 341, 512, 1020, 1022, 1023].iter().map(|&a| vec![a]).collect()
 }
 
-pub static MODEL: UnitModel = UnitModel::new("sincos", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_exhaustive(exhaustive).with_accuracy(accuracy);
+pub static MODEL: UnitModel = UnitModel::new("sincos", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases)
+    .with_exhaustive(exhaustive)
+    .with_accuracy(accuracy);
 
 /// The (table bits, width) pairs of the LUT-size table, 64, 256 and 1,024 entries of 8, 10 and 12 bits, written once:
 /// `sincos_lut_sizes!(callback)` expands to `callback! { (6, 8), (8, 8), ... }`, so that the rtl blocks of each

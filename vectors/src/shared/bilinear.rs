@@ -70,7 +70,8 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("bilinear", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("bilinear", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
 
 /// The width sweep's settings (blend bits F, bits D dropped between the stages), the unit's own (8, 0) first; the
 /// rtl `Bilinear<F, D>` of each comes from the same list (`bilinear_sizes!(callback)` expands to
@@ -144,8 +145,14 @@ mod tests {
                 for u in 0..one {
                     for v in 0..one {
                         let e = exact_channel(t00, t10, t01, t11, u, v, f) as f64;
-                        let i = ideal_channel(t00 as f64, t10 as f64, t01 as f64, t11 as f64,
-                            u as f64 / one as f64, v as f64 / one as f64);
+                        let i = ideal_channel(
+                            t00 as f64,
+                            t10 as f64,
+                            t01 as f64,
+                            t11 as f64,
+                            u as f64 / one as f64,
+                            v as f64 / one as f64,
+                        );
                         worst = worst.max((e - i).abs());
                     }
                 }

@@ -54,7 +54,8 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
     v
 }
 
-pub static MODEL: UnitModel = UnitModel::new("blend", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("blend", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
 
 /// Random vectors against the reals, the red channel.
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {

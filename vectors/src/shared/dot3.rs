@@ -47,17 +47,19 @@ fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
 
 pub fn hard_cases() -> Vec<Vec<i64>> {
     vec![
-        vec![0, 1024, 0, 0, 1024, 0],          // N = L: 1024 → 1023
-        vec![0, 1024, 0, 0, -1024, 0],         // opposite: 0
+        vec![0, 1024, 0, 0, 1024, 0],                   // N = L: 1024 → 1023
+        vec![0, 1024, 0, 0, -1024, 0],                  // opposite: 0
         vec![-2048, -2048, -2048, -2048, -2048, -2048], // the most negative: largest positive sum
         vec![-2048, -2048, -2048, 2047, 2047, 2047],    // the most negative sum
-        vec![1024, 0, 0, 0, 1024, 0],          // light on the horizon of the normal: 0
-        vec![0, 0, 0, 0, 0, 0],                // zero light from the normaliser
-        vec![1, 0, 0, 1023, 0, 0], vec![1, 0, 0, 1024, 0, 0],
+        vec![1024, 0, 0, 0, 1024, 0],                   // light on the horizon of the normal: 0
+        vec![0, 0, 0, 0, 0, 0],                         // zero light from the normaliser
+        vec![1, 0, 0, 1023, 0, 0],
+        vec![1, 0, 0, 1024, 0, 0],
     ]
 }
 
-pub static MODEL: UnitModel = UnitModel::new("dot3", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("dot3", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
 
 /// Random vectors against the reals (the ideal clamped to the output's 1023).
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {

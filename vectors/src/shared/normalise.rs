@@ -114,17 +114,26 @@ fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
 
 pub fn hard_cases() -> Vec<Vec<i64>> {
     vec![
-        vec![0, 0, 0], // zero length
+        vec![0, 0, 0],          // zero length
         vec![-512, -512, -512], // the most negative everywhere, the largest s
         vec![511, 511, 511],
-        vec![-512, 0, 0], vec![511, 0, 0], vec![0, 1, 0], vec![0, -1, 0], vec![1, 1, 1], vec![-1, 0, 0],
-        vec![254, 1, 0], vec![0, 255, 0], vec![127, 1, 127], // decoded bumps: horizon, pole, guarded edge
-        vec![2, 254, 0], vec![1, 127, 0], // the seed's minimal step near the pole
+        vec![-512, 0, 0],
+        vec![511, 0, 0],
+        vec![0, 1, 0],
+        vec![0, -1, 0],
+        vec![1, 1, 1],
+        vec![-1, 0, 0],
+        vec![254, 1, 0],
+        vec![0, 255, 0],
+        vec![127, 1, 127], // decoded bumps: horizon, pole, guarded edge
+        vec![2, 254, 0],
+        vec![1, 127, 0],  // the seed's minimal step near the pole
         vec![85, 85, 85], // the shortest L1-scaled bump, |v| = 1/3 of its L1 length
     ]
 }
 
-pub static MODEL: UnitModel = UnitModel::new("normalise", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
+pub static MODEL: UnitModel =
+    UnitModel::new("normalise", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
 
 /// The normaliser with a `t`-bit seed table and `newton` steps against the ideal, over `samples` random vectors
 /// of every scale (the zero vector skipped): the worst component error per vector (Sq1.10 LSB) and the angle.
@@ -149,7 +158,10 @@ pub fn error(t: u32, newton: u32, samples: usize, seed: u64) -> (crate::stats::E
 /// The rtl's table and Newton steps, random vectors of every scale.
 fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
     let (l, a) = error(TABLE_BITS, NEWTON, samples, seed);
-    vec![crate::unit::Accuracy::new("component error, Sq1.10 LSB (1/1024)", l), crate::unit::Accuracy::new("degrees", a)]
+    vec![
+        crate::unit::Accuracy::new("component error, Sq1.10 LSB (1/1024)", l),
+        crate::unit::Accuracy::new("degrees", a),
+    ]
 }
 
 #[cfg(test)]
