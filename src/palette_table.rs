@@ -143,7 +143,8 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
             // the table is rewritten in place every frame as the RAM holds it, a 32-bit RGBA word an entry
             let mut buf = vec![[0u8; 4]; q.palette.len()];
             let word = |e: [i64; 4]| e.map(|c| c as u8); // each U8 already
-                                                         // each model's loop on its own, compiled for its closure (no match and no indirect call per entry)
+
+            // each model's loop on its own, compiled for its closure (no match and no indirect call per entry)
             let secs = match m {
                 0 => fill(&mut buf, |k| [0, 0, 0, (vectors::dot3::exact(wide(normed[k]), lq) >> 2) as u8]),
                 1 => fill(&mut buf, |k| word(table_builder::exact_normalised(wide(normed[k]), lq, hq, conc, spec))),

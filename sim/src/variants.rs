@@ -154,7 +154,8 @@ mod tests {
         let c = colour(64);
         assert!(c.bilinear_vs_own.max <= 0.5 + 1e-9, "{}", c.bilinear_vs_own.max);
         assert!(c.bspline_vs_own.max <= 0.5 + 1.0 / 64.0, "{}", c.bspline_vs_own.max); // the height's own floors, then a rounding
-                                                                                       // against the picture sampled, both err by a few LSB: the texture is coarse
+
+        // against the picture sampled, both err by a few LSB: the texture is coarse
         assert!(c.bilinear_vs_reference.mean() < 8.0 && c.bspline_vs_reference.mean() < 12.0);
     }
 

@@ -77,7 +77,8 @@ impl Logic for LightLane {
             self.w_e20.next = self.w_e20.val() | 0xFFF00;
         }
         self.s1_base.d.next = self.w_e20.val() << 8; // l0·256: S16 in S20, exact
-                                                     // stages 2–4: the products, the base beside them
+
+        // stages 2–4: the products, the base beside them
         self.mul1.x.next = self.s1_d1.q.val();
         self.mul1.w.next = self.w1.val();
         self.mul2.x.next = self.s1_d2.q.val();

@@ -92,7 +92,8 @@ impl Logic for BlinnPipeline {
         self.w_v.next = bit_cast::<9, 8>(self.vblend.val()); // U8 in 9, widening
         self.s1_u.d.next = self.w_u.val() << 1; // 2U in 1/512: U9, exact
         self.s1_v.d.next = self.w_v.val() << 1; // 2V in 1/512: U9, exact
-                                                // the units' exact results (U25 of 32) → G − R and B − R (S26, two's complement in 32, exact)
+
+        // the units' exact results (U25 of 32) → G − R and B − R (S26, two's complement in 32, exact)
         self.w_d1.next = self.unit[1].wide.val() - self.unit[0].wide.val(); // S26 in 32, exact
         self.w_d2.next = self.unit[2].wide.val() - self.unit[0].wide.val(); // S26 in 32, exact
                                                                             // bits 6..26 of the two's complement S26: >> 6, floor, S20 in 21 (as the tangent unit's last stage)

@@ -202,22 +202,22 @@ impl Logic for HeightFetch {
         // stage 1: each bank's word. Parity p along x reads the first column's word (x0 >> 1) if it has parity p,
         // else the last column's (x2 >> 1); the bank address takes the word's column and row halved (x >> 2)
         if self.s1_x[0].q.val().get_bit(1) {
-            self.w_cx0.next = bit_cast::<12, 6>(self.s1_x[2].q.val().get_bits::<6>(2)); // U6 in 12, a slice widened
+            // U6 in 12 each, a slice widened
+            self.w_cx0.next = bit_cast::<12, 6>(self.s1_x[2].q.val().get_bits::<6>(2));
             self.w_cx1.next = bit_cast::<12, 6>(self.s1_x[0].q.val().get_bits::<6>(2));
-        // U6 in 12
         } else {
-            self.w_cx0.next = bit_cast::<12, 6>(self.s1_x[0].q.val().get_bits::<6>(2)); // U6 in 12
+            // U6 in 12 each, a slice widened
+            self.w_cx0.next = bit_cast::<12, 6>(self.s1_x[0].q.val().get_bits::<6>(2));
             self.w_cx1.next = bit_cast::<12, 6>(self.s1_x[2].q.val().get_bits::<6>(2));
-            // U6 in 12
         }
         if self.s1_y[0].q.val().get_bit(1) {
-            self.w_ry0.next = bit_cast::<12, 6>(self.s1_y[2].q.val().get_bits::<6>(2)); // U6 in 12
+            // U6 in 12 each, a slice widened
+            self.w_ry0.next = bit_cast::<12, 6>(self.s1_y[2].q.val().get_bits::<6>(2));
             self.w_ry1.next = bit_cast::<12, 6>(self.s1_y[0].q.val().get_bits::<6>(2));
-        // U6 in 12
         } else {
-            self.w_ry0.next = bit_cast::<12, 6>(self.s1_y[0].q.val().get_bits::<6>(2)); // U6 in 12
+            // U6 in 12 each, a slice widened
+            self.w_ry0.next = bit_cast::<12, 6>(self.s1_y[0].q.val().get_bits::<6>(2));
             self.w_ry1.next = bit_cast::<12, 6>(self.s1_y[2].q.val().get_bits::<6>(2));
-            // U6 in 12
         }
         self.w_ry0s.next = self.w_ry0.val() << 6; // row · 64: U12, exact
         self.w_ry1s.next = self.w_ry1.val() << 6; // U12, exact
@@ -225,7 +225,8 @@ impl Logic for HeightFetch {
         self.bank[1].read_address.next = self.w_ry0s.val() | self.w_cx1.val(); // (odd X, even Y)
         self.bank[2].read_address.next = self.w_ry1s.val() | self.w_cx0.val(); // (even X, odd Y)
         self.bank[3].read_address.next = self.w_ry1s.val() | self.w_cx1.val(); // (odd X, odd Y)
-                                                                               // the write: word (X, Y) = (waddr[6:0], waddr[13:7]) goes to bank (X mod 2, Y mod 2) at (Y >> 1)·64 + (X >> 1)
+
+        // the write: word (X, Y) = (waddr[6:0], waddr[13:7]) goes to bank (X mod 2, Y mod 2) at (Y >> 1)·64 + (X >> 1)
         self.w_wx.next = bit_cast::<12, 6>(self.wr_addr.q.val().get_bits::<6>(1)); // X >> 1: U6 in 12
         self.w_wy.next = bit_cast::<12, 6>(self.wr_addr.q.val().get_bits::<6>(8)); // Y >> 1: U6 in 12
         self.w_wys.next = self.w_wy.val() << 6; // U12, exact

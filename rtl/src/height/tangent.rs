@@ -87,7 +87,8 @@ impl Logic for Tangent {
         self.s1_e2.d.next = self.w_a.val() - self.w_g.val(); // A − G: S21, likewise
         self.s1_u.d.next = bit_cast::<16, 8>(self.ublend.val()); // U8 in 16, widening
         self.s1_v.d.next = bit_cast::<16, 8>(self.vblend.val()); // U8 in 16, widening
-                                                                 // stage 2: the lerps' spans (S22, exact) and bases (·256: S29, exact), in 32 bits
+
+        // stage 2: the lerps' spans (S22, exact) and bases (·256: S29, exact), in 32 bits
         self.w_d1x.next = bit_cast::<22, 21>(self.s1_d1.q.val()); // S21 → S22: sign extension, below
         self.w_d2x.next = bit_cast::<22, 21>(self.s1_d2.q.val()); // the same
         self.w_e1x.next = bit_cast::<22, 21>(self.s1_e1.q.val()); // the same
@@ -128,7 +129,8 @@ impl Logic for Tangent {
         }
         self.w_p1.next = self.mul1.p.val().get_bits::<30>(0); // |d2 − d1|·V < 2^29: U29 of U32, exact
         self.w_p2.next = self.mul2.p.val().get_bits::<30>(0); // the same
-                                                              // the sums: S30, exact
+
+        // the sums: S30, exact
         if self.mul1.neg.val() {
             self.s7_t1.d.next = self.w_b1x.val() - self.w_p1.val();
         } else {

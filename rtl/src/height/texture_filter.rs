@@ -362,8 +362,9 @@ impl Logic for TextureFilter {
         self.out_g.next = self.colour.q.val().get_bits::<8>(8); // a split
         self.out_b.next = self.colour.q.val().get_bits::<8>(16); // a split
         self.out_a.next = self.colour.q.val().get_bits::<8>(24); // a split
-                                                                 // tangent [155], normal [156] and the normaliser, on the units' exact results (U25 of the 32-bit wide
-                                                                 // outputs: their range, exact)
+
+        // tangent [155], normal [156] and the normaliser, on the units' exact results (U25 of the 32-bit wide
+        // outputs: their range, exact)
         self.u_dly.d.next = self.ublend.val();
         self.v_dly.d.next = self.vblend.val();
         self.scale_dly.d.next = self.scale.val();

@@ -130,7 +130,8 @@ impl Logic for TableBuilder {
         self.mop_s[1].d.next = bit_cast::<16, 8>(self.spec_dly[1].q.val()); // U8 in 16, widening
         self.mop_s[2].d.next = bit_cast::<16, 8>(self.spec_dly[2].q.val()); // U8 in 16, widening
         self.s1_a.d.next = self.x_dly.q.val().get_bits::<8>(2); // α = X >> 2: U10 → U8, floor
-                                                                // stage 2: P·s (U10 × U8 → U18, exact)
+
+        // stage 2: P·s (U10 × U8 → U18, exact)
         for i in 0..3 {
             self.w_prod[i].next = self.mop_p[i].q.val() * self.mop_s[i].q.val(); // U18 in 32, exact
             self.s2_prod[i].d.next = self.w_prod[i].val().get_bits::<18>(0); // its range, exact

@@ -124,7 +124,8 @@ impl<const DC: bool> Logic for PolarShade<DC> {
         self.s3_k1.d.next = self.s2_k1.q.val();
         self.s3_cd.d.next = self.cos_sign.mag.val();
         self.s3_neg.d.next = self.cos_sign.neg.val().any(); // Bits<1> → Bit (a scalar in Verilog: no bit select)
-                                                            // stages 4–5: /255, rounded
+
+        // stages 4–5: /255, rounded
         self.div12.num.next = self.s3_p12.q.val();
         self.div14.num.next = self.s3_p14.q.val();
         self.k1_dly.d.next = self.s3_k1.q.val();

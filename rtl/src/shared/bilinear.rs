@@ -150,7 +150,8 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         clock!(self, clock, mul0, mul1, b0, b1, s6_a, s6_b, s7_e, s7_a, mul2, a, s11_out, s11_wide);
         self.u.d.next = bit_cast::<16, F>(self.ublend.val()); // UF in 16, widening
         self.v.d.next = bit_cast::<16, F>(self.vblend.val()); // UF in 16, widening
-                                                              // stage 1: widening only
+
+        // stage 1: widening only
         self.s1_t00.d.next = bit_cast::<16, W>(self.t00.val());
         self.s1_t10.d.next = bit_cast::<16, W>(self.t10.val());
         self.s1_t01.d.next = bit_cast::<16, W>(self.t01.val());
@@ -184,7 +185,8 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         }
         self.s6_a.d.next = self.w_sa.val().get_bits::<17>(0); // the weighted mean's U(W+F) ≤ U17: exact
         self.s6_b.d.next = self.w_sb.val().get_bits::<17>(0); // the same
-                                                              // stage 7: b − a, wrapping in 32 bits to its two's complement
+
+        // stage 7: b − a, wrapping in 32 bits to its two's complement
         self.w_ad.next = self.s6_a.q.val() >> self.shift_d.val(); // U(W+F) → U(W+F−D), truncated
         self.w_bd.next = self.s6_b.q.val() >> self.shift_d.val(); // the same
         self.s7_e.d.next = self.w_bd.val() - self.w_ad.val(); // S(W+F−D), |b' − a'| < 2^16: wrapping in 17 bits to its two's complement
@@ -288,9 +290,9 @@ impl<const F: usize, const D: usize> Logic for Bilinear<F, D> {
         clock!(self, clock, valid);
         for i in 0..4 {
             self.unit[i].clock.next = self.clock.val();
-            self.unit[i].ublend.next = self.ublend.val().get_bits::<F>(self.blend_at.val().index()); // the top F bits, floor
+            // the top F bits of each blend factor, floor
+            self.unit[i].ublend.next = self.ublend.val().get_bits::<F>(self.blend_at.val().index());
             self.unit[i].vblend.next = self.vblend.val().get_bits::<F>(self.blend_at.val().index());
-            // the same
         }
         self.valid.d.next = self.valid_in.val();
         self.unit[0].t00.next = self.t00_r.val();

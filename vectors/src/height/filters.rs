@@ -108,8 +108,8 @@ impl Filter {
                 // for Prewitt's D = 6) so that a flat map's (0, 64·D·c·2^16, 0) shifts to 448 or 480, which the
                 // normaliser returns as exactly (0, 1024, 0) (as `height_normal`'s factor 7 does)
                 let c = if self == Filter::Prewitt { 5 } else { 7 };
-                height_normal::to_s10([-c * k * gb[0], (64 * c * divisor(self)) << 16, -c * k * gb[1]])
                 // S42 at most, exact
+                height_normal::to_s10([-c * k * gb[0], (64 * c * divisor(self)) << 16, -c * k * gb[1]])
             }
             Filter::Trilinear => {
                 let (t1, t2) = trilinear_tangents(map, level1, cu, cv, TRILINEAR_LOD);
@@ -264,8 +264,8 @@ pub fn mip_exact(h: &[i64], side: usize) -> Vec<i64> {
     (0..s * s)
         .map(|q| {
             let (x, y) = (2 * (q % s), 2 * (q / s));
-            round_half_up(h[y * side + x] + h[y * side + x + 1] + h[(y + 1) * side + x] + h[(y + 1) * side + x + 1], 2)
             // U10 → U8
+            round_half_up(h[y * side + x] + h[y * side + x + 1] + h[(y + 1) * side + x] + h[(y + 1) * side + x + 1], 2)
         })
         .collect()
 }

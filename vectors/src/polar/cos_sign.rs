@@ -31,8 +31,8 @@ crate::ports! {
 
 /// The table entry for d with a 2^tb-entry table of w-bit magnitudes: (|cos|, negative).
 pub fn exact_with(tb: u32, w: u32, d: i64) -> (i64, bool) {
-    crate::sincos::cos_sign_entry(crate::polar_encode::Scale::Seed, tb, w, d >> (8 - tb))
     // truncate to the table's resolution
+    crate::sincos::cos_sign_entry(crate::polar_encode::Scale::Seed, tb, w, d >> (8 - tb))
 }
 
 /// cos d ×255, signed.
