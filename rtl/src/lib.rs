@@ -66,12 +66,12 @@ pub mod palette {
     pub mod table_builder_shared;
 }
 
-pub mod stream;
-
-/// The rtl's source text, embedded at build time (`build.rs`): the width report reads declared types from it.
-pub mod source {
-    include!(concat!(env!("OUT_DIR"), "/sources.rs"));
+/// The primitives apart from the units: what every block declaration records (`declared`).
+pub mod prim {
+    pub mod declared;
 }
+
+pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, cart_surface, light_iter};

@@ -1,7 +1,7 @@
 //! The width report's reading of the rtl, for every unit of the table: every signal the rust-hdl probe sees (but the
-//! clocks) resolves through the source's declarations to a format as wide as the simulator's signal, and the range
-//! it takes over the hard cases and 2,000 random vectors lies inside the range the interval analysis proves (the
-//! proof is sound, or this fails).
+//! clocks) resolves through the declarations the compiler records (`rtl::prim::declared`) to a format as wide as the
+//! simulator's signal, and the range it takes over the hard cases and 2,000 random vectors lies inside the range the
+//! interval analysis proves (the proof is sound, or this fails).
 use sim::widths::{bounds, seen, Formats};
 
 macro_rules! every_unit {

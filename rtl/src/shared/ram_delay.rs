@@ -11,15 +11,16 @@ use crate::blend::Blend;
 use crate::delay::Delay;
 use rust_hdl::prelude::*;
 
-#[derive(LogicBlock)]
-pub struct RamDelay<const W: usize, const A: usize, const N: usize> {
-    pub clock: Signal<In, Clock>,
-    pub d: Signal<In, Bits<W>>,
-    pub q: Signal<Out, Bits<W>>,
-    ram: RAM<Bits<W>, A>,
-    wp: DFF<Bits<A>>,
-    /// 2^A − (N − 1): added to the write pointer, modulo 2^A, it gives the read pointer
-    back: Constant<Bits<A>>,
+crate::block! {
+    pub struct RamDelay<const W: usize, const A: usize, const N: usize> {
+        pub clock: Signal<In, Clock>,
+        pub d: Signal<In, Bits<W>>,
+        pub q: Signal<Out, Bits<W>>,
+        ram: RAM<Bits<W>, A>,
+        wp: DFF<Bits<A>>,
+        /// 2^A − (N − 1): added to the write pointer, modulo 2^A, it gives the read pointer
+        back: Constant<Bits<A>>,
+    }
 }
 
 impl<const W: usize, const A: usize, const N: usize> Default for RamDelay<W, A, N> {
@@ -51,31 +52,33 @@ impl<const W: usize, const A: usize, const N: usize> Logic for RamDelay<W, A, N>
     }
 }
 
-/// The blend unit fed from a pixel's colours and mode delayed N clocks, the six colours in one 48-bit `RamDelay`
-/// (three SB_RAM40_4K instead of 48·N flip-flops) and the mode in a DFF chain, so that they meet the α computed
-/// from the same pixel N clocks later. Both pipelines end in one. Latency from α to the colour: `blend::LATENCY`.
-#[derive(LogicBlock, Default)]
-pub struct DelayedBlend<const A: usize, const N: usize> {
-    pub clock: Signal<In, Clock>,
-    /// the pixel's mode and colours, as it enters the pipeline
-    pub mode: Signal<In, Bits<1>>,
-    pub src_r: Signal<In, Bits<8>>,
-    pub src_g: Signal<In, Bits<8>>,
-    pub src_b: Signal<In, Bits<8>>,
-    pub dst_r: Signal<In, Bits<8>>,
-    pub dst_g: Signal<In, Bits<8>>,
-    pub dst_b: Signal<In, Bits<8>>,
-    /// its α, N clocks later
-    pub valid_in: Signal<In, Bit>,
-    pub alpha: Signal<In, Bits<8>>,
-    pub valid_out: Signal<Out, Bit>,
-    pub out_r: Signal<Out, Bits<8>>,
-    pub out_g: Signal<Out, Bits<8>>,
-    pub out_b: Signal<Out, Bits<8>>,
-    pub blend: Blend,
-    colours: RamDelay<48, A, N>,
-    mode_dly: Delay<Bits<1>, N>,
-    word: Signal<Local, Bits<48>>,
+crate::block! {
+    /// The blend unit fed from a pixel's colours and mode delayed N clocks, the six colours in one 48-bit `RamDelay`
+    /// (three SB_RAM40_4K instead of 48·N flip-flops) and the mode in a DFF chain, so that they meet the α computed
+    /// from the same pixel N clocks later. Both pipelines end in one. Latency from α to the colour: `blend::LATENCY`.
+    #[derive(Default)]
+    pub struct DelayedBlend<const A: usize, const N: usize> {
+        pub clock: Signal<In, Clock>,
+        /// the pixel's mode and colours, as it enters the pipeline
+        pub mode: Signal<In, Bits<1>>,
+        pub src_r: Signal<In, Bits<8>>,
+        pub src_g: Signal<In, Bits<8>>,
+        pub src_b: Signal<In, Bits<8>>,
+        pub dst_r: Signal<In, Bits<8>>,
+        pub dst_g: Signal<In, Bits<8>>,
+        pub dst_b: Signal<In, Bits<8>>,
+        /// its α, N clocks later
+        pub valid_in: Signal<In, Bit>,
+        pub alpha: Signal<In, Bits<8>>,
+        pub valid_out: Signal<Out, Bit>,
+        pub out_r: Signal<Out, Bits<8>>,
+        pub out_g: Signal<Out, Bits<8>>,
+        pub out_b: Signal<Out, Bits<8>>,
+        pub blend: Blend,
+        colours: RamDelay<48, A, N>,
+        mode_dly: Delay<Bits<1>, N>,
+        word: Signal<Local, Bits<48>>,
+    }
 }
 
 impl<const A: usize, const N: usize> Logic for DelayedBlend<A, N> {

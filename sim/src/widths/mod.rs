@@ -2,14 +2,16 @@
 //! range of values it takes in the rust-hdl simulation of the unit's vectors.
 //!
 //! The simulator keeps widths but not formats (`Sq1_10` and `Uq0_12` are both `Bits<12>` to it), so the formats
-//! come from the rtl's own source text (`rtl::source::FILES`): each block's struct is parsed for its fields' types,
-//! and a signal's hierarchical name (`uut.norm.s3_l.q`, as in the VCD) is followed through them, generic parameters
-//! substituted, down to its type alias. The values come from a rust-hdl probe that visits every signal once a clock,
+//! come from what the compiler records of each block's declaration (`rtl::prim::declared`: every field's name and
+//! type as written, and that type's own declaration): a signal's hierarchical name (`uut.norm.s3_l.q`, as in the
+//! VCD) is followed through them, generic parameters substituted in the types' text, down to its type alias
+//! (`rtl::q::ALIASES`). The values come from a rust-hdl probe that visits every signal once a clock,
 //! with the clock low and the slot settled (every register's d is then what the edge latches).
 
 pub mod bounds;
 pub mod wraps;
 
+use rtl::prim::declared::{Declaration, Declared};
 use rtl::stream::Runner;
 use rtl::StreamUnit;
 use rust_hdl::core::atom::Atom;
@@ -18,7 +20,7 @@ use rust_hdl::core::probe::Probe;
 use std::collections::HashMap;
 use vectors::UnitModel;
 
-/// A type as the source writes it.
+/// A type as a declaration writes it (`stringify!` of a field's type).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Ty {
     /// `Name` or `Name<args>` (the last path segment)
@@ -156,350 +158,6 @@ impl Parser<'_> {
     }
 }
 
-/// A block's struct as its source declares it.
-#[derive(Clone, Debug, Default)]
-pub struct Decl {
-    pub generics: Vec<String>,
-    /// each generic's default (`const D: usize = 0`), for a type written without it
-    pub defaults: Vec<Option<Ty>>,
-    pub fields: Vec<(String, Ty)>,
-}
-
-/// The library blocks the rtl uses, declared as rust-hdl 0.46 declares them (their signals only).
-const LIBRARY: &str = "
-pub struct DFF<T> { pub d: Signal<In, T>, pub q: Signal<Out, T>, pub clock: Signal<In, Clock>, }
-pub struct ROM<D, const N: usize> { pub address: Signal<In, Bits<N>>, pub data: Signal<Out, D>, }
-pub struct RAM<D, const N: usize> {
-    pub read_address: Signal<In, Bits<N>>, pub read_clock: Signal<In, Clock>, pub read_data: Signal<Out, D>,
-    pub write_address: Signal<In, Bits<N>>, pub write_clock: Signal<In, Clock>, pub write_data: Signal<In, D>,
-    pub write_enable: Signal<In, bool>,
-}
-";
-
-/// Source text without comments (`//` to the end of the line) and attributes (`#[...]`).
-fn strip(src: &str) -> String {
-    let mut out = String::with_capacity(src.len());
-    for line in src.lines() {
-        let code = match line.find("//") {
-            Some(k) => &line[..k],
-            None => line,
-        };
-        let t = code.trim_start();
-        if t.starts_with("#[") || t.starts_with("#![") {
-            continue;
-        }
-        out.push_str(code);
-        out.push('\n');
-    }
-    out
-}
-
-/// Split at the commas that stand outside every bracket.
-fn top_level_commas(s: &str) -> Vec<String> {
-    let (mut parts, mut cur, mut depth) = (vec![], String::new(), 0i32);
-    for c in s.chars() {
-        match c {
-            '<' | '[' | '(' | '{' => depth += 1,
-            '>' | ']' | ')' | '}' => depth -= 1,
-            ',' if depth == 0 => {
-                parts.push(std::mem::take(&mut cur));
-                continue;
-            }
-            _ => {}
-        }
-        cur.push(c);
-    }
-    parts.push(cur);
-    parts.into_iter().map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect()
-}
-
-/// `[pub] name: Type` items of a field list, each wrapped by `wrap` (the sections of `stream_block!`).
-fn fields(list: &str, wrap: &dyn Fn(Ty) -> Ty) -> Vec<(String, Ty)> {
-    let mut out = vec![];
-    for item in top_level_commas(list) {
-        let item = item.trim_start_matches("pub(crate)").trim_start_matches("pub").trim();
-        let Some((name, ty)) = item.split_once(':') else { continue };
-        if let Some(t) = Ty::parse(ty) {
-            out.push((name.trim().to_string(), wrap(t)));
-        }
-    }
-    out
-}
-
-fn signal(dir: &str, t: Ty) -> Ty {
-    Ty::Path("Signal".into(), vec![Ty::Path(dir.into(), vec![]), t])
-}
-
-/// The invocations, in the same text, of each `macro_rules!` the text defines, expanded (`expand_macros`).
-fn expand_local_macros(s: &str) -> Vec<String> {
-    expand_macros(s, s)
-}
-
-/// The invocations, in `s`, of each `macro_rules!` that `defs` defines, expanded by substituting their
-/// arguments for the first rule's plain `$name:kind` parameters (repetitions such as `$(#[$doc:meta])*` are left
-/// out on both sides), and for the parameters of its optional groups (`$(, marker: $a:ident, $b:ident)?`), which an
-/// invocation binds by naming the marker (`marker: x, y`): a group of the body (`$( ... )?`) is kept when the
-/// invocation bound every parameter it names and dropped when not. Enough for the rtl's own macros that declare
-/// blocks.
-fn expand_macros(defs: &str, s: &str) -> Vec<String> {
-    let mut out = vec![];
-    for (k, _) in defs.match_indices("macro_rules!") {
-        let mut p = Parser { s: defs.as_bytes(), i: k + 12 };
-        p.ws();
-        let start = p.i;
-        while p.i < p.s.len() && (p.s[p.i].is_ascii_alphanumeric() || p.s[p.i] == b'_') {
-            p.i += 1;
-        }
-        let name = defs[start..p.i].to_string();
-        // `{ (matcher) => { body } ... }`: the first rule
-        if p.eat(b'{').is_none() || p.eat(b'(').is_none() {
-            continue;
-        }
-        let Some(matcher) = p.balanced(b'(', b')') else { continue };
-        p.i += 1;
-        if p.eat(b'=').is_none() || p.eat(b'>').is_none() || p.eat(b'{').is_none() {
-            continue;
-        }
-        let Some(body) = p.balanced(b'{', b'}') else { continue };
-        // the matcher without its repetitions, then its parameters in order; the optional groups' markers and
-        // parameters apart
-        let names = |t: &str| -> Vec<String> {
-            t.split('$').skip(1).filter_map(|t| t.split_once(':').map(|(n, _)| n.trim().to_string())).collect()
-        };
-        let mut plain = String::new();
-        let mut groups: Vec<(String, Vec<String>)> = vec![];
-        let mut m = Parser { s: matcher.as_bytes(), i: 0 };
-        while m.i < m.s.len() {
-            if m.s[m.i..].starts_with(b"$(") {
-                m.i += 2;
-                let inner = m.balanced(b'(', b')').unwrap_or_default();
-                if m.s.get(m.i + 1) == Some(&b'?') {
-                    let marker = inner
-                        .split('$')
-                        .next()
-                        .unwrap_or("")
-                        .trim_matches(|c: char| c == ',' || c.is_whitespace())
-                        .trim_end_matches(':');
-                    groups.push((marker.to_string(), names(&inner)));
-                }
-                m.i += 2; // `)` and the repetition's `*`, `+` or `?`
-                continue;
-            }
-            plain.push(m.s[m.i] as char);
-            m.i += 1;
-        }
-        let mut params: Vec<String> = names(&plain);
-        // invocations `name!(args)` / `name! { args }`
-        for (j, _) in s.match_indices(&format!("{name}!")) {
-            if j > 0 && (s.as_bytes()[j - 1].is_ascii_alphanumeric() || s.as_bytes()[j - 1] == b'_') {
-                continue;
-            }
-            let mut q = Parser { s: s.as_bytes(), i: j + name.len() + 1 };
-            let (open, close) = match q.peek() {
-                Some(b'(') => (b'(', b')'),
-                Some(b'{') => (b'{', b'}'),
-                _ => continue,
-            };
-            q.i += 1;
-            let Some(args) = q.balanced(open, close) else { continue };
-            let args = top_level_commas(&args);
-            if args.len() < params.len() {
-                continue;
-            }
-            let mut bound: Vec<(String, String)> = params.iter().cloned().zip(args.iter().cloned()).collect();
-            let mut rest = &args[params.len()..];
-            for (marker, group) in &groups {
-                let Some(first) = rest
-                    .first()
-                    .and_then(|a| a.strip_prefix(marker.as_str()))
-                    .and_then(|a| a.trim_start().strip_prefix(':'))
-                else {
-                    continue;
-                };
-                if marker.is_empty() || rest.len() < group.len() {
-                    break;
-                }
-                let mut values = vec![first.trim().to_string()];
-                values.extend(rest[1..group.len()].iter().cloned());
-                bound.extend(group.iter().cloned().zip(values));
-                rest = &rest[group.len()..];
-            }
-            if !rest.is_empty() {
-                continue;
-            }
-            let mut text = optional_groups(&body, &bound);
-            // the longest names first, so that `$dec_mod` is not read as `$dec` + `_mod`
-            bound.sort_by_key(|(n, _)| std::cmp::Reverse(n.len()));
-            for (n, a) in &bound {
-                text = text.replace(&format!("${n}"), a.trim_matches('"'));
-            }
-            out.push(text);
-        }
-        params.clear();
-    }
-    out
-}
-
-/// A macro body with each optional group `$( ... )?` kept (its content alone) when every `$name` in it is bound,
-/// and dropped when not; other repetitions are left as they are.
-fn optional_groups(body: &str, bound: &[(String, String)]) -> String {
-    let mut out: Vec<u8> = vec![];
-    let mut p = Parser { s: body.as_bytes(), i: 0 };
-    while p.i < p.s.len() {
-        if p.s[p.i..].starts_with(b"$(") {
-            let start = p.i;
-            p.i += 2;
-            let inner = p.balanced(b'(', b')').unwrap_or_default();
-            if p.s.get(p.i + 1) == Some(&b'?') {
-                let used = inner
-                    .split('$')
-                    .skip(1)
-                    .map(|t| t.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect::<String>());
-                let all_bound = used.filter(|n| !n.is_empty()).all(|n| bound.iter().any(|(b, _)| *b == n));
-                if all_bound {
-                    out.extend_from_slice(inner.as_bytes());
-                    out.push(b' ');
-                }
-                p.i += 2;
-            } else {
-                p.i = start + 2;
-                out.extend_from_slice(b"$(");
-            }
-            continue;
-        }
-        out.push(p.s[p.i]);
-        p.i += 1;
-    }
-    String::from_utf8_lossy(&out).into_owned()
-}
-
-/// Every struct of the rtl's source (and of the library blocks it uses), by name; every type alias; and every
-/// integer constant (`const NAME: usize = 10;`) whose name is not declared twice with two values.
-pub fn declarations() -> (HashMap<String, Decl>, HashMap<String, Ty>) {
-    let (mut decls, mut aliases) = (HashMap::new(), HashMap::new());
-    let mut consts: HashMap<String, Option<String>> = HashMap::new();
-    let mut sources: Vec<String> = vec![strip(LIBRARY)];
-    let files: Vec<String> = rtl::source::FILES.iter().map(|f| strip(f.1)).collect();
-    // a file whose macros are re-exported by path (`pub(crate) use name;`) lends them to every other file
-    let lenders: Vec<&String> =
-        files.iter().filter(|s| s.contains("macro_rules!") && s.contains("pub(crate) use ")).collect();
-    for s in &files {
-        sources.extend(expand_local_macros(s));
-        for d in lenders.iter().filter(|d| !std::ptr::eq(**d, s)) {
-            sources.extend(expand_macros(d, s));
-        }
-        sources.push(s.clone());
-    }
-    for s in &sources {
-        let b = s.as_bytes();
-        // integer constants
-        for (k, _) in s.match_indices("const ") {
-            let rest = &s[k + 6..];
-            let Some(semi) = rest.find(';') else { continue };
-            let decl = &rest[..semi];
-            let (Some((name, _)), Some((_, value))) = (decl.split_once(':'), decl.split_once('=')) else { continue };
-            let (name, value) = (name.trim(), value.trim());
-            if value.parse::<u64>().is_ok() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
-                let e = consts.entry(name.to_string()).or_insert(Some(value.to_string()));
-                if e.as_deref() != Some(value) {
-                    *e = None;
-                }
-            }
-        }
-        // type aliases: `type Name = Type;`
-        for (k, _) in s.match_indices("type ") {
-            if k > 0 && (b[k - 1].is_ascii_alphanumeric() || b[k - 1] == b'_') {
-                continue;
-            }
-            let rest = &s[k + 5..];
-            let (Some(eq), Some(semi)) = (rest.find('='), rest.find(';')) else { continue };
-            if eq > semi {
-                continue;
-            }
-            let name = rest[..eq].trim();
-            if name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
-                if let Some(t) = Ty::parse(&rest[eq + 1..semi]) {
-                    aliases.insert(name.to_string(), t);
-                }
-            }
-        }
-        // structs: `struct Name<generics> {` or `struct Name<generics>: unit(..) { in { } out { } fields }`
-        for (k, _) in s.match_indices("struct ") {
-            if k > 0 && (b[k - 1].is_ascii_alphanumeric() || b[k - 1] == b'_') {
-                continue;
-            }
-            let mut p = Parser { s: b, i: k + 7 };
-            p.ws();
-            let start = p.i;
-            while p.i < b.len() && (b[p.i].is_ascii_alphanumeric() || b[p.i] == b'_') {
-                p.i += 1;
-            }
-            let name = s[start..p.i].to_string();
-            let (mut generics, mut defaults) = (vec![], vec![]);
-            if p.peek() == Some(b'<') {
-                p.i += 1;
-                let Some(g) = p.balanced(b'<', b'>') else { continue };
-                p.i += 1;
-                for item in top_level_commas(&g) {
-                    let item = item.trim_start_matches("const ").trim();
-                    let n = item.split([':', '=']).next().unwrap_or("").trim();
-                    generics.push(n.to_string());
-                    defaults.push(item.split_once('=').and_then(|(_, d)| Ty::parse(d.trim())));
-                }
-            }
-            // to the body's brace, past `: unit(...)` in a stream block; a `;` or `(` first is no block of ours
-            let stream = p.peek() == Some(b':');
-            if stream {
-                while p.i < b.len() && b[p.i] != b'(' {
-                    p.i += 1;
-                }
-                p.i += 1;
-                if p.balanced(b'(', b')').is_none() {
-                    continue;
-                }
-                p.i += 1;
-            }
-            while p.i < b.len() && !matches!(b[p.i], b'{' | b';' | b'(') {
-                p.i += 1;
-            }
-            if p.i >= b.len() || b[p.i] != b'{' {
-                continue;
-            }
-            p.i += 1;
-            let Some(body) = p.balanced(b'{', b'}') else { continue };
-            let mut d = Decl { generics, defaults, fields: vec![] };
-            let mut rest = body.as_str();
-            if stream {
-                d.fields.push(("clock".into(), signal("In", Ty::Path("Clock".into(), vec![]))));
-                d.fields.push(("valid_in".into(), signal("In", Ty::Path("Bit".into(), vec![]))));
-                d.fields.push(("valid_out".into(), signal("Out", Ty::Path("Bit".into(), vec![]))));
-                for (section, dir) in [("in", "In"), ("out", "Out")] {
-                    let t = rest.trim_start();
-                    let Some(after) = t.strip_prefix(section) else { break };
-                    let mut q = Parser { s: after.as_bytes(), i: 0 };
-                    if q.eat(b'{').is_none() {
-                        break;
-                    }
-                    let Some(list) = q.balanced(b'{', b'}') else { break };
-                    d.fields.extend(fields(&list, &|t| signal(dir, t)));
-                    rest = &after[q.i + 1..];
-                }
-            }
-            d.fields.extend(fields(rest, &|t| t));
-            if !name.is_empty() {
-                decls.insert(name, d);
-            }
-        }
-    }
-    // the constants stand beside the aliases: a width written `Bits<ANGLE_BITS>` reads its value there
-    for (name, v) in consts {
-        if let Some(v) = v {
-            aliases.entry(name).or_insert(Ty::Expr(v));
-        }
-    }
-    (decls, aliases)
-}
-
 /// A signal's declared fixed-point format.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Format {
@@ -522,106 +180,106 @@ impl Format {
         }
     }
 
-    fn of(name: &str, aliases: &HashMap<String, Ty>, depth: usize) -> Option<Format> {
-        let num = |s: &str| s.parse::<usize>().ok();
+    /// The format an alias of `rtl::q` names (`Sq1_10`, `Uq0_10`, `U8`, `S11`), or `Bit`/`bool`: its width is the
+    /// compiler's (`rtl::q::ALIASES`), its sign and fraction the name's, by the Q convention.
+    fn of(name: &str) -> Option<Format> {
         let f = |signed: bool, bits: usize, frac: u32| Some(Format { name: name.to_string(), signed, bits, frac });
-        if let Some((m, n)) = name.strip_prefix("Sq").and_then(|r| r.split_once('_')) {
-            return f(true, 1 + num(m)? + num(n)?, num(n)? as u32);
-        }
-        if let Some((m, n)) = name.strip_prefix("Uq").and_then(|r| r.split_once('_')) {
-            return f(false, num(m)? + num(n)?, num(n)? as u32);
-        }
-        if let Some(b) = name.strip_prefix('U').and_then(num) {
-            return f(false, b, 0);
-        }
-        if let Some(b) = name.strip_prefix('S').and_then(num) {
-            return f(true, b, 0);
-        }
         if name == "Bit" || name == "bool" {
             return f(false, 1, 0);
         }
-        let t = aliases.get(name)?;
-        match t {
-            Ty::Path(n, a) if n == "Bits" && a.len() == 1 => {
-                let Ty::Expr(w) = &a[0] else { return None };
-                f(false, num(w)?, 0)
-            }
-            Ty::Path(n, a) if a.is_empty() && depth < 4 => {
-                Format::of(n, aliases, depth + 1).map(|x| Format { name: name.to_string(), ..x })
-            }
-            _ => None,
+        let &(_, bits) = rtl::q::ALIASES.iter().find(|a| a.0 == name)?;
+        match Format::by_name(name) {
+            Some((signed, _, frac)) => f(signed, bits, frac),
+            None => f(false, bits, 0),
         }
+    }
+
+    /// (signed, bits, fraction bits) as a name in the Q convention says: `SqM_N` 1 + M + N, `UqM_N` M + N, `Sn` and
+    /// `Un` n; None for a name that does not follow it.
+    fn by_name(name: &str) -> Option<(bool, usize, u32)> {
+        let num = |s: &str| s.parse::<usize>().ok();
+        if let Some((m, n)) = name.strip_prefix("Sq").and_then(|r| r.split_once('_')) {
+            return Some((true, 1 + num(m)? + num(n)?, num(n)? as u32));
+        }
+        if let Some((m, n)) = name.strip_prefix("Uq").and_then(|r| r.split_once('_')) {
+            return Some((false, num(m)? + num(n)?, num(n)? as u32));
+        }
+        if let Some(b) = name.strip_prefix('U').and_then(num) {
+            return Some((false, b, 0));
+        }
+        if let Some(b) = name.strip_prefix('S').and_then(num) {
+            return Some((true, b, 0));
+        }
+        None
     }
 }
 
-/// The format of the leaf type a signal's path ends at, or None (a clock, an unresolved name).
-fn leaf_format(t: &Ty, aliases: &HashMap<String, Ty>) -> Option<Format> {
+/// The format of the leaf type a signal's path ends at, or None (a clock, an unresolved name). `bits` is the
+/// compiler's width of the signal, which a width written with a named constant (`Bits<ANGLE_BITS>`) takes.
+fn leaf_format(t: &Ty, bits: usize) -> Option<Format> {
+    let raw = |kind: &str, signed: bool, w: &Ty| match w {
+        Ty::Expr(n) => Some(Format { name: format!("{kind}<{n}>"), signed, bits: n.parse().ok()?, frac: 0 }),
+        // a named constant (a generic parameter left unbound is no path: see `Formats::types_along`)
+        Ty::Path(c, ca) if ca.is_empty() => Some(Format { name: format!("{kind}<{c}>"), signed, bits, frac: 0 }),
+        _ => None,
+    };
     match t {
-        Ty::Path(n, a) if n == "Bits" && a.len() == 1 => match &a[0] {
-            Ty::Expr(w) => Some(Format { name: format!("Bits<{w}>"), signed: false, bits: w.parse().ok()?, frac: 0 }),
-            // a named constant
-            Ty::Path(c, ca) if ca.is_empty() => match aliases.get(c) {
-                Some(Ty::Expr(w)) => {
-                    Some(Format { name: format!("Bits<{c}>"), signed: false, bits: w.parse().ok()?, frac: 0 })
-                }
-                _ => None,
-            },
-            _ => None,
-        },
+        Ty::Path(n, a) if n == "Bits" && a.len() == 1 => raw("Bits", false, &a[0]),
         // a two's complement integer of a parameter's width
-        Ty::Path(n, a) if n == "SBits" && a.len() == 1 => match &a[0] {
-            Ty::Expr(w) => Some(Format { name: format!("SBits<{w}>"), signed: true, bits: w.parse().ok()?, frac: 0 }),
-            _ => None,
-        },
-        Ty::Path(n, a) if a.is_empty() => Format::of(n, aliases, 0),
+        Ty::Path(n, a) if n == "SBits" && a.len() == 1 => raw("SBits", true, &a[0]),
+        Ty::Path(n, a) if a.is_empty() => Format::of(n),
         _ => None,
     }
 }
 
-/// The formats of a unit's signals, by the type name of its rtl block (`std::any::type_name`).
+/// The formats of a unit's signals: the declaration the compiler records of its rtl block and of every block it
+/// holds (`rtl::prim::declared`), read along each signal's path, with the types' text as the declarations write it.
 pub struct Formats {
-    decls: HashMap<String, Decl>,
-    aliases: HashMap<String, Ty>,
     top: Ty,
+    root: Declaration,
 }
 
 impl Formats {
-    pub fn of<U>() -> Formats {
-        let (decls, aliases) = declarations();
+    pub fn of<U: Declared>() -> Formats {
         let top = Ty::parse(std::any::type_name::<U>()).unwrap_or(Ty::Path(String::new(), vec![]));
-        Formats { decls, aliases, top }
+        Formats { top, root: U::declaration() }
     }
 
-    /// The types along a signal's path: the top block's, then each field's (its generics bound to the enclosing
-    /// block's arguments, array elements for `name$k`), the last the signal's own (`Signal<In, Sq1_10>`).
-    fn types_along(&self, path: &str) -> Option<Vec<Ty>> {
-        let mut types = vec![self.top.clone()];
+    /// The types along a signal's path: the top block's, then each field's (its type as written, the enclosing
+    /// block's generic arguments substituted, array elements for `name$k`), the last the signal's own
+    /// (`Signal<In, Sq1_10>`); each beside the compiler's declaration of it.
+    fn types_along(&self, path: &str) -> Option<Vec<(Ty, &Declaration)>> {
+        let mut types = vec![(self.top.clone(), &self.root)];
         for seg in path.split('.').skip(1) {
-            let Ty::Path(name, args) = types.last()? else { return None };
-            let d = self.decls.get(name)?;
-            let mut env: HashMap<String, Ty> = d.generics.iter().cloned().zip(args.iter().cloned()).collect();
-            for (g, def) in d.generics.iter().zip(&d.defaults).skip(args.len()) {
-                if let Some(def) = def {
-                    env.insert(g.clone(), def.clone());
-                }
-            }
+            let (Ty::Path(_, args), Declaration::Block(b)) = types.last()? else { return None };
+            // each generic bound to the argument the enclosing type gives it, else to its default; one left unbound
+            // reads as an expression no format takes
+            let env: HashMap<String, Ty> = b
+                .generics
+                .iter()
+                .enumerate()
+                .map(|(k, g)| {
+                    let t = args.get(k).cloned().or_else(|| g.default.and_then(Ty::parse));
+                    (g.name.to_string(), t.unwrap_or_else(|| Ty::Expr(format!("{{ {} }}", g.name))))
+                })
+                .collect();
             let mut parts = seg.split('$');
-            let field = parts.next()?;
-            let (_, ft) = d.fields.iter().find(|(n, _)| n == field)?;
-            let mut t = ft.subst(&env);
+            let name = parts.next()?;
+            let field = b.fields.iter().find(|f| f.name == name)?;
+            let (mut t, mut d) = (Ty::parse(field.ty)?.subst(&env), &field.decl);
             for _ in parts {
-                let Ty::Array(inner, _) = t else { return None };
-                t = *inner;
+                let (Ty::Array(inner, _), Declaration::Array(e)) = (t, d) else { return None };
+                (t, d) = (*inner, &**e);
             }
-            types.push(t);
+            types.push((t, d));
         }
         Some(types)
     }
 
     /// The type of the block at `path` ("uut.unit$0"), by the name its struct has in the source.
     pub fn block_at(&self, path: &str) -> Option<String> {
-        match self.types_along(path)?.pop()? {
-            Ty::Path(n, _) => Some(n),
+        match self.types_along(path)?.pop()?.1 {
+            Declaration::Block(b) => Some(b.name.to_string()),
             _ => None,
         }
     }
@@ -633,19 +291,21 @@ impl Formats {
         let types = self.types_along(path)?;
         let segs: Vec<&str> = path.split('.').skip(1).collect();
         // the last block on the path (not the signal itself) that is not a library register or memory
-        let (k, name) = types[..types.len() - 1].iter().enumerate().rev().find_map(|(k, t)| match t {
-            Ty::Path(n, _) if !matches!(n.as_str(), "DFF" | "RAM" | "ROM") => Some((k, n.clone())),
+        let (k, name) = types[..types.len() - 1].iter().enumerate().rev().find_map(|(k, t)| match t.1 {
+            Declaration::Block(b) if !b.library => Some((k, b.name.to_string())),
             _ => None,
         })?;
         let local: Vec<&str> = segs[k..].iter().map(|s| s.split('$').next().unwrap_or(s)).collect();
         Some((name, local.join(".")))
     }
 
-    /// The declared format of the signal `path` ("uut.norm.s3_l.q"), or None where the source does not say.
+    /// The declared format of the signal `path` ("uut.norm.s3_l.q"), or None where the declarations do not say.
     pub fn format(&self, path: &str) -> Option<Format> {
-        match self.types_along(path)?.pop()? {
-            Ty::Path(n, a) if n == "Signal" && a.len() == 2 => leaf_format(&a[1], &self.aliases),
-            Ty::Path(n, a) if n == "Constant" && a.len() == 1 => leaf_format(&a[0], &self.aliases),
+        let (t, d) = self.types_along(path)?.pop()?;
+        let Declaration::Wire { bits } = *d else { return None };
+        match t {
+            Ty::Path(n, a) if n == "Signal" && a.len() == 2 => leaf_format(&a[1], bits),
+            Ty::Path(n, a) if n == "Constant" && a.len() == 1 => leaf_format(&a[0], bits),
             _ => None,
         }
     }
@@ -794,33 +454,7 @@ pub fn sites(f: &Formats, proof: &bounds::Proof) -> Vec<Site> {
 
 #[cfg(test)]
 mod tests {
-
-    #[test]
-    fn a_macro_s_optional_groups_are_kept_where_the_invocation_names_them() {
-        let src = "macro_rules! m { ($t:ident, $n:literal $(, gloss: $g:ident, $c:ident)? $(, filter: $f:ident)?) => { \
-                   struct $t { a: U8, $($c: U8,)? $(pub $g: Gloss,)? $(pub $f: [Bilinear; 2],)? } }; }\n\
-                   m!(A, 1);\nm!(B, 2, gloss: gl, conc);\nm!(C, 3, filter: filt);\nm!(D, 4, gloss: gl, conc, filter: filt);";
-        let x = expand_local_macros(src);
-        let squash = |t: &str| t.split_whitespace().collect::<Vec<_>>().join(" ");
-        assert_eq!(x.len(), 4, "{x:?}");
-        assert_eq!(squash(&x[0]), "struct A { a: U8, }");
-        assert_eq!(squash(&x[1]), "struct B { a: U8, conc: U8, pub gl: Gloss, }");
-        assert_eq!(squash(&x[2]), "struct C { a: U8, pub filt: [Bilinear; 2], }");
-        assert_eq!(squash(&x[3]), "struct D { a: U8, conc: U8, pub gl: Gloss, pub filt: [Bilinear; 2], }");
-    }
-
     use super::*;
-
-    /// A macro defined in one file and invoked in another (re-exported by path) is expanded in the invoking file.
-    #[test]
-    fn a_macro_lent_by_another_file_is_expanded_where_it_is_invoked() {
-        let defs = "macro_rules! w { ($t:ident $(, gloss: $g:ident)?) => { struct $t { a: U8, $(pub $g: Gloss,)? } }; }\npub(crate) use w;";
-        let uses = "use crate::cartesian::wiring::w;\nw!(A);\nw!(B, gloss: gl);";
-        let squash = |t: &str| t.split_whitespace().collect::<Vec<_>>().join(" ");
-        let x: Vec<String> = expand_macros(defs, uses).iter().map(|t| squash(t)).collect();
-        assert_eq!(x, ["struct A { a: U8, }", "struct B { a: U8, pub gl: Gloss, }"]);
-        assert!(expand_local_macros(uses).is_empty());
-    }
 
     #[test]
     fn types_parse_with_their_arguments() {
@@ -839,6 +473,8 @@ mod tests {
             Some("PalettePipeline<8, 9>".into())
         );
         assert_eq!(Ty::parse("Signal<Local, Bits<16>>").map(|t| t.text()), Some("Signal<Local, Bits<16>>".into()));
+        // as `stringify!` writes a type captured by a macro
+        assert_eq!(Ty::parse("Signal < In, Bits < 8 > >").map(|t| t.text()), Some("Signal<In, Bits<8>>".into()));
     }
 
     #[test]
@@ -854,25 +490,49 @@ mod tests {
 
     #[test]
     fn formats_follow_the_q_convention() {
-        let a = HashMap::new();
-        let q = |n: &str| Format::of(n, &a, 0).map(|f| (f.q(), f.bits));
+        let q = |n: &str| Format::of(n).map(|f| (f.q(), f.bits));
         assert_eq!(q("Sq1_10"), Some(("sQ1.10".into(), 12)));
         assert_eq!(q("Uq0_10"), Some(("uQ0.10".into(), 10)));
         assert_eq!(q("U8"), Some(("u8".into(), 8)));
         assert_eq!(q("S11"), Some(("s11".into(), 11)));
+        assert_eq!(q("Bit"), Some(("u1".into(), 1)));
+        // a name `rtl::q` does not declare is no format, whatever it looks like
+        assert_eq!(q("Sq3_3"), None);
+    }
+
+    #[test]
+    fn every_alias_of_q_is_as_wide_as_its_name_says() {
+        assert!(rtl::q::ALIASES.len() >= 14, "{:?}", rtl::q::ALIASES);
+        for &(name, bits) in rtl::q::ALIASES {
+            let (_, by_name, _) = Format::by_name(name).unwrap_or_else(|| panic!("{name}: not in the Q convention"));
+            assert_eq!(by_name, bits, "{name}: the compiler makes it {bits} bits");
+        }
     }
 
     #[test]
     fn the_stream_blocks_and_the_library_blocks_are_declared() {
-        let (d, aliases) = declarations();
-        let dot3 = &d["Dot3"];
-        let names: Vec<&str> = dot3.fields.iter().map(|f| f.0.as_str()).collect();
-        assert!(names.starts_with(&["clock", "valid_in", "valid_out", "n_x"]), "{names:?}");
+        let Declaration::Block(dot3) = rtl::dot3::Dot3::declaration() else { panic!("Dot3 is a block") };
+        let names: Vec<&str> = dot3.fields.iter().map(|f| f.name).collect();
+        assert!(names.starts_with(&["clock", "valid_in", "n_x"]), "{names:?}");
         assert!(names.contains(&"s3_t") && names.contains(&"w_partial"));
-        assert_eq!(d["PaletteLookup"].generics, ["A", "R"]);
-        assert_eq!(d["Delay"].generics, ["T", "N"]);
-        assert!(d.contains_key("DFF") && d.contains_key("RAM"));
-        assert_eq!(aliases.get("Sq1_10").map(Ty::text), Some("Bits<12>".into()));
+        let s3_t = dot3.fields.iter().find(|f| f.name == "s3_t").unwrap();
+        assert_eq!(Ty::parse(s3_t.ty).map(|t| t.text()), Some("[DFF<Sq4_20>; 3]".into()));
+        let Declaration::Array(e) = &s3_t.decl else { panic!("s3_t is an array") };
+        let Declaration::Block(dff) = &**e else { panic!("a DFF is a block") };
+        assert!(dff.library && dff.name == "DFF");
+        assert!(matches!(
+            dff.fields.iter().find(|f| f.name == "q").map(|f| &f.decl),
+            Some(Declaration::Wire { bits: 25 })
+        ));
+        let Declaration::Block(p) = rtl::palette_lookup::PaletteLookup::<8, 9>::declaration() else { panic!() };
+        assert_eq!(p.generics.iter().map(|g| g.name).collect::<Vec<_>>(), ["A", "R"]);
+        let Declaration::Block(d) = rtl::delay::Delay::<bool, 3>::declaration() else { panic!() };
+        assert_eq!(d.generics.iter().map(|g| (g.name, g.default)).collect::<Vec<_>>(), [("T", None), ("N", None)]);
+        let Declaration::Block(b) = rtl::bilinear::Bilinear::<8, 0>::declaration() else { panic!() };
+        assert_eq!(
+            b.generics.iter().map(|g| (g.name, g.default)).collect::<Vec<_>>(),
+            [("F", Some("8")), ("D", Some("0"))]
+        );
     }
 
     #[test]
@@ -885,11 +545,26 @@ mod tests {
         assert_eq!(q("uut.builder.l_dly$1.line$3.d"), Some(("Sq1_10".into(), 12, true)));
         assert_eq!(q("uut.builder.conc"), Some(("U8".into(), 8, false)));
         assert_eq!(q("uut.clock"), None);
+        assert_eq!(q("uut.no_such_field"), None);
         assert_eq!(f.owner("uut.builder.diffuse.s3_t$2.q"), Some(("Dot3".into(), "s3_t.q".into())));
         assert_eq!(f.owner("uut.builder.l_dly$1.line$3.d"), Some(("Delay".into(), "line.d".into())));
         assert_eq!(f.owner("uut.lookup.ram.read_data"), Some(("PaletteLookup".into(), "ram.read_data".into())));
         assert_eq!(f.owner("uut.idx"), Some(("PalettePipeline".into(), "idx".into())));
         assert_eq!(f.block_at("uut.builder.diffuse").as_deref(), Some("Dot3"));
         assert_eq!(f.block_at("uut").as_deref(), Some("PalettePipeline"));
+    }
+
+    #[test]
+    fn a_width_written_with_a_named_constant_is_the_compiler_s() {
+        let f = Formats::of::<rtl::sincos::SinCosUnit>();
+        let angle = f.format("uut.angle").expect("a format");
+        assert_eq!(
+            (angle.name.as_str(), angle.bits, angle.signed),
+            ("Bits<ANGLE_BITS>", rtl::sincos::ANGLE_BITS, false)
+        );
+        // a generic left unbound is no format: `Delay<T, N>` seen alone, without its arguments' text
+        let d = Formats { top: Ty::Path("Delay".into(), vec![]), root: rtl::delay::Delay::<bool, 3>::declaration() };
+        assert_eq!(d.format("uut.q"), None);
+        assert_eq!(d.format("uut.line$0.q"), None);
     }
 }
