@@ -1,5 +1,7 @@
-//! Datapath widths, seen: every signal of an rtl block with the fixed-point format its source declares and the
-//! range of values it takes in the rust-hdl simulation of the unit's vectors.
+//! The bumprtl width analysis: every signal of an rtl block with the fixed-point format its declaration gives it,
+//! the range of values it takes in the rust-hdl simulation of the unit's vectors (here), the range it can take over
+//! every input sequence (`bounds`), and the steps that may leave their format on purpose (`wraps`). It reads rtl
+//! blocks, not scenes: `bumprtl widths` prints it, and `sim`'s GTKWave save files take the signedness from it.
 //!
 //! The simulator keeps widths but not formats (`Sq1_10` and `Uq0_12` are both `Bits<12>` to it), so the formats
 //! come from what the compiler records of each block's declaration (`rtl::prim::declared`: every field's name and
