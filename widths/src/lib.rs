@@ -7,7 +7,7 @@
 //! come from what the compiler records of each block's declaration (`rtl::prim::declared`: every field's name and
 //! type as written, and that type's own declaration): a signal's hierarchical name (`uut.norm.s3_l.q`, as in the
 //! VCD) is followed through them, generic parameters substituted in the types' text, down to its type alias
-//! (`rtl::q::ALIASES`). The values come from a rust-hdl probe that visits every signal once a clock,
+//! (`rtl::prim::q::ALIASES`). The values come from a rust-hdl probe that visits every signal once a clock,
 //! with the clock low and the slot settled (every register's d is then what the edge latches).
 
 pub mod bounds;
@@ -172,7 +172,7 @@ pub struct Format {
 }
 
 impl Format {
-    /// Qm.n, the sign not counted in m (the convention of `rtl::q`), with `s`/`u`: "sQ1.10", "uQ0.10", "u8".
+    /// Qm.n, the sign not counted in m (the convention of `rtl::prim::q`), with `s`/`u`: "sQ1.10", "uQ0.10", "u8".
     pub fn q(&self) -> String {
         let int = self.bits as i64 - self.frac as i64 - self.signed as i64;
         match (self.signed, self.frac) {
@@ -182,14 +182,14 @@ impl Format {
         }
     }
 
-    /// The format an alias of `rtl::q` names (`Sq1_10`, `Uq0_10`, `U8`, `S11`), or `Bit`/`bool`: its width is the
-    /// compiler's (`rtl::q::ALIASES`), its sign and fraction the name's, by the Q convention.
+    /// The format an alias of `rtl::prim::q` names (`Sq1_10`, `Uq0_10`, `U8`, `S11`), or `Bit`/`bool`: its width is the
+    /// compiler's (`rtl::prim::q::ALIASES`), its sign and fraction the name's, by the Q convention.
     fn of(name: &str) -> Option<Format> {
         let f = |signed: bool, bits: usize, frac: u32| Some(Format { name: name.to_string(), signed, bits, frac });
         if name == "Bit" || name == "bool" {
             return f(false, 1, 0);
         }
-        let &(_, bits) = rtl::q::ALIASES.iter().find(|a| a.0 == name)?;
+        let &(_, bits) = rtl::prim::q::ALIASES.iter().find(|a| a.0 == name)?;
         match Format::by_name(name) {
             Some((signed, _, frac)) => f(signed, bits, frac),
             None => f(false, bits, 0),
@@ -498,14 +498,14 @@ mod tests {
         assert_eq!(q("U8"), Some(("u8".into(), 8)));
         assert_eq!(q("S11"), Some(("s11".into(), 11)));
         assert_eq!(q("Bit"), Some(("u1".into(), 1)));
-        // a name `rtl::q` does not declare is no format, whatever it looks like
+        // a name `rtl::prim::q` does not declare is no format, whatever it looks like
         assert_eq!(q("Sq3_3"), None);
     }
 
     #[test]
     fn every_alias_of_q_is_as_wide_as_its_name_says() {
-        assert!(rtl::q::ALIASES.len() >= 14, "{:?}", rtl::q::ALIASES);
-        for &(name, bits) in rtl::q::ALIASES {
+        assert!(rtl::prim::q::ALIASES.len() >= 14, "{:?}", rtl::prim::q::ALIASES);
+        for &(name, bits) in rtl::prim::q::ALIASES {
             let (_, by_name, _) = Format::by_name(name).unwrap_or_else(|| panic!("{name}: not in the Q convention"));
             assert_eq!(by_name, bits, "{name}: the compiler makes it {bits} bits");
         }
@@ -528,7 +528,7 @@ mod tests {
         ));
         let Declaration::Block(p) = rtl::palette_lookup::PaletteLookup::<8, 9>::declaration() else { panic!() };
         assert_eq!(p.generics.iter().map(|g| g.name).collect::<Vec<_>>(), ["A", "R"]);
-        let Declaration::Block(d) = rtl::delay::Delay::<bool, 3>::declaration() else { panic!() };
+        let Declaration::Block(d) = rtl::prim::delay::Delay::<bool, 3>::declaration() else { panic!() };
         assert_eq!(d.generics.iter().map(|g| (g.name, g.default)).collect::<Vec<_>>(), [("T", None), ("N", None)]);
         let Declaration::Block(b) = rtl::bilinear::Bilinear::<8, 0>::declaration() else { panic!() };
         assert_eq!(
@@ -565,7 +565,8 @@ mod tests {
             ("Bits<ANGLE_BITS>", rtl::sincos::ANGLE_BITS, false)
         );
         // a generic left unbound is no format: `Delay<T, N>` seen alone, without its arguments' text
-        let d = Formats { top: Ty::Path("Delay".into(), vec![]), root: rtl::delay::Delay::<bool, 3>::declaration() };
+        let d =
+            Formats { top: Ty::Path("Delay".into(), vec![]), root: rtl::prim::delay::Delay::<bool, 3>::declaration() };
         assert_eq!(d.format("uut.q"), None);
         assert_eq!(d.format("uut.line$0.q"), None);
     }

@@ -4,9 +4,9 @@
 //! l0·256 ± |d1|·w1; ± |d2|·w2; the shift and saturation. The operand register feeds nothing but the multiplier, so
 //! the placer can put it beside the DSP: the long route lands on a register-to-register path.
 
-use crate::delay::Delay;
-use crate::q::{SBits, Sq11_8, Sq7_2, S8, S9};
-use crate::sm_mul::{self, SmMul};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, Sq11_8, Sq7_2, S8, S9};
+use crate::prim::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.

@@ -23,9 +23,9 @@ macro_rules! cartesian_pipeline {
 pub mod $m {
 use super::*; // the decode the invocation names
 #[allow(unused_imports)] // each variant holds some of these
-use crate::{bilinear::BilinearUnit, delay::Delay, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
+use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
 #[allow(unused_imports)]
-use crate::{q::{S8, Sq1_10, Sq7_2, Sq9_0, U8}, ram_delay::{DelayedBlend, RamDelay}};
+use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq7_2, Sq9_0, U8}, ram_delay::RamDelay}};
 
 /// Cycles from the pipeline's input to each unit's input.
 pub const AT_NORMALISE: usize = $front + crate::$dec_mod::LATENCY;

@@ -2,10 +2,10 @@
 //! shared normaliser, the scale factor waiting beside the tangent unit. Latency 31 = tangent 8 + height_normal 12 +
 //! normalise 11.
 
-use crate::delay::Delay;
 use crate::height_normal::{self, HeightNormal};
 use crate::normalise::{self, Normalise};
-use crate::q::{Sq1_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, U8};
 use crate::tangent::{self, Tangent};
 use rust_hdl::prelude::*;
 

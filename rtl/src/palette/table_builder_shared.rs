@@ -14,10 +14,10 @@
 //! and its 72-bit fan-out are not in front of the dot product's first stage) + dot3 6 + N·H's clock 1 + gloss 11 +
 //! the colour 4 (operands; products; rounding; b's product rounded a clock after r's and g's, r and g held for it).
 
-use crate::delay::Delay;
 use crate::dot3::{self, Dot3};
 use crate::gloss::{self, Gloss};
-use crate::q::{Sq1_10, Uq0_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, Uq0_10, U8};
 use rust_hdl::prelude::*;
 
 /// Clocks to the dot product's output (N·L; N·H a clock later), to the gloss unit's input, to its output, and in all.

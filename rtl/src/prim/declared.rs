@@ -1,6 +1,6 @@
 //! What the compiler records of each block's declaration, for the width report: rust-hdl keeps only widths
 //! (`Sq1_10` and `Uq2_10` are both `Bits<12>` to it), while the project's fixed-point formats live in the type names
-//! the source writes (`rtl::q`). Every block is declared through a macro (`crate::block!`, or `crate::stream_block!`
+//! the source writes (`rtl::prim::q`). Every block is declared through a macro (`crate::block!`, or `crate::stream_block!`
 //! for a unit) that writes the struct once and, beside it, an implementation of `Declared`: the struct's name, its
 //! generic parameters with their defaults, and each field's name and type as written (`stringify!`), together with
 //! the declaration of that field's own type. The compiler thus walks from a top block to every block it holds,

@@ -17,9 +17,9 @@
 //! Values are carried in 16/32-bit containers (rust-hdl multiplies only 16 × 16 → 32); the comments give their real
 //! widths, and yosys removes the constant upper bits.
 
-use crate::delay::Delay;
-use crate::q::{SBits, U8};
-use crate::sm_mul::{self, SmMul};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, U8};
+use crate::prim::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.

@@ -8,8 +8,8 @@
 //! slow clock-to-output (5.6 ns on an ECP5-6) does not add to the multiplier's delay; the products; the rounding;
 //! the signs.
 
-use crate::delay::Delay;
-use crate::q::{Sq1_10, Sq9_0, Uq1_12};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, Sq9_0, Uq1_12};
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 

@@ -10,7 +10,7 @@
 //! `x` is two's complement in `N` bits (`N` ≤ 32). Its magnitude must fit 16 bits: the caller states why, and
 //! `magnitude_fits_16_bits` in the tests checks the edge. Truncation to 16 bits of a magnitude that fits is exact.
 
-use crate::q::SBits;
+use crate::prim::q::SBits;
 use rust_hdl::prelude::*;
 
 /// Clock edges from x and w to the product.
