@@ -1,11 +1,11 @@
 //! `bumprtl widths <unit>`: every signal of the unit's rtl block, by its VCD name, with the fixed-point format its
 //! source declares and the range it takes over the unit's vectors in rust-hdl (every input when the unit has at most
 //! 2^20, else its hard cases and `--count` random vectors): the bits that range needs, the spare bits at the top,
-//! and a flag where two or more of them go unused. See `sim::widths`.
+//! and a flag where two or more of them go unused. See the `widths` crate.
 
+use ::widths::{bits_needed, bounds, mismatches, seen_ticking, sites, wraps::Waived, Formats};
 use indicatif::{ProgressBar, ProgressStyle};
 use rtl::StreamUnit;
-use sim::widths::{bits_needed, bounds, mismatches, seen_ticking, sites, wraps::Waived, Formats};
 use vectors::UnitModel;
 
 /// One signal's row.
@@ -23,7 +23,7 @@ pub struct Row {
     pub proven_needed: usize,
     /// the step that writes it may wrap: the exact hull of what it computes, which the declared range does not hold
     pub wrap: Option<(i128, i128)>,
-    /// that step's entry in `sim::widths::wraps` (deliberate, or argued in range), if it is listed
+    /// that step's entry in `widths::wraps` (deliberate, or argued in range), if it is listed
     pub listed: Option<&'static Waived>,
 }
 
@@ -224,7 +224,7 @@ pub fn run<U: StreamUnit>(
         match r.listed {
             Some(l) if flag == 'a' => println!("      argued: {}; {evidence}", l.why),
             Some(l) => println!("      {}: {}", l.kind.name(), l.why),
-            None => println!("      not listed in sim::widths::wraps: a risk until shown otherwise"),
+            None => println!("      not listed in widths::wraps: a risk until shown otherwise"),
         }
     }
     if let Some(p) = csv_out {

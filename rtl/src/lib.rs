@@ -8,19 +8,27 @@
 //!   signals. This keeps the exported Verilog (32-bit literals) equal to rust-hdl's simulation.
 //! - Every stage boundary is a `DFF`; `LATENCY` is the number of clock edges from an input to its output.
 
-/// Blocks more than one family uses: the colour filter, the normaliser, N·L, glossiness, the blend, the delay lines,
-/// the /255 and the fixed-point types.
+/// The primitives apart from the units, as OpenTitan keeps `prim/`: the fixed-point types (`q`), the delay lines
+/// (`delay` in registers, `ram_delay` in block RAM), the sign-magnitude multiplier (`sm_mul`), and what every block
+/// declaration records for the width report (`declared`, with the `block!` macro).
+pub mod prim {
+    pub mod declared;
+    pub mod delay;
+    pub mod q;
+    pub mod ram_delay;
+    pub mod sm_mul;
+}
+
+/// Blocks more than one family uses: the colour filter, the normaliser, N·L, glossiness, the blend (and the blend
+/// behind its delayed inputs), the /255.
 pub mod shared {
     pub mod bilinear;
     pub mod blend;
-    pub mod delay;
+    pub mod delayed_blend;
     pub mod div255;
     pub mod dot3;
     pub mod gloss;
     pub mod normalise;
-    pub mod q;
-    pub mod ram_delay;
-    pub mod sm_mul;
 }
 
 /// Seed 000's second embodiment: Cartesian texels, per-pixel lights.
@@ -68,11 +76,6 @@ pub mod palette {
 
 pub mod stream;
 
-/// The rtl's source text, embedded at build time (`build.rs`): the width report reads declared types from it.
-pub mod source {
-    include!(concat!(env!("OUT_DIR"), "/sources.rs"));
-}
-
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, cart_surface, light_iter};
 pub use height::{
@@ -81,5 +84,5 @@ pub use height::{
 };
 pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder, table_builder_shared};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
-pub use shared::{bilinear, blend, delay, div255, dot3, gloss, normalise, q, ram_delay, sm_mul};
+pub use shared::{bilinear, blend, delayed_blend, div255, dot3, gloss, normalise};
 pub use stream::StreamUnit;

@@ -3,7 +3,7 @@
 
 use rust_hdl::prelude::*;
 
-pub trait StreamUnit: Block + Sized {
+pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
     /// The unit's name, the same in every crate.
     const NAME: &'static str;
     /// Clock edges from an input vector to its output vector.
@@ -21,9 +21,10 @@ pub trait StreamUnit: Block + Sized {
 }
 
 /// Declares a unit's block once: its data ports, in the model's order (`in { name: Type, ... }`, then `out { ... }`),
-/// then its inner fields; writes the struct with its clock and valid ports and `#[derive(LogicBlock)]`, and
-/// implements `StreamUnit` from the same list, so the harnesses' port lists and widths cannot drift from the
-/// block. The unit's name is an expression (a const-generic block can name each instance: `if DC { "a_dc" } else { "a" }`).
+/// then its inner fields; writes the struct with its clock and valid ports through `crate::block!` (so it is
+/// `#[derive(LogicBlock)]` and `Declared`), and implements `StreamUnit` from the same list, so the harnesses' port
+/// lists and widths cannot drift from the block. The unit's name is an expression (a const-generic block can name
+/// each instance: `if DC { "a_dc" } else { "a" }`).
 /// ```ignore
 /// stream_block! {
 ///     #[derive(Default)]
@@ -49,15 +50,16 @@ macro_rules! stream_block {
             $($(#[$fa:meta])* $fv:vis $f:ident : $ft:ty),* $(,)?
         }
     ) => {
-        #[derive(LogicBlock)]
-        $(#[$attr])*
-        pub struct $t $(< $(const $g: $gt $(= $gd)?),* >)? {
-            pub clock: Signal<In, Clock>,
-            pub valid_in: Signal<In, Bit>,
-            $(pub $i: Signal<In, $it>,)*
-            pub valid_out: Signal<Out, Bit>,
-            $(pub $o: Signal<Out, $ot>,)*
-            $($(#[$fa])* $fv $f: $ft,)*
+        $crate::block! {
+            $(#[$attr])*
+            pub struct $t $(< $(const $g: $gt $(= $gd)?),* >)? {
+                pub clock: Signal<In, Clock>,
+                pub valid_in: Signal<In, Bit>,
+                $(pub $i: Signal<In, $it>,)*
+                pub valid_out: Signal<Out, Bit>,
+                $(pub $o: Signal<Out, $ot>,)*
+                $($(#[$fa])* $fv $f: $ft,)*
+            }
         }
 
         impl $(< $(const $g: $gt),* >)? $crate::stream::StreamUnit for $t $(< $($g),* >)? {

@@ -2,13 +2,13 @@
 //! the VCD's own header (so every name is one GTKWave finds), grouped: the valid flags first (the top block's, then
 //! every unit's inside it), then the top block's ports, then each block's registers stage by stage (the rtl names
 //! a stage's registers `sN_*` or `sNb_*`), its other registers, and its wires. A register shows its output `q`; a
-//! signal the rtl declares signed (`sim::widths::Formats`) is shown as signed decimal, other buses as decimal, bits
+//! signal the rtl declares signed (`widths::Formats`) is shown as signed decimal, other buses as decimal, bits
 //! as binary. Only the top groups are open.
 
-use crate::widths::Formats;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
+use widths::Formats;
 
 /// GTKWave's trace flags (its `TR_*`), written in hex after `@`.
 const RJUSTIFY: u32 = 0x20;

@@ -13,4 +13,3 @@ pub mod shortcomings;
 pub mod surface;
 pub mod variants;
 pub mod wave;
-pub mod widths;

@@ -18,7 +18,7 @@ pub fn write_vcd<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], path: &P
         }
     };
     std::fs::rename(&tmp, path).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
-    crate::gtkw::write_beside(path, &crate::widths::Formats::of::<U>())?;
+    crate::gtkw::write_beside(path, &widths::Formats::of::<U>())?;
     Ok(got)
 }
 

@@ -132,7 +132,7 @@ fn signed_products_go_through_the_one_sign_magnitude_multiplier() {
 
 #[test]
 fn nothing_writes_into_the_system_temp_folder() {
-    for dir in ["src", "sim", "synth", "testbench", "rtl/src", "vectors/src", "tests"] {
+    for dir in ["src", "sim", "synth", "testbench", "rtl/src", "vectors/src", "tests", "widths"] {
         for (path, text) in rust_sources(dir) {
             if path.ends_with("architecture.rs") {
                 continue;

@@ -2,8 +2,8 @@
 //! `vectors::cart_decode`: texels saturate at 254; outside the diamond, `|BumpX| = 127 + ax − az`,
 //! `|BumpZ| = 127 + az − ax`, `BumpY = 1`. Latency 4: |T − 127|; ax + az and ax − az; the guard mux; the signs.
 
-use crate::delay::Delay;
-use crate::q::{Sq8_0, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq8_0, U8};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.

@@ -2,8 +2,8 @@
 //! `BumpX = U + V − 255`, `BumpZ = U − V` (INT9), `BumpY = 255 − |BumpX| − |BumpZ|` (UINT8). Exact, no guard: every
 //! texel is legal. Latency 3: the two sums; their magnitudes; BumpY.
 
-use crate::delay::Delay;
-use crate::q::{Sq8_0, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq8_0, U8};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.

@@ -20,9 +20,40 @@ use crate::cart_decode_hemi_oct::CartDecodeHemiOct;
 use crate::cartesian::wiring::cartesian_pipeline;
 use rust_hdl::prelude::*;
 
-const BILINEAR: usize = crate::bilinear::LATENCY;
+cartesian_pipeline! {
+    module: seed,
+    block: CartPipeline,
+    unit: "cart_pipeline",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
 
-cartesian_pipeline!(seed, CartPipeline, "cart_pipeline", CartDecode, cart_decode, texel_x, texel_z, BILINEAR, 1, filter: filter, filter_valid, ublend, vblend, vertex: light, light_norm, light_dly, w1, w2, gloss: gloss, conc, conc_dly);
-cartesian_pipeline!(matte, CartPipelineMatte, "cart_pipeline_matte", CartDecode, cart_decode, texel_x, texel_z, BILINEAR, 0, filter: filter, filter_valid, ublend, vblend, vertex: light, light_norm, light_dly, w1, w2);
-cartesian_pipeline!(hemi_oct, CartPipelineHemiOct, "cart_pipeline_hemi_oct", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, BILINEAR, 1, filter: filter, filter_valid, ublend, vblend, vertex: light, light_norm, light_dly, w1, w2, gloss: gloss, conc, conc_dly);
-cartesian_pipeline!(hemi_oct_matte, CartPipelineHemiOctMatte, "cart_pipeline_hemi_oct_matte", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, BILINEAR, 0, filter: filter, filter_valid, ublend, vblend, vertex: light, light_norm, light_dly, w1, w2);
+cartesian_pipeline! {
+    module: matte,
+    block: CartPipelineMatte,
+    unit: "cart_pipeline_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    module: hemi_oct,
+    block: CartPipelineHemiOct,
+    unit: "cart_pipeline_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: hemi_oct_matte,
+    block: CartPipelineHemiOctMatte,
+    unit: "cart_pipeline_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}

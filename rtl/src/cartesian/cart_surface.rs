@@ -16,13 +16,78 @@ use crate::cart_decode_hemi_oct::CartDecodeHemiOct;
 use crate::cartesian::wiring::cartesian_pipeline;
 use rust_hdl::prelude::*;
 
-const BILINEAR: usize = crate::bilinear::LATENCY;
+cartesian_pipeline! {
+    module: seed,
+    block: CartSurface,
+    unit: "cart_surface",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
 
-cartesian_pipeline!(seed, CartSurface, "cart_surface", CartDecode, cart_decode, texel_x, texel_z, BILINEAR, 1, filter: filter, filter_valid, ublend, vblend, surface: l_x, l_y, l_z, light_word, light_dly, gloss: gloss, conc, conc_dly);
-cartesian_pipeline!(matte, CartSurfaceMatte, "cart_surface_matte", CartDecode, cart_decode, texel_x, texel_z, BILINEAR, 0, filter: filter, filter_valid, ublend, vblend, surface: l_x, l_y, l_z, light_word, light_dly);
-cartesian_pipeline!(hemi_oct, CartSurfaceHemiOct, "cart_surface_hemi_oct", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, BILINEAR, 1, filter: filter, filter_valid, ublend, vblend, surface: l_x, l_y, l_z, light_word, light_dly, gloss: gloss, conc, conc_dly);
-cartesian_pipeline!(hemi_oct_matte, CartSurfaceHemiOctMatte, "cart_surface_hemi_oct_matte", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, BILINEAR, 0, filter: filter, filter_valid, ublend, vblend, surface: l_x, l_y, l_z, light_word, light_dly);
-cartesian_pipeline!(nearest, CartSurfaceNearest, "cart_surface_nearest", CartDecode, cart_decode, texel_x, texel_z, 0, 1, nearest: t_x, t_z, surface: l_x, l_y, l_z, light_word, light_dly, gloss: gloss, conc, conc_dly);
-cartesian_pipeline!(nearest_matte, CartSurfaceNearestMatte, "cart_surface_nearest_matte", CartDecode, cart_decode, texel_x, texel_z, 0, 0, nearest: t_x, t_z, surface: l_x, l_y, l_z, light_word, light_dly);
-cartesian_pipeline!(nearest_hemi_oct, CartSurfaceNearestHemiOct, "cart_surface_nearest_hemi_oct", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, 0, 1, nearest: t_x, t_z, surface: l_x, l_y, l_z, light_word, light_dly, gloss: gloss, conc, conc_dly);
-cartesian_pipeline!(nearest_hemi_oct_matte, CartSurfaceNearestHemiOctMatte, "cart_surface_nearest_hemi_oct_matte", CartDecodeHemiOct, cart_decode_hemi_oct, texel_u, texel_v, 0, 0, nearest: t_x, t_z, surface: l_x, l_y, l_z, light_word, light_dly);
+cartesian_pipeline! {
+    module: matte,
+    block: CartSurfaceMatte,
+    unit: "cart_surface_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+}
+
+cartesian_pipeline! {
+    module: hemi_oct,
+    block: CartSurfaceHemiOct,
+    unit: "cart_surface_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: hemi_oct_matte,
+    block: CartSurfaceHemiOctMatte,
+    unit: "cart_surface_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest,
+    block: CartSurfaceNearest,
+    unit: "cart_surface_nearest",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    nearest: { x: t_x, z: t_z },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_matte,
+    block: CartSurfaceNearestMatte,
+    unit: "cart_surface_nearest_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    nearest: { x: t_x, z: t_z },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_hemi_oct,
+    block: CartSurfaceNearestHemiOct,
+    unit: "cart_surface_nearest_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    nearest: { x: t_x, z: t_z },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_hemi_oct_matte,
+    block: CartSurfaceNearestHemiOctMatte,
+    unit: "cart_surface_nearest_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    nearest: { x: t_x, z: t_z },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+}

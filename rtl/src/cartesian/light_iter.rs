@@ -4,52 +4,54 @@
 //! l0·256 ± |d1|·w1; ± |d2|·w2; the shift and saturation. The operand register feeds nothing but the multiplier, so
 //! the placer can put it beside the DSP: the long route lands on a register-to-register path.
 
-use crate::delay::Delay;
-use crate::q::{SBits, Sq11_8, Sq7_2, S8, S9};
-use crate::sm_mul::{self, SmMul};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, Sq11_8, Sq7_2, S8, S9};
+use crate::prim::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 7;
 
-/// One component of the light: `l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2`, floored to Sq7.2 and saturated to S10.
-/// The weights arrive one clock after the components, as the differences leave stage 1.
-#[derive(LogicBlock, Default)]
-pub struct LightLane {
-    pub clock: Signal<In, Clock>,
-    pub l0: Signal<In, S8>,
-    pub l1: Signal<In, S8>,
-    pub l2: Signal<In, S8>,
-    /// U9 weights in 16 bits, one clock after l0, l1, l2.
-    pub w1: Signal<In, Bits<16>>,
-    pub w2: Signal<In, Bits<16>>,
-    pub light: Signal<Out, Sq7_2>,
-    // stage 1: the differences (S9) and l0·256 (S20)
-    s1_d1: DFF<S9>,
-    s1_d2: DFF<S9>,
-    // l0·256 in 20 bits although 16 carry it (the width report's spare bits): its low 8 bits are zero and its top
-    // 4 copies of the sign, which yosys drops and merges; carrying l0 alone and widening at the sum was measured
-    // the same (645 SB_LUT4, 688 SB_DFF on the UP5K either way)
-    s1_base: DFF<Sq11_8>,
-    // stages 2–4: |d|·w ≤ 255·511 < 2^17, the base beside
-    mul1: SmMul<9>, // S9: |d| ≤ 255 leaves SmMul as 8 bits, so the DSP's operand is 8 bits wide
-    mul2: SmMul<9>,
-    base: Delay<Sq11_8, { sm_mul::LATENCY }>,
-    // stage 5: l0·256 ± |d1|·w1 (S20), the second product beside
-    s5_part: DFF<Sq11_8>,
-    s5_p2: DFF<Sq11_8>,
-    s5_n2: DFF<Bit>,
-    // stage 6: the sum (S20; |L| ≤ 127·256 + 2·255·511 = 293,122 < 2^19)
-    s6_acc: DFF<Sq11_8>,
-    // stage 7: floor to Sq7.2, saturate to S10
-    s7_out: DFF<Sq7_2>,
-    w_e0: Signal<Local, S9>, // l0 sign-extended to S9
-    w_e1: Signal<Local, S9>,
-    w_e2: Signal<Local, S9>,
-    w_e20: Signal<Local, Sq11_8>,  // l0 sign-extended to 20 bits
-    w_p1: Signal<Local, Sq11_8>,   // |d1|·w1 (U17 in 20 bits)
-    w_q: Signal<Local, SBits<14>>, // acc >> 6 (floor): S14
-    w_hi: Signal<Local, Bits<5>>,  // its bits 13..9: all equal when it fits S10
+crate::block! {
+    /// One component of the light: `l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2`, floored to Sq7.2 and saturated to S10.
+    /// The weights arrive one clock after the components, as the differences leave stage 1.
+    #[derive(Default)]
+    pub struct LightLane {
+        pub clock: Signal<In, Clock>,
+        pub l0: Signal<In, S8>,
+        pub l1: Signal<In, S8>,
+        pub l2: Signal<In, S8>,
+        /// U9 weights in 16 bits, one clock after l0, l1, l2.
+        pub w1: Signal<In, Bits<16>>,
+        pub w2: Signal<In, Bits<16>>,
+        pub light: Signal<Out, Sq7_2>,
+        // stage 1: the differences (S9) and l0·256 (S20)
+        s1_d1: DFF<S9>,
+        s1_d2: DFF<S9>,
+        // l0·256 in 20 bits although 16 carry it (the width report's spare bits): its low 8 bits are zero and its top
+        // 4 copies of the sign, which yosys drops and merges; carrying l0 alone and widening at the sum was measured
+        // the same (645 SB_LUT4, 688 SB_DFF on the UP5K either way)
+        s1_base: DFF<Sq11_8>,
+        // stages 2–4: |d|·w ≤ 255·511 < 2^17, the base beside
+        mul1: SmMul<9>, // S9: |d| ≤ 255 leaves SmMul as 8 bits, so the DSP's operand is 8 bits wide
+        mul2: SmMul<9>,
+        base: Delay<Sq11_8, { sm_mul::LATENCY }>,
+        // stage 5: l0·256 ± |d1|·w1 (S20), the second product beside
+        s5_part: DFF<Sq11_8>,
+        s5_p2: DFF<Sq11_8>,
+        s5_n2: DFF<Bit>,
+        // stage 6: the sum (S20; |L| ≤ 127·256 + 2·255·511 = 293,122 < 2^19)
+        s6_acc: DFF<Sq11_8>,
+        // stage 7: floor to Sq7.2, saturate to S10
+        s7_out: DFF<Sq7_2>,
+        w_e0: Signal<Local, S9>, // l0 sign-extended to S9
+        w_e1: Signal<Local, S9>,
+        w_e2: Signal<Local, S9>,
+        w_e20: Signal<Local, Sq11_8>,  // l0 sign-extended to 20 bits
+        w_p1: Signal<Local, Sq11_8>,   // |d1|·w1 (U17 in 20 bits)
+        w_q: Signal<Local, SBits<14>>, // acc >> 6 (floor): S14
+        w_hi: Signal<Local, Bits<5>>,  // its bits 13..9: all equal when it fits S10
+    }
 }
 
 impl Logic for LightLane {

@@ -2,9 +2,10 @@
 //! the bump's normaliser ─┐ the light ─┴→ dot3 → [gloss] → α = P >> 2 → blend, with the side-band values (the
 //! light, C, the blend's mode and colours, P) riding beside the stages they skip.
 //!
-//! `cartesian_pipeline!` writes one block. Its fixed arguments name the module, the block, the unit, the decode (its
-//! block, its module, its two texel ports), the filter's latency (`$front`) and `$g`, 1 with a gloss unit and 0
-//! without. Its optional groups add what a variant holds:
+//! `cartesian_pipeline!` writes one block, every argument named: the module, the block and the unit, then the
+//! decode (`decode: { block, module, u, v }`: its block, its module, its two texel ports). Its optional groups add
+//! what a variant holds, each naming the fields and ports it brings (the group's presence alone sets the filter's
+//! latency in front of the decode and the gloss unit's before the blend):
 //! - `filter:` two bilinear units (TexelX or U, TexelZ or V), their valid chain and the blend factors' ports;
 //! - `nearest:` the two ports the nearest texel comes in on (no filter);
 //! - `vertex:` the three vertex lights and the barycentric weights (the ports the group names are the weights),
@@ -16,22 +17,31 @@
 //! `cart_pipeline.rs` and `cart_surface.rs` invoke it for their blocks.
 
 macro_rules! cartesian_pipeline {
-    ($m:ident, $t:ident, $name:literal, $dec:ident, $dec_mod:ident, $tu:ident, $tv:ident, $front:expr, $g:literal
-        $(, filter: $fl:ident, $flv:ident, $ub:ident, $vb:ident)? $(, nearest: $nx:ident, $nz:ident)?
-        $(, vertex: $li:ident, $ln:ident, $lvd:ident, $w1:ident, $w2:ident)? $(, surface: $lx:ident, $ly:ident, $lz:ident, $lw:ident, $lsd:ident)?
-        $(, gloss: $gl:ident, $conc:ident, $cd:ident)?) => {
+    (
+        module: $m:ident,
+        block: $t:ident,
+        unit: $name:literal,
+        decode: { block: $dec:ident, module: $dec_mod:ident, u: $tu:ident, v: $tv:ident }
+        $(, filter: { units: $fl:ident, valid: $flv:ident, u: $ub:ident, v: $vb:ident })?
+        $(, nearest: { x: $nx:ident, z: $nz:ident })?
+        $(, vertex: { iter: $li:ident, norm: $ln:ident, delay: $lvd:ident, w1: $w1:ident, w2: $w2:ident })?
+        $(, surface: { x: $lx:ident, y: $ly:ident, z: $lz:ident, word: $lw:ident, delay: $lsd:ident })?
+        $(, gloss: { unit: $gl:ident, c: $conc:ident, delay: $cd:ident })?
+        $(,)?
+    ) => {
 pub mod $m {
 use super::*; // the decode the invocation names
 #[allow(unused_imports)] // each variant holds some of these
-use crate::{bilinear::BilinearUnit, delay::Delay, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
+use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
 #[allow(unused_imports)]
-use crate::{q::{S8, Sq1_10, Sq7_2, Sq9_0, U8}, ram_delay::{DelayedBlend, RamDelay}};
+use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq7_2, Sq9_0, U8}, ram_delay::RamDelay}};
 
 /// Cycles from the pipeline's input to each unit's input.
-pub const AT_NORMALISE: usize = $front + crate::$dec_mod::LATENCY;
+// a group's term below is there when the invocation names the group (`0 * stringify!(..).len()` only ties it to it)
+pub const AT_NORMALISE: usize = $(crate::bilinear::LATENCY + 0 * stringify!($fl).len() +)? crate::$dec_mod::LATENCY;
 pub const AT_DOT: usize = AT_NORMALISE + crate::normalise::LATENCY;
 pub const AT_GLOSS: usize = AT_DOT + crate::dot3::LATENCY;
-pub const AT_BLEND: usize = AT_GLOSS + $g * crate::gloss::LATENCY;
+pub const AT_BLEND: usize = AT_GLOSS $(+ crate::gloss::LATENCY + 0 * stringify!($gl).len())?;
 pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY;
 $(#[doc = concat!("Cycles the light from ", stringify!($li), " waits for the bump path before its normaliser.")]
 pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY;)?

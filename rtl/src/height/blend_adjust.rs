@@ -2,8 +2,8 @@
 //! exact: U0 is U with a 1 above it, U1 is U itself. "Completely trivial", as the seed says: wires and one register.
 //! Latency 1.
 
-use crate::delay::Delay;
-use crate::q::U8;
+use crate::prim::delay::Delay;
+use crate::prim::q::U8;
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 1;

@@ -6,10 +6,10 @@
 //! Latency 36 = the grids 1 + bilinear 11 + the differences 1 + height_normal 12 + normalise 11.
 
 use crate::bilinear::{self, BilinearUnit};
-use crate::delay::Delay;
 use crate::height_normal::{self, HeightNormal};
 use crate::normalise::{self, Normalise};
-use crate::q::{SBits, Sq1_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, Sq1_10, U8};
 use rust_hdl::prelude::*;
 
 /// Clocks from the input to the normal unit's.

@@ -3,8 +3,8 @@
 //! border; colour mode subtracts half a texel [51], height mode bypasses it. See `vectors::height_addr`.
 //! Latency 2: the shifted coordinate and the axis's span; the wrap or the clamp, and the split.
 
-use crate::delay::Delay;
-use crate::q::{SBits, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, U8};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 2;

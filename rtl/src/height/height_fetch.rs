@@ -14,8 +14,8 @@
 //! the four words registered (a block RAM's output is slow: straight into the select it held the ECP5 to 83 MHz);
 //! each of the nine heights picked from the four words.
 
-use crate::delay::Delay;
-use crate::q::{SBits, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, U8};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 5;

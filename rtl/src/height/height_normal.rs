@@ -5,9 +5,9 @@
 //! shift from its leading one (one more where rounding carries, read off its top ten bits, no shifter); 2^(s−1);
 //! the three magnitudes + 2^(s−1); >> s; the signs.
 
-use crate::delay::Delay;
-use crate::q::{SBits, Sq9_0, U8};
-use crate::sm_mul::{self, SmMulWide};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, Sq9_0, U8};
+use crate::prim::sm_mul::{self, SmMulWide};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 8 + sm_mul::WIDE_LATENCY;

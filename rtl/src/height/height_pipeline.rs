@@ -7,8 +7,8 @@
 
 use crate::bilinear::{self, BilinearUnit};
 use crate::blend_adjust::{self, BlendAdjust};
-use crate::delay::Delay;
-use crate::q::{Sq1_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, U8};
 use crate::replicate::{self, Replicate};
 use crate::tangent_to_normal::{self, TangentToNormal};
 use rust_hdl::prelude::*;

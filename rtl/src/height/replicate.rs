@@ -2,8 +2,8 @@
 //! units' overlapping 2×2 grids, red `[a b; d e]`, green `[b c; e f]`, blue `[d e; g h]`, alpha `[e f; h k]`, each
 //! in the bilinear unit's texel order (t00, t10, t01, t11). Wires and one register. Latency 1.
 
-use crate::delay::Delay;
-use crate::q::U8;
+use crate::prim::delay::Delay;
+use crate::prim::q::U8;
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 1;

@@ -4,9 +4,9 @@
 //! 12 fraction bits and their differences; d2 − d1 and e2 − e1, d1·256 and e1·256; the two `SmMulWide`s (their
 //! magnitudes reach 21 bits); the sums; the floor.
 
-use crate::delay::Delay;
-use crate::q::{SBits, U8};
-use crate::sm_mul::{self, SmMulWide};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, U8};
+use crate::prim::sm_mul::{self, SmMulWide};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 4 + sm_mul::WIDE_LATENCY;

@@ -2,36 +2,38 @@
 //! shared normaliser, the scale factor waiting beside the tangent unit. Latency 31 = tangent 8 + height_normal 12 +
 //! normalise 11.
 
-use crate::delay::Delay;
 use crate::height_normal::{self, HeightNormal};
 use crate::normalise::{self, Normalise};
-use crate::q::{Sq1_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, U8};
 use crate::tangent::{self, Tangent};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = tangent::LATENCY + height_normal::LATENCY + normalise::LATENCY;
 
-#[derive(LogicBlock, Default)]
-pub struct TangentToNormal {
-    pub clock: Signal<In, Clock>,
-    pub valid_in: Signal<In, Bit>,
-    /// The four units' exact results (U25, 17 fraction bits of a height LSB), the unadjusted blend factors and the
-    /// scale factor, all of one pixel on the same clock.
-    pub red: Signal<In, Bits<25>>,
-    pub green: Signal<In, Bits<25>>,
-    pub blue: Signal<In, Bits<25>>,
-    pub alpha: Signal<In, Bits<25>>,
-    pub ublend: Signal<In, U8>,
-    pub vblend: Signal<In, U8>,
-    pub scale: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub norm_x: Signal<Out, Sq1_10>,
-    pub norm_y: Signal<Out, Sq1_10>,
-    pub norm_z: Signal<Out, Sq1_10>,
-    pub tangent: Tangent,
-    pub normal: HeightNormal,
-    pub norm: Normalise,
-    scale_dly: Delay<U8, { tangent::LATENCY }>,
+crate::block! {
+    #[derive(Default)]
+    pub struct TangentToNormal {
+        pub clock: Signal<In, Clock>,
+        pub valid_in: Signal<In, Bit>,
+        /// The four units' exact results (U25, 17 fraction bits of a height LSB), the unadjusted blend factors and the
+        /// scale factor, all of one pixel on the same clock.
+        pub red: Signal<In, Bits<25>>,
+        pub green: Signal<In, Bits<25>>,
+        pub blue: Signal<In, Bits<25>>,
+        pub alpha: Signal<In, Bits<25>>,
+        pub ublend: Signal<In, U8>,
+        pub vblend: Signal<In, U8>,
+        pub scale: Signal<In, U8>,
+        pub valid_out: Signal<Out, Bit>,
+        pub norm_x: Signal<Out, Sq1_10>,
+        pub norm_y: Signal<Out, Sq1_10>,
+        pub norm_z: Signal<Out, Sq1_10>,
+        pub tangent: Tangent,
+        pub normal: HeightNormal,
+        pub norm: Normalise,
+        scale_dly: Delay<U8, { tangent::LATENCY }>,
+    }
 }
 
 impl Logic for TangentToNormal {

@@ -6,9 +6,9 @@
 //! Latency 43 = the front 1 + bilinear 11 + tangent 8 + height_normal 12 + normalise 11.
 
 use crate::bilinear::{self, BilinearUnit};
-use crate::delay::Delay;
-use crate::q::{Sq1_10, U8};
-use crate::ram_delay::RamDelay;
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, U8};
+use crate::prim::ram_delay::RamDelay;
 use crate::tangent_to_normal::{self, TangentToNormal};
 use rust_hdl::prelude::*;
 

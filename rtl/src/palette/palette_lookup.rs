@@ -6,8 +6,8 @@
 //! Latency 3: the addresses and the write, registered; the RAM's read; the entry registered again (a block RAM's
 //! output is slow) and split into its bytes.
 
-use crate::delay::Delay;
-use crate::q::U8;
+use crate::prim::delay::Delay;
+use crate::prim::q::U8;
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 3;

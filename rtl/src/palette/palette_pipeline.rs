@@ -6,9 +6,9 @@
 //! `A` is the index width, ⌈log2 s_N⌉, and `R` = A + 1 the table RAM's address width: `PalettePipeline<8, 9>` is
 //! `palette_pipeline` (s_N up to 256), `PalettePipeline<12, 13>` is `palette_pipeline_12` (up to 4,096).
 
-use crate::delay::Delay;
 use crate::palette_lookup::{self, PaletteLookup};
-use crate::q::{Sq1_10, Sq9_0, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, Sq9_0, U8};
 use crate::table_builder::{self, TableBuilder};
 use rust_hdl::prelude::*;
 

@@ -10,9 +10,9 @@
 //! together, writes go to the table the frame does not show. See `vectors::palette_pipeline::shared`.
 //! Latency 26 = the shared builder 23 + palette_lookup 3.
 
-use crate::delay::Delay;
 use crate::palette_lookup::{self, PaletteLookup};
-use crate::q::{Sq1_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, U8};
 use crate::table_builder_shared::{self, TableBuilderShared};
 use rust_hdl::prelude::*;
 

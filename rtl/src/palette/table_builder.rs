@@ -4,11 +4,11 @@
 //! See `vectors::table_builder`.
 //! Latency 31 = normalise 11 + dot3 6 + gloss 11 + the colour 3 (operands, products, the rounding).
 
-use crate::delay::Delay;
 use crate::dot3::{self, Dot3};
 use crate::gloss::{self, Gloss};
 use crate::normalise::{self, Normalise};
-use crate::q::{Sq1_10, Sq9_0, Uq0_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, Sq9_0, Uq0_10, U8};
 use rust_hdl::prelude::*;
 
 /// Clocks to the two dot products, to the gloss unit's output, and in all.

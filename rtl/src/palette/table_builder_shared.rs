@@ -14,10 +14,10 @@
 //! and its 72-bit fan-out are not in front of the dot product's first stage) + dot3 6 + N·H's clock 1 + gloss 11 +
 //! the colour 4 (operands; products; rounding; b's product rounded a clock after r's and g's, r and g held for it).
 
-use crate::delay::Delay;
 use crate::dot3::{self, Dot3};
 use crate::gloss::{self, Gloss};
-use crate::q::{Sq1_10, Uq0_10, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, Uq0_10, U8};
 use rust_hdl::prelude::*;
 
 /// Clocks to the dot product's output (N·L; N·H a clock later), to the gloss unit's input, to its output, and in all.
@@ -26,65 +26,67 @@ pub const AT_GLOSS: usize = AT_DOT_OUT + 1;
 pub const AT_COLOUR: usize = AT_GLOSS + gloss::LATENCY;
 pub const LATENCY: usize = AT_COLOUR + 4;
 
-#[derive(LogicBlock, Default)]
-pub struct TableBuilderShared {
-    pub clock: Signal<In, Clock>,
-    /// a normal taken: high for one clock, never on the clock after one
-    pub valid_in: Signal<In, Bit>,
-    pub idx: Signal<In, Bits<14>>,
-    /// the normal, normalised (Sq1.10)
-    pub n_x: Signal<In, Sq1_10>,
-    pub n_y: Signal<In, Sq1_10>,
-    pub n_z: Signal<In, Sq1_10>,
-    pub l_x: Signal<In, Sq1_10>,
-    pub l_y: Signal<In, Sq1_10>,
-    pub l_z: Signal<In, Sq1_10>,
-    pub h_x: Signal<In, Sq1_10>,
-    pub h_y: Signal<In, Sq1_10>,
-    pub h_z: Signal<In, Sq1_10>,
-    pub conc: Signal<In, U8>,
-    pub spec_r: Signal<In, U8>,
-    pub spec_g: Signal<In, U8>,
-    pub spec_b: Signal<In, U8>,
-    pub valid_out: Signal<Out, Bit>,
-    pub addr: Signal<Out, Bits<14>>,
-    pub r: Signal<Out, U8>,
-    pub g: Signal<Out, U8>,
-    pub b: Signal<Out, U8>,
-    pub a: Signal<Out, U8>,
-    pub dot: Dot3,
-    pub gloss: Gloss,
-    // the normal's second clock: N and H held for the dot product
-    second: DFF<Bit>,
-    hold_n: [DFF<Sq1_10>; 3],
-    hold_h: [DFF<Sq1_10>; 3],
-    // the dot product's operands: N and L on the first clock, N and H on the second
-    op_valid: DFF<Bit>,
-    op_n: [DFF<Sq1_10>; 3],
-    op_l: [DFF<Sq1_10>; 3],
-    // which of the dot product's two results leaves now (N·L first), and N·L held a clock for N·H
-    first_out: Delay<Bit, AT_DOT_OUT>,
-    x_hold: DFF<Uq0_10>,
-    // what waits beside the blocks: C to the gloss unit, the colours to the products, α (N·L) and the index to the
-    // end
-    conc_dly: Delay<U8, AT_GLOSS>,
-    spec_dly: [Delay<U8, AT_COLOUR>; 3],
-    x_dly: Delay<Uq0_10, { gloss::LATENCY + 4 }>,
-    idx_dly: Delay<Bits<14>, LATENCY>,
-    valid_c: Delay<Bit, 4>,
-    // the colour: P and s_b held for b's product on the second clock; the operands (U16, feeding the multipliers
-    // alone); the products (U18); the roundings (U8); r and g held a clock for b
-    p_hold: DFF<Uq0_10>,
-    sb_hold: DFF<U8>,
-    mop_p: [DFF<Bits<16>>; 2],
-    mop_s: [DFF<Bits<16>>; 2],
-    s2_prod: [DFF<Bits<18>>; 2],
-    s3_c: [DFF<U8>; 2],
-    s4_r: DFF<U8>,
-    s4_g: DFF<U8>,
-    w_p: Signal<Local, Bits<16>>,
-    w_prod: [Signal<Local, Bits<32>>; 2],
-    w_round: [Signal<Local, Bits<18>>; 2],
+crate::block! {
+    #[derive(Default)]
+    pub struct TableBuilderShared {
+        pub clock: Signal<In, Clock>,
+        /// a normal taken: high for one clock, never on the clock after one
+        pub valid_in: Signal<In, Bit>,
+        pub idx: Signal<In, Bits<14>>,
+        /// the normal, normalised (Sq1.10)
+        pub n_x: Signal<In, Sq1_10>,
+        pub n_y: Signal<In, Sq1_10>,
+        pub n_z: Signal<In, Sq1_10>,
+        pub l_x: Signal<In, Sq1_10>,
+        pub l_y: Signal<In, Sq1_10>,
+        pub l_z: Signal<In, Sq1_10>,
+        pub h_x: Signal<In, Sq1_10>,
+        pub h_y: Signal<In, Sq1_10>,
+        pub h_z: Signal<In, Sq1_10>,
+        pub conc: Signal<In, U8>,
+        pub spec_r: Signal<In, U8>,
+        pub spec_g: Signal<In, U8>,
+        pub spec_b: Signal<In, U8>,
+        pub valid_out: Signal<Out, Bit>,
+        pub addr: Signal<Out, Bits<14>>,
+        pub r: Signal<Out, U8>,
+        pub g: Signal<Out, U8>,
+        pub b: Signal<Out, U8>,
+        pub a: Signal<Out, U8>,
+        pub dot: Dot3,
+        pub gloss: Gloss,
+        // the normal's second clock: N and H held for the dot product
+        second: DFF<Bit>,
+        hold_n: [DFF<Sq1_10>; 3],
+        hold_h: [DFF<Sq1_10>; 3],
+        // the dot product's operands: N and L on the first clock, N and H on the second
+        op_valid: DFF<Bit>,
+        op_n: [DFF<Sq1_10>; 3],
+        op_l: [DFF<Sq1_10>; 3],
+        // which of the dot product's two results leaves now (N·L first), and N·L held a clock for N·H
+        first_out: Delay<Bit, AT_DOT_OUT>,
+        x_hold: DFF<Uq0_10>,
+        // what waits beside the blocks: C to the gloss unit, the colours to the products, α (N·L) and the index to the
+        // end
+        conc_dly: Delay<U8, AT_GLOSS>,
+        spec_dly: [Delay<U8, AT_COLOUR>; 3],
+        x_dly: Delay<Uq0_10, { gloss::LATENCY + 4 }>,
+        idx_dly: Delay<Bits<14>, LATENCY>,
+        valid_c: Delay<Bit, 4>,
+        // the colour: P and s_b held for b's product on the second clock; the operands (U16, feeding the multipliers
+        // alone); the products (U18); the roundings (U8); r and g held a clock for b
+        p_hold: DFF<Uq0_10>,
+        sb_hold: DFF<U8>,
+        mop_p: [DFF<Bits<16>>; 2],
+        mop_s: [DFF<Bits<16>>; 2],
+        s2_prod: [DFF<Bits<18>>; 2],
+        s3_c: [DFF<U8>; 2],
+        s4_r: DFF<U8>,
+        s4_g: DFF<U8>,
+        w_p: Signal<Local, Bits<16>>,
+        w_prod: [Signal<Local, Bits<32>>; 2],
+        w_round: [Signal<Local, Bits<18>>; 2],
+    }
 }
 
 impl Logic for TableBuilderShared {

@@ -4,7 +4,7 @@
 //! is `CosSign<8, 8>`, the block the polar shade unit holds (there `CosSign<8, 8, DC>`, with the Dreamcast scale's
 //! contents when `DC`). Contents: `crate::tables::cos_sign`.
 
-use crate::delay::Delay;
+use crate::prim::delay::Delay;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 

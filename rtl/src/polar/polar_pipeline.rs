@@ -3,11 +3,11 @@
 //! p rides beside the shade unit in a DFF chain; the mode and the colours wait in the `DelayedBlend`.
 //! Latency 22 = polar_shade 10 + power 7 + blend 5.
 
-use crate::delay::Delay;
+use crate::delayed_blend::DelayedBlend;
 use crate::polar_shade::PolarShade;
 use crate::power::Power;
-use crate::q::U8;
-use crate::ram_delay::DelayedBlend;
+use crate::prim::delay::Delay;
+use crate::prim::q::U8;
 use rust_hdl::prelude::*;
 
 pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10

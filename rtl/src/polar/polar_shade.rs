@@ -10,9 +10,9 @@
 //! 10 the clamp to U8 [28].
 
 use crate::cos_sign::CosSign;
-use crate::delay::Delay;
 use crate::div255::Div255;
-use crate::q::{S11, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{S11, U8};
 use crate::sincos::SinCos;
 use rust_hdl::prelude::*;
 

@@ -8,8 +8,8 @@
 //! unit and the polar pipeline have the defaults, LF = 12 and EB = 8, the other sizes are the width sweep's. The
 //! registers keep the default's widths, which hold every smaller setting.
 
-use crate::delay::Delay;
-use crate::q::U8;
+use crate::prim::delay::Delay;
+use crate::prim::q::U8;
 use crate::tables::{ExpTable, LogTable};
 use rust_hdl::prelude::*;
 

@@ -5,7 +5,7 @@
 //! with the Dreamcast scale's contents when `DC`); `bumprtl accuracy --lut-cost` synthesises the other sizes of the
 //! LUT-size table from this same block. Contents: `crate::tables::elevation`.
 
-use crate::delay::Delay;
+use crate::prim::delay::Delay;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 

@@ -72,12 +72,13 @@ pub fn exp2_of(eb: usize) -> Vec<u64> {
 /// `$contents($g)` the entries.
 macro_rules! rom_block {
     ($(#[$doc:meta])* $name:ident, $g:ident, $max:literal, $addr:tt, $contents:ident) => {
-        $(#[$doc])*
-        #[derive(LogicBlock)]
-        pub struct $name<const $g: usize> {
-            pub address: Signal<In, Bits<$addr>>,
-            pub data: Signal<Out, Bits<15>>,
-            rom: ROM<Bits<15>, $addr>,
+        crate::block! {
+            $(#[$doc])*
+            pub struct $name<const $g: usize> {
+                pub address: Signal<In, Bits<$addr>>,
+                pub data: Signal<Out, Bits<15>>,
+                rom: ROM<Bits<15>, $addr>,
+            }
         }
 
         impl<const $g: usize> Default for $name<$g> {

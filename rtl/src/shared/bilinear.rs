@@ -17,73 +17,74 @@
 //! Values are carried in 16/32-bit containers (rust-hdl multiplies only 16 × 16 → 32); the comments give their real
 //! widths, and yosys removes the constant upper bits.
 
-use crate::delay::Delay;
-use crate::q::{SBits, U8};
-use crate::sm_mul::{self, SmMul};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, U8};
+use crate::prim::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
 pub const LATENCY: usize = 11;
 
-/// One bilinear unit: `W`-bit texels, `F`-bit blend factors (`u`, `v` ∈ 0..2^F, the second texel's weight u/2^F),
-/// `D` bits dropped between its two stages.
-#[derive(LogicBlock)]
-pub struct BilinearUnit<const W: usize, const F: usize, const D: usize = 0> {
-    pub clock: Signal<In, Clock>,
-    pub t00: Signal<In, Bits<W>>,
-    pub t10: Signal<In, Bits<W>>,
-    pub t01: Signal<In, Bits<W>>,
-    pub t11: Signal<In, Bits<W>>,
-    pub ublend: Signal<In, Bits<F>>,
-    pub vblend: Signal<In, Bits<F>>,
-    /// The filtered channel, LATENCY clocks later (UW, rounded half up).
-    pub out: Signal<Out, Bits<W>>,
-    /// The same, exact before the rounding: U(W + 2F − D), 2F − D fraction bits.
-    pub wide: Signal<Out, Bits<32>>,
-    shift_f: Constant<Bits<8>>,   // F
-    shift_d: Constant<Bits<8>>,   // D
-    shift_out: Constant<Bits<5>>, // 2F − D, an index into 32 bits
-    half: Constant<Bits<32>>,     // 2^(2F−D−1), the rounding constant
-    u: Delay<Bits<16>, 2>,        // u, to meet the differences at the multipliers (UF)
-    v: Delay<Bits<16>, 7>,        // v, to meet b − a (UF)
-    // stage 1: the texels widened (UW in 16 bits), the two bases (UW in 32)
-    s1_t00: DFF<Bits<16>>,
-    s1_t10: DFF<Bits<16>>,
-    s1_t01: DFF<Bits<16>>,
-    s1_t11: DFF<Bits<16>>,
-    s1_b0: DFF<Bits<32>>,
-    s1_b1: DFF<Bits<32>>,
-    // stage 2: t10 − t00, t11 − t01 (S(W), two's complement in 16 bits; |d| ≤ 2^W − 1 fits SmMul's 16)
-    s2_d0: DFF<SBits<16>>,
-    s2_d1: DFF<SBits<16>>,
-    s2_b0: DFF<Bits<32>>,
-    s2_b1: DFF<Bits<32>>,
-    // stages 3–5: |d|·u ≤ (2^W − 1)(2^F − 1) < 2^(W+F), with the bases carried beside the multipliers
-    mul0: SmMul<16>,
-    mul1: SmMul<16>,
-    b0: Delay<Bits<32>, { sm_mul::LATENCY }>,
-    b1: Delay<Bits<32>, { sm_mul::LATENCY }>,
-    w_base0: Signal<Local, Bits<32>>, // t00·2^F (U(W+F))
-    w_base1: Signal<Local, Bits<32>>, // t01·2^F (U(W+F))
-    // stage 6: a, b ∈ 0..(2^W − 1)·2^F (U(W+F) ≤ U17: W ≤ 8, F ≤ 9), exact; the sums in 32 bits before
-    s6_a: DFF<Bits<17>>,
-    s6_b: DFF<Bits<17>>,
-    w_sa: Signal<Local, Bits<32>>,
-    w_sb: Signal<Local, Bits<32>>,
-    // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's 16)
-    s7_e: DFF<SBits<17>>,
-    s7_a: DFF<Bits<17>>,
-    // stages 8–10: |b − a|·v < 2^(W+2F), a carried
-    mul2: SmMul<17>,
-    a: Delay<Bits<17>, { sm_mul::LATENCY }>,
-    w_ad: Signal<Local, Bits<17>>,   // a >> D (U(W+F−D)), truncated
-    w_bd: Signal<Local, Bits<17>>,   // b >> D, truncated
-    w_a: Signal<Local, Bits<32>>,    // a'·2^F (U(W+2F−D))
-    w_wide: Signal<Local, Bits<32>>, // a'·2^F ± |b' − a'|·v ∈ 0..2^(W+2F−D) (≤ 25 bits), exact
-    w_r: Signal<Local, Bits<32>>,    // that + 2^(2F−D−1), < 2^(W+2F−D), exact
-    // stage 11: the top W bits of W + 2F − D: truncation of the rounded sum, so round half up overall; and wide
-    s11_out: DFF<Bits<W>>,
-    s11_wide: DFF<Bits<32>>,
+crate::block! {
+    /// One bilinear unit: `W`-bit texels, `F`-bit blend factors (`u`, `v` ∈ 0..2^F, the second texel's weight u/2^F),
+    /// `D` bits dropped between its two stages.
+    pub struct BilinearUnit<const W: usize, const F: usize, const D: usize = 0> {
+        pub clock: Signal<In, Clock>,
+        pub t00: Signal<In, Bits<W>>,
+        pub t10: Signal<In, Bits<W>>,
+        pub t01: Signal<In, Bits<W>>,
+        pub t11: Signal<In, Bits<W>>,
+        pub ublend: Signal<In, Bits<F>>,
+        pub vblend: Signal<In, Bits<F>>,
+        /// The filtered channel, LATENCY clocks later (UW, rounded half up).
+        pub out: Signal<Out, Bits<W>>,
+        /// The same, exact before the rounding: U(W + 2F − D), 2F − D fraction bits.
+        pub wide: Signal<Out, Bits<32>>,
+        shift_f: Constant<Bits<8>>,   // F
+        shift_d: Constant<Bits<8>>,   // D
+        shift_out: Constant<Bits<5>>, // 2F − D, an index into 32 bits
+        half: Constant<Bits<32>>,     // 2^(2F−D−1), the rounding constant
+        u: Delay<Bits<16>, 2>,        // u, to meet the differences at the multipliers (UF)
+        v: Delay<Bits<16>, 7>,        // v, to meet b − a (UF)
+        // stage 1: the texels widened (UW in 16 bits), the two bases (UW in 32)
+        s1_t00: DFF<Bits<16>>,
+        s1_t10: DFF<Bits<16>>,
+        s1_t01: DFF<Bits<16>>,
+        s1_t11: DFF<Bits<16>>,
+        s1_b0: DFF<Bits<32>>,
+        s1_b1: DFF<Bits<32>>,
+        // stage 2: t10 − t00, t11 − t01 (S(W), two's complement in 16 bits; |d| ≤ 2^W − 1 fits SmMul's 16)
+        s2_d0: DFF<SBits<16>>,
+        s2_d1: DFF<SBits<16>>,
+        s2_b0: DFF<Bits<32>>,
+        s2_b1: DFF<Bits<32>>,
+        // stages 3–5: |d|·u ≤ (2^W − 1)(2^F − 1) < 2^(W+F), with the bases carried beside the multipliers
+        mul0: SmMul<16>,
+        mul1: SmMul<16>,
+        b0: Delay<Bits<32>, { sm_mul::LATENCY }>,
+        b1: Delay<Bits<32>, { sm_mul::LATENCY }>,
+        w_base0: Signal<Local, Bits<32>>, // t00·2^F (U(W+F))
+        w_base1: Signal<Local, Bits<32>>, // t01·2^F (U(W+F))
+        // stage 6: a, b ∈ 0..(2^W − 1)·2^F (U(W+F) ≤ U17: W ≤ 8, F ≤ 9), exact; the sums in 32 bits before
+        s6_a: DFF<Bits<17>>,
+        s6_b: DFF<Bits<17>>,
+        w_sa: Signal<Local, Bits<32>>,
+        w_sb: Signal<Local, Bits<32>>,
+        // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's 16)
+        s7_e: DFF<SBits<17>>,
+        s7_a: DFF<Bits<17>>,
+        // stages 8–10: |b − a|·v < 2^(W+2F), a carried
+        mul2: SmMul<17>,
+        a: Delay<Bits<17>, { sm_mul::LATENCY }>,
+        w_ad: Signal<Local, Bits<17>>,   // a >> D (U(W+F−D)), truncated
+        w_bd: Signal<Local, Bits<17>>,   // b >> D, truncated
+        w_a: Signal<Local, Bits<32>>,    // a'·2^F (U(W+2F−D))
+        w_wide: Signal<Local, Bits<32>>, // a'·2^F ± |b' − a'|·v ∈ 0..2^(W+2F−D) (≤ 25 bits), exact
+        w_r: Signal<Local, Bits<32>>,    // that + 2^(2F−D−1), < 2^(W+2F−D), exact
+        // stage 11: the top W bits of W + 2F − D: truncation of the rounded sum, so round half up overall; and wide
+        s11_out: DFF<Bits<W>>,
+        s11_wide: DFF<Bits<32>>,
+    }
 }
 
 impl<const W: usize, const F: usize, const D: usize> Default for BilinearUnit<W, F, D> {

@@ -3,8 +3,8 @@
 //! Latency 5: weights; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
 //! products; the sum + 128; the /255.
 
-use crate::delay::Delay;
-use crate::q::{U16, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{U16, U8};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.

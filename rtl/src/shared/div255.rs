@@ -6,15 +6,17 @@ use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 2;
 
-#[derive(LogicBlock, Default)]
-pub struct Div255 {
-    pub clock: Signal<In, Clock>,
-    pub num: Signal<In, Bits<16>>,
-    pub quot: Signal<Out, Bits<8>>,
-    s1_t: DFF<Bits<16>>,
-    s2_q: DFF<Bits<8>>,
-    w_th: Signal<Local, Bits<16>>,
-    w_u: Signal<Local, Bits<16>>,
+crate::block! {
+    #[derive(Default)]
+    pub struct Div255 {
+        pub clock: Signal<In, Clock>,
+        pub num: Signal<In, Bits<16>>,
+        pub quot: Signal<Out, Bits<8>>,
+        s1_t: DFF<Bits<16>>,
+        s2_q: DFF<Bits<8>>,
+        w_th: Signal<Local, Bits<16>>,
+        w_u: Signal<Local, Bits<16>>,
+    }
 }
 
 impl Logic for Div255 {

@@ -2,8 +2,8 @@
 //! Latency 6: magnitudes; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
 //! products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
 
-use crate::delay::Delay;
-use crate::q::{SBits, Sq1_10, Sq4_20};
+use crate::prim::delay::Delay;
+use crate::prim::q::{SBits, Sq1_10, Sq4_20};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.

@@ -5,8 +5,8 @@
 //! C·(L − Q); the ceiling shift; the final subtract. An operand register feeds nothing but its multiplier, so the
 //! placer can put it beside the DSP and the long route lands on a register-to-register path.
 
-use crate::delay::Delay;
-use crate::q::{Uq0_10, Uq6_3, U8};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Uq0_10, Uq6_3, U8};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.

@@ -8,8 +8,8 @@
 //! slow clock-to-output (5.6 ns on an ECP5-6) does not add to the multiplier's delay; the products; the rounding;
 //! the signs.
 
-use crate::delay::Delay;
-use crate::q::{Sq1_10, Sq9_0, Uq1_12};
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq1_10, Sq9_0, Uq1_12};
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
@@ -362,58 +362,59 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
 /// Clock edges through one `NewtonStep`.
 pub const NEWTON_LATENCY: usize = 5;
 
-/// `NewtonStep`: one Newton step on the seed, `r ← r·(3 − m·r²)/2` (`vectors::normalise::newton_step`: three
-/// 16 × 16 products, each truncated (floor) to the next one's operand), with m, the shifted components and their
-/// signs waiting beside it. Five stages: the squarer's operands; q = r² (Uq2.14); t = m·q (Uq2.14); the last
-/// product's operands, d = 3 − t and r; r' = r·d/2 (Uq1.12).
-#[derive(LogicBlock)]
-pub struct NewtonStep {
-    pub clock: Signal<In, Clock>,
-    /// The seed, Uq1.12 (U13).
-    pub r: Signal<In, Uq1_12>,
-    /// The mantissa s·4^e / 2^8, Uq2.10 ∈ [1, 4) (U12).
-    pub m: Signal<In, Bits<12>>,
-    /// |c|·2^e (U10) and the signs, waiting.
-    pub c_x: Signal<In, Bits<10>>,
-    pub c_y: Signal<In, Bits<10>>,
-    pub c_z: Signal<In, Bits<10>>,
-    pub neg_x: Signal<In, Bit>,
-    pub neg_y: Signal<In, Bit>,
-    pub neg_z: Signal<In, Bit>,
-    /// The refined r, m, the components and signs, NEWTON_LATENCY clocks later.
-    pub r_out: Signal<Out, Uq1_12>,
-    pub m_out: Signal<Out, Bits<12>>,
-    pub c_x_out: Signal<Out, Bits<10>>,
-    pub c_y_out: Signal<Out, Bits<10>>,
-    pub c_z_out: Signal<Out, Bits<10>>,
-    pub neg_x_out: Signal<Out, Bit>,
-    pub neg_y_out: Signal<Out, Bit>,
-    pub neg_z_out: Signal<Out, Bit>,
-    three: Constant<Bits<16>>, // 3 in Uq2.14
-    // (rust-hdl's Verilog export cannot reach into a port array of a sub-block: one port per component)
-    c_wait: [Delay<Bits<10>, NEWTON_LATENCY>; 3],
-    neg_wait: [Delay<Bit, NEWTON_LATENCY>; 3],
-    m_wait: Delay<Bits<12>, NEWTON_LATENCY>,
-    // stage 1: the squarer's operands (`mop_`: they feed the DSP alone), m and r carried
-    mop_ra: DFF<Bits<16>>,
-    mop_rb: DFF<Bits<16>>,
-    s1_m: DFF<Bits<16>>,
-    s1_r: DFF<Uq1_12>,
-    // stage 2: q = r²/2^10 ≤ 2^14 (Uq2.14, U15); m as the next product's operand
-    s2_q: DFF<Bits<15>>,
-    mop_m: DFF<Bits<16>>,
-    s2_r: DFF<Uq1_12>,
-    // stage 3: t = m·q/2^10 < 2^16 (Uq2.14)
-    s3_t: DFF<Bits<16>>,
-    s3_r: DFF<Uq1_12>,
-    // stage 4: the last product's operands, d = 3 − t ≥ 0 (Uq2.14) and r
-    mop_d: DFF<Bits<16>>,
-    mop_r: DFF<Bits<16>>,
-    // stage 5: r·d/2^15 ≤ 4096·3·2^14/2^15 < 2^13 (Uq1.12)
-    s5_r: DFF<Uq1_12>,
-    w_q: Signal<Local, Bits<32>>,
-    w_t: Signal<Local, Bits<32>>,
-    w_p: Signal<Local, Bits<32>>,
+crate::block! {
+    /// `NewtonStep`: one Newton step on the seed, `r ← r·(3 − m·r²)/2` (`vectors::normalise::newton_step`: three
+    /// 16 × 16 products, each truncated (floor) to the next one's operand), with m, the shifted components and their
+    /// signs waiting beside it. Five stages: the squarer's operands; q = r² (Uq2.14); t = m·q (Uq2.14); the last
+    /// product's operands, d = 3 − t and r; r' = r·d/2 (Uq1.12).
+    pub struct NewtonStep {
+        pub clock: Signal<In, Clock>,
+        /// The seed, Uq1.12 (U13).
+        pub r: Signal<In, Uq1_12>,
+        /// The mantissa s·4^e / 2^8, Uq2.10 ∈ [1, 4) (U12).
+        pub m: Signal<In, Bits<12>>,
+        /// |c|·2^e (U10) and the signs, waiting.
+        pub c_x: Signal<In, Bits<10>>,
+        pub c_y: Signal<In, Bits<10>>,
+        pub c_z: Signal<In, Bits<10>>,
+        pub neg_x: Signal<In, Bit>,
+        pub neg_y: Signal<In, Bit>,
+        pub neg_z: Signal<In, Bit>,
+        /// The refined r, m, the components and signs, NEWTON_LATENCY clocks later.
+        pub r_out: Signal<Out, Uq1_12>,
+        pub m_out: Signal<Out, Bits<12>>,
+        pub c_x_out: Signal<Out, Bits<10>>,
+        pub c_y_out: Signal<Out, Bits<10>>,
+        pub c_z_out: Signal<Out, Bits<10>>,
+        pub neg_x_out: Signal<Out, Bit>,
+        pub neg_y_out: Signal<Out, Bit>,
+        pub neg_z_out: Signal<Out, Bit>,
+        three: Constant<Bits<16>>, // 3 in Uq2.14
+        // (rust-hdl's Verilog export cannot reach into a port array of a sub-block: one port per component)
+        c_wait: [Delay<Bits<10>, NEWTON_LATENCY>; 3],
+        neg_wait: [Delay<Bit, NEWTON_LATENCY>; 3],
+        m_wait: Delay<Bits<12>, NEWTON_LATENCY>,
+        // stage 1: the squarer's operands (`mop_`: they feed the DSP alone), m and r carried
+        mop_ra: DFF<Bits<16>>,
+        mop_rb: DFF<Bits<16>>,
+        s1_m: DFF<Bits<16>>,
+        s1_r: DFF<Uq1_12>,
+        // stage 2: q = r²/2^10 ≤ 2^14 (Uq2.14, U15); m as the next product's operand
+        s2_q: DFF<Bits<15>>,
+        mop_m: DFF<Bits<16>>,
+        s2_r: DFF<Uq1_12>,
+        // stage 3: t = m·q/2^10 < 2^16 (Uq2.14)
+        s3_t: DFF<Bits<16>>,
+        s3_r: DFF<Uq1_12>,
+        // stage 4: the last product's operands, d = 3 − t ≥ 0 (Uq2.14) and r
+        mop_d: DFF<Bits<16>>,
+        mop_r: DFF<Bits<16>>,
+        // stage 5: r·d/2^15 ≤ 4096·3·2^14/2^15 < 2^13 (Uq1.12)
+        s5_r: DFF<Uq1_12>,
+        w_q: Signal<Local, Bits<32>>,
+        w_t: Signal<Local, Bits<32>>,
+        w_p: Signal<Local, Bits<32>>,
+    }
 }
 
 impl Default for NewtonStep {

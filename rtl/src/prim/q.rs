@@ -13,39 +13,51 @@
 //! and says beside it, in a comment, whether it truncates (floor), rounds (and how) or saturates, and why it cannot
 //! overflow; the models in `vectors::fixed` carry the same steps by name (`truncate`, `round_half_up`, `saturate`).
 
-use rust_hdl::prelude::Bits;
+use rust_hdl::prelude::{Bits, Synth};
 
-pub type U8 = Bits<8>;
-pub type U16 = Bits<16>;
-pub type S8 = Bits<8>;
-pub type S9 = Bits<9>;
+/// Writes each alias (`pub type Name = Type;`) and, from the same list, `ALIASES`: every alias's name with its width,
+/// so that the width report reads a signal's format from the name its declaration gives it.
+macro_rules! q_types {
+    ($($(#[$doc:meta])* $name:ident = $ty:ty;)*) => {
+        $($(#[$doc])* pub type $name = $ty;)*
+
+        /// Every alias above, by name, with its width in bits (`SBits<N>`, generic, is not one of them).
+        pub const ALIASES: &[(&str, usize)] = &[$((stringify!($name), <$ty as Synth>::BITS)),*];
+    };
+}
+
+q_types! {
+    U8 = Bits<8>;
+    U16 = Bits<16>;
+    S8 = Bits<8>;
+    S9 = Bits<9>;
+    S11 = Bits<11>;
+    /// The bump vector's components (INT9: −255..255).
+    Sq8_0 = Bits<9>;
+    /// The normaliser's input components, read as integers.
+    Sq9_0 = Bits<10>;
+    /// The interpolated light, two fraction bits.
+    Sq7_2 = Bits<10>;
+    /// The light interpolator's accumulator: l0·256 + Σ d·w, eight fraction bits.
+    Sq11_8 = Bits<20>;
+    /// A unit vector's components, 1024 = 1.0.
+    Sq1_10 = Bits<12>;
+    /// A product of two `Sq1_10`, or the sum of three (|Σ| < 3·2^20 < 2^22, with room).
+    Sq4_20 = Bits<25>;
+    /// A 10-bit fraction: X, L, Q and P of the gloss unit, 1023 ≈ 1.0.
+    Uq0_10 = Bits<10>;
+    /// The gloss unit's k = C + 8, three fraction bits.
+    Uq6_3 = Bits<9>;
+    /// The normaliser's table entries, 2^12/√m ∈ 2049..4096.
+    Uq1_12 = Bits<13>;
+}
+
 /// A two's complement integer of a width a block takes as a parameter (`SmMul<N>`'s operand).
 pub type SBits<const N: usize> = Bits<N>;
-pub type S11 = Bits<11>;
-
-/// The bump vector's components (INT9: −255..255).
-pub type Sq8_0 = Bits<9>;
-/// The normaliser's input components, read as integers.
-pub type Sq9_0 = Bits<10>;
-/// The interpolated light, two fraction bits.
-pub type Sq7_2 = Bits<10>;
-/// The light interpolator's accumulator: l0·256 + Σ d·w, eight fraction bits.
-pub type Sq11_8 = Bits<20>;
-/// A unit vector's components, 1024 = 1.0.
-pub type Sq1_10 = Bits<12>;
-/// A product of two `Sq1_10`, or the sum of three (|Σ| < 3·2^20 < 2^22, with room).
-pub type Sq4_20 = Bits<25>;
-/// A 10-bit fraction: X, L, Q and P of the gloss unit, 1023 ≈ 1.0.
-pub type Uq0_10 = Bits<10>;
-/// The gloss unit's k = C + 8, three fraction bits.
-pub type Uq6_3 = Bits<9>;
-/// The normaliser's table entries, 2^12/√m ∈ 2049..4096.
-pub type Uq1_12 = Bits<13>;
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rust_hdl::prelude::Synth;
 
     #[test]
     fn every_type_is_as_wide_as_its_name_says() {

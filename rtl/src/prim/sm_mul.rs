@@ -10,33 +10,34 @@
 //! `x` is two's complement in `N` bits (`N` ≤ 32). Its magnitude must fit 16 bits: the caller states why, and
 //! `magnitude_fits_16_bits` in the tests checks the edge. Truncation to 16 bits of a magnitude that fits is exact.
 
-use crate::q::SBits;
+use crate::prim::q::SBits;
 use rust_hdl::prelude::*;
 
 /// Clock edges from x and w to the product.
 pub const LATENCY: usize = 3;
 
-#[derive(LogicBlock)]
-pub struct SmMul<const N: usize> {
-    pub clock: Signal<In, Clock>,
-    /// Two's complement, N bits.
-    pub x: Signal<In, SBits<N>>,
-    /// Unsigned weight.
-    pub w: Signal<In, Bits<16>>,
-    /// |x|·w, LATENCY clocks later (U32).
-    pub p: Signal<Out, Bits<32>>,
-    /// The sign of x beside it.
-    pub neg: Signal<Out, Bit>,
-    sign_bit: Constant<Bits<N>>, // 2^(N−1), the sign bit alone: x & sign_bit ≠ 0 is x < 0
-    w_abs: Signal<Local, Bits<N>>,
-    s1_m: DFF<Bits<16>>,
-    s1_w: DFF<Bits<16>>,
-    s1_n: DFF<Bit>,
-    mop_m: DFF<Bits<16>>,
-    mop_w: DFF<Bits<16>>,
-    s2_n: DFF<Bit>,
-    s3_p: DFF<Bits<32>>,
-    s3_n: DFF<Bit>,
+crate::block! {
+    pub struct SmMul<const N: usize> {
+        pub clock: Signal<In, Clock>,
+        /// Two's complement, N bits.
+        pub x: Signal<In, SBits<N>>,
+        /// Unsigned weight.
+        pub w: Signal<In, Bits<16>>,
+        /// |x|·w, LATENCY clocks later (U32).
+        pub p: Signal<Out, Bits<32>>,
+        /// The sign of x beside it.
+        pub neg: Signal<Out, Bit>,
+        sign_bit: Constant<Bits<N>>, // 2^(N−1), the sign bit alone: x & sign_bit ≠ 0 is x < 0
+        w_abs: Signal<Local, Bits<N>>,
+        s1_m: DFF<Bits<16>>,
+        s1_w: DFF<Bits<16>>,
+        s1_n: DFF<Bit>,
+        mop_m: DFF<Bits<16>>,
+        mop_w: DFF<Bits<16>>,
+        s2_n: DFF<Bit>,
+        s3_p: DFF<Bits<32>>,
+        s3_n: DFF<Bit>,
+    }
 }
 
 impl<const N: usize> Default for SmMul<N> {
@@ -90,38 +91,39 @@ impl<const N: usize> Logic for SmMul<N> {
 /// Clock edges from x and w to the product of `SmMulWide`.
 pub const WIDE_LATENCY: usize = 4;
 
-/// `SmMulWide`: the same for a magnitude wider than 16 bits, |x| < 2^32, as two 16 × 16 products: |x| = hi·2^16 + lo,
-/// |x|·w = lo·w + (hi·w)·2^16. The caller bounds |x|·w < 2^32. Four stages: |x| split; the operand registers;
-/// both products; their sum.
-#[derive(LogicBlock)]
-pub struct SmMulWide<const N: usize> {
-    pub clock: Signal<In, Clock>,
-    /// Two's complement, N bits (N ≤ 33).
-    pub x: Signal<In, SBits<N>>,
-    /// Unsigned weight.
-    pub w: Signal<In, Bits<16>>,
-    /// |x|·w, WIDE_LATENCY clocks later (U32).
-    pub p: Signal<Out, Bits<32>>,
-    /// The sign of x beside it.
-    pub neg: Signal<Out, Bit>,
-    sign_bit: Constant<Bits<N>>, // 2^(N−1)
-    w_abs: Signal<Local, Bits<N>>,
-    w_abs32: Signal<Local, Bits<32>>,
-    w_hi16: Signal<Local, Bits<32>>,
-    s1_lo: DFF<Bits<16>>,
-    s1_hi: DFF<Bits<16>>,
-    s1_w: DFF<Bits<16>>,
-    s1_n: DFF<Bit>,
-    mop_lo: DFF<Bits<16>>,
-    mop_hi: DFF<Bits<16>>,
-    mop_wl: DFF<Bits<16>>,
-    mop_wh: DFF<Bits<16>>,
-    s2_n: DFF<Bit>,
-    s3_pl: DFF<Bits<32>>,
-    s3_ph: DFF<Bits<32>>,
-    s3_n: DFF<Bit>,
-    s4_p: DFF<Bits<32>>,
-    s4_n: DFF<Bit>,
+crate::block! {
+    /// `SmMulWide`: the same for a magnitude wider than 16 bits, |x| < 2^32, as two 16 × 16 products: |x| = hi·2^16 + lo,
+    /// |x|·w = lo·w + (hi·w)·2^16. The caller bounds |x|·w < 2^32. Four stages: |x| split; the operand registers;
+    /// both products; their sum.
+    pub struct SmMulWide<const N: usize> {
+        pub clock: Signal<In, Clock>,
+        /// Two's complement, N bits (N ≤ 33).
+        pub x: Signal<In, SBits<N>>,
+        /// Unsigned weight.
+        pub w: Signal<In, Bits<16>>,
+        /// |x|·w, WIDE_LATENCY clocks later (U32).
+        pub p: Signal<Out, Bits<32>>,
+        /// The sign of x beside it.
+        pub neg: Signal<Out, Bit>,
+        sign_bit: Constant<Bits<N>>, // 2^(N−1)
+        w_abs: Signal<Local, Bits<N>>,
+        w_abs32: Signal<Local, Bits<32>>,
+        w_hi16: Signal<Local, Bits<32>>,
+        s1_lo: DFF<Bits<16>>,
+        s1_hi: DFF<Bits<16>>,
+        s1_w: DFF<Bits<16>>,
+        s1_n: DFF<Bit>,
+        mop_lo: DFF<Bits<16>>,
+        mop_hi: DFF<Bits<16>>,
+        mop_wl: DFF<Bits<16>>,
+        mop_wh: DFF<Bits<16>>,
+        s2_n: DFF<Bit>,
+        s3_pl: DFF<Bits<32>>,
+        s3_ph: DFF<Bits<32>>,
+        s3_n: DFF<Bit>,
+        s4_p: DFF<Bits<32>>,
+        s4_n: DFF<Bit>,
+    }
 }
 
 impl<const N: usize> Default for SmMulWide<N> {

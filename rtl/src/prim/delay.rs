@@ -2,12 +2,13 @@
 
 use rust_hdl::prelude::*;
 
-#[derive(LogicBlock)]
-pub struct Delay<T: Synth, const N: usize> {
-    pub clock: Signal<In, Clock>,
-    pub d: Signal<In, T>,
-    pub q: Signal<Out, T>,
-    line: [DFF<T>; N],
+crate::block! {
+    pub struct Delay<T: Synth, const N: usize> {
+        pub clock: Signal<In, Clock>,
+        pub d: Signal<In, T>,
+        pub q: Signal<Out, T>,
+        line: [DFF<T>; N],
+    }
 }
 
 impl<T: Synth, const N: usize> Default for Delay<T, N> {

@@ -1,8 +1,8 @@
 //! The width report's reading of the rtl, for every unit of the table: every signal the rust-hdl probe sees (but the
-//! clocks) resolves through the source's declarations to a format as wide as the simulator's signal, and the range
-//! it takes over the hard cases and 2,000 random vectors lies inside the range the interval analysis proves (the
-//! proof is sound, or this fails).
-use sim::widths::{bounds, seen, Formats};
+//! clocks) resolves through the declarations the compiler records (`rtl::prim::declared`) to a format as wide as the
+//! simulator's signal, and the range it takes over the hard cases and 2,000 random vectors lies inside the range the
+//! interval analysis proves (the proof is sound, or this fails).
+use widths::{bounds, seen, Formats};
 
 macro_rules! every_unit {
     ([] rtl { $($name:ident: $model:expr, $block:ty, [$($waiver:tt)*];)* } software { $($soft:ident),* }) => {
@@ -140,7 +140,7 @@ fn wraps<U: rtl::StreamUnit>(m: &vectors::UnitModel) -> Vec<Site> {
     let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
     let signed = |n: &str| f.format(n).is_some_and(|x| x.signed);
     let proof = bounds::prove(&U::build(), &ports, &signed);
-    sim::widths::sites(&f, &proof)
+    widths::sites(&f, &proof)
         .into_iter()
         .map(|s| {
             let q = f.format(&s.name).map(|x| x.q()).unwrap_or_default();
@@ -151,7 +151,7 @@ fn wraps<U: rtl::StreamUnit>(m: &vectors::UnitModel) -> Vec<Site> {
 
 #[test]
 fn no_step_wraps_unless_it_is_listed_with_its_reason() {
-    let waived = sim::widths::wraps::WAIVED;
+    let waived = widths::wraps::WAIVED;
     let mut unlisted: Vec<String> = vec![];
     let mut used = vec![false; waived.len()];
     let mut sites = wraps_all();
@@ -168,7 +168,7 @@ fn no_step_wraps_unless_it_is_listed_with_its_reason() {
     unlisted.dedup();
     assert!(
         unlisted.is_empty(),
-        "{} steps may wrap and are not listed in sim::widths::wraps:\n{}",
+        "{} steps may wrap and are not listed in widths::wraps:\n{}",
         unlisted.len(),
         unlisted.join("\n")
     );
