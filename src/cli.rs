@@ -364,15 +364,15 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::Verilog { scene: Some(scene), out, .. } => {
             let spec = sim::scene_file::load(&scene)?;
-            let pipe = crate::render::pipeline(&spec);
-            let text = pipe.rtl().verilog();
+            let row = spec.pipeline;
+            let text = row.rtl.verilog();
             if out.as_os_str() == "-" {
                 print!("{text}");
             } else {
                 writable_folder(&out)?;
-                let p = out.join(format!("{}.v", pipe.model().name));
+                let p = out.join(format!("{}.v", row.name));
                 synth::export::write_atomic(&p, text.as_bytes())?;
-                println!("{} ({}: {})", p.display(), spec.name, pipe.units().join(" → "));
+                println!("{} ({}: {})", p.display(), spec.name, row.units.join(" → "));
             }
         }
         Cmd::Verilog { unit: None, .. } => return Err("verilog: name a unit or --scene FILE".into()),
@@ -431,9 +431,9 @@ pub fn main() -> Result<(), String> {
                 (Some(n), _) => n,
                 (None, Some(scene)) => {
                     let spec = sim::scene_file::load(&scene)?;
-                    let pipe = crate::render::pipeline(&spec);
-                    println!("{}: {} ({})", spec.name, pipe.model().name, pipe.units().join(" → "));
-                    pipe.model().name.to_string()
+                    let row = spec.pipeline;
+                    println!("{}: {} ({})", spec.name, row.name, row.units.join(" → "));
+                    row.name.to_string()
                 }
                 (None, None) => return Err("synth: name a unit or --scene FILE".into()),
             };

@@ -19,7 +19,8 @@
 //! Every point is independent: `--point ID` computes one and saves it, `--merge DIR` reads the saved points and
 //! writes the report, and `--plan` writes both as commands (GNU parallel, ssh, a Slurm job array).
 
-use sim::pipeline::{CartSurface, Cartesian, Height, Palette, Pipeline, Polar, Prepared};
+use sim::pipeline::{Height, Pipeline, Prepared};
+use sim::pipelines::{self, Family, Row, Settings, PIPELINES};
 use sim::scene::Scene;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -33,54 +34,15 @@ use vectors::stats::ErrorStats;
 /// this flow: moving ten of cart_surface_matte's products from SB_MAC16 blocks into logic added 2,648 SB_LUT4.
 pub const LUT4_PER_MAC16: u64 = 265;
 
-/// A pipeline the project builds, as a report point names it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Choice {
-    /// lights per vertex; with the gloss unit (true) or without
-    Cartesian(Decode, bool),
-    Surface(Variant),
-    Polar(Scale),
-    /// the map's height bits (8, or 4 read doubled: the same datapath)
-    Height(u32),
-    Palette(usize),
+/// A pipeline of the table, as a report point builds it: the row, and the height map's bits (8, or 4 read doubled:
+/// the same block; a point of its own). The polar pipelines are built at a scene's default power and weight, the
+/// palette ones at their largest palette.
+fn build(p: &Point, scene: &Scene) -> Box<dyn Pipeline> {
+    sim::pipeline::build(p.row, scene, &settings(p))
 }
 
-impl Choice {
-    pub fn build(self, scene: &Scene) -> Box<dyn Pipeline> {
-        match self {
-            Choice::Cartesian(decode, gloss) => Box::new(Cartesian { decode, gloss }),
-            Choice::Surface(variant) => Box::new(CartSurface { variant }),
-            Choice::Polar(scale) => Box::new(Polar { scale, pw: crate::demo::POLAR_PW, h: crate::demo::POLAR_H }),
-            Choice::Height(bits) => Box::new(Height::with_bits(scene, bits)),
-            Choice::Palette(n) => Box::new(Palette::new(n, scene)),
-        }
-    }
-
-    fn all() -> Vec<Choice> {
-        let mut v = vec![Choice::Cartesian(Decode::Seed, true), Choice::Cartesian(Decode::HemiOct, true)];
-        v.extend([Choice::Cartesian(Decode::Seed, false), Choice::Cartesian(Decode::HemiOct, false)]);
-        v.extend(Variant::ALL.map(Choice::Surface));
-        v.extend([
-            Choice::Polar(Scale::Seed),
-            Choice::Polar(Scale::Dc255),
-            Choice::Height(8),
-            Choice::Height(4),
-            Choice::Palette(256),
-            Choice::Palette(4096),
-        ]);
-        v
-    }
-
-    /// Whether the pipeline can render the scene as the scene asks: the quad-only pipelines on a quad, a pipeline
-    /// without the gloss unit only for a matte material.
-    fn takes(self, scene: &Scene) -> bool {
-        match self {
-            Choice::Height(_) | Choice::Palette(_) => scene.curved.is_none(),
-            Choice::Surface(v) => v.gloss || scene.conc == 0,
-            Choice::Cartesian(_, gloss) => gloss || scene.conc == 0,
-            _ => true,
-        }
-    }
+fn settings(p: &Point) -> Settings {
+    Settings { height_bits: p.height_bits, ..Settings::default() }
 }
 
 /// The scenes a report sweeps when none are named: the demo's torus and the quad.
@@ -125,7 +87,9 @@ fn knob_id(k: Knobs) -> String {
 pub struct Point {
     pub id: String,
     pub scene: String,
-    pub choice: Choice,
+    pub row: &'static Row,
+    /// the height map's bits (8 but on the 4-bit point)
+    pub height_bits: u32,
     pub knobs: Knobs,
     /// the polar shading unit's elevation table, 2^lut entries (the unit's own: `sincos::TABLE_BITS`)
     pub lut: u32,
@@ -141,17 +105,20 @@ pub fn points(scenes: &[String]) -> Result<Vec<Point>, String> {
     for name in scenes {
         let s = scene(name)?;
         let key = scene_key(name);
-        for c in Choice::all().into_iter().filter(|c| c.takes(&s)) {
-            let pipe = c.build(&s);
-            // the 4-bit map runs on the same block: its own id
-            let bits = if c == Choice::Height(4) { ".h4" } else { "" };
-            out.push(Point {
-                id: format!("{key}.{}{bits}", pipe.model().name),
-                scene: name.clone(),
-                choice: c,
-                knobs: UNIT_KNOBS,
-                lut: OWN_LUT,
-            });
+        for row in PIPELINES.iter().filter(|r| r.renders(&s)) {
+            // the 4-bit map runs on the same block: its own point, its own id
+            let heights: &[u32] = if row.family == Family::Height { &[8, 4] } else { &[8] };
+            for &height_bits in heights {
+                let bits = if height_bits == 4 { ".h4" } else { "" };
+                out.push(Point {
+                    id: format!("{key}.{}{bits}", row.name),
+                    scene: name.clone(),
+                    row,
+                    height_bits,
+                    knobs: UNIT_KNOBS,
+                    lut: OWN_LUT,
+                });
+            }
         }
         // the width knobs, on the smallest bilinear pipeline the material allows
         let v = Variant { decode: Decode::Seed, nearest: false, gloss: s.conc != 0 };
@@ -159,7 +126,8 @@ pub fn points(scenes: &[String]) -> Result<Vec<Point>, String> {
             out.push(Point {
                 id: format!("{key}.{}.{}", v.model().name, knob_id(k)),
                 scene: name.clone(),
-                choice: Choice::Surface(v),
+                row: surface_row(v),
+                height_bits: 8,
                 knobs: k,
                 lut: OWN_LUT,
             });
@@ -169,13 +137,24 @@ pub fn points(scenes: &[String]) -> Result<Vec<Point>, String> {
             out.push(Point {
                 id: format!("{key}.polar_pipeline.lut{tb}"),
                 scene: name.clone(),
-                choice: Choice::Polar(Scale::Seed),
+                row: polar_row(),
+                height_bits: 8,
                 knobs: UNIT_KNOBS,
                 lut: tb,
             });
         }
     }
     Ok(out)
+}
+
+/// The row of the Cartesian pipeline with one light per surface of this variant.
+fn surface_row(v: Variant) -> &'static Row {
+    pipelines::choose(&pipelines::surface(v)).expect("every surface variant has its pipeline")
+}
+
+/// The row of the seed's polar pipeline.
+fn polar_row() -> &'static Row {
+    pipelines::choose(&pipelines::polar(Scale::Seed)).expect("the polar pipeline is in the table")
 }
 
 fn scene_key(name: &str) -> String {
@@ -336,11 +315,13 @@ fn cartesian_meaning(scene: &Scene, decode: Decode) -> Vec<[f64; 3]> {
 
 /// The three parts for the pipelines that have a float run of their method: the Cartesian ones (N·L through the
 /// gloss curve) and the polar one (equation 3 on its own codes, then p's power, both in reals).
-fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f64]) -> Option<[(f64, f64); 3]> {
+fn three_parts(p: &Point, scene: &Scene, prep: &Prepared, exact_shade: &[f64]) -> Option<[(f64, f64); 3]> {
     let gloss = |n: [f64; 3], l: [f64; 3]| sim::pipeline::gloss_shade(scene.conc, n, l);
     let p10 = |p: f64| p / 1023.0 * 255.0;
-    match choice {
-        Choice::Cartesian(d, g) => {
+    let own = settings(p);
+    match p.row.family {
+        Family::Cartesian(d) => {
+            let g = p.row.serves.gloss;
             // a matte pipeline's vectors are the full one's without C (which is 0)
             let float = |i: &[i64]| {
                 let full = if g { i.to_vec() } else { vectors::cart_pipeline::with_zero_conc(i) };
@@ -348,12 +329,12 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
             };
             Some(split(scene, &cartesian_meaning(scene, d), prep, exact_shade, &gloss, &float))
         }
-        Choice::Surface(v) => {
+        Family::CartSurface(v) => {
             Some(split(scene, &cartesian_meaning(scene, v.decode), prep, exact_shade, &gloss, &|i| {
                 p10(vectors::cart_surface::float_p(v, i))
             }))
         }
-        Choice::Polar(sc) => {
+        Family::Polar(sc) => {
             use vectors::polar_encode;
             use vectors::polar_pipeline::input;
             let meaning: Vec<[f64; 3]> = scene
@@ -364,7 +345,7 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
                     polar_encode::decode_normal(sc, s, r)
                 })
                 .collect();
-            let (h, p) = (crate::demo::POLAR_H, crate::demo::POLAR_PW as f64 / 4.0);
+            let (h, p) = (own.h, own.pw as f64 / 4.0);
             let curve = |n: [f64; 3], l: [f64; 3]| {
                 255.0 * ((1.0 - h) + h * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2])).clamp(0.0, 1.0).powf(p)
             };
@@ -383,8 +364,9 @@ fn three_parts(choice: Choice, scene: &Scene, prep: &Prepared, exact_shade: &[f6
             };
             Some(split(scene, &meaning, prep, exact_shade, &curve, &float))
         }
-        Choice::Height(bits) => Some(height_parts(scene, bits, prep, exact_shade)),
-        Choice::Palette(s_n) => {
+        Family::Height => Some(height_parts(scene, own.height_bits, prep, exact_shade)),
+        Family::Palette => {
+            let s_n = own.palette.unwrap_or(1 << p.row.serves.index_bits);
             // a texel's index means its entry: the S10 code the table builder takes, as a unit vector
             let normals = scene.normals();
             let q = vectors::palette::quantize::quantize(&normals, s_n);
@@ -479,7 +461,7 @@ fn knob_delta(k: Knobs, dir: &Path) -> Result<[i64; 5], String> {
 /// Compute one point: its errors on its scene, the model's speed, and its cost (`place`: also nextpnr).
 pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> {
     let scene = scene(&p.scene)?;
-    let pipe = p.choice.build(&scene);
+    let pipe = build(p, &scene);
     let m = pipe.model();
     let prep = pipe.prepare(&scene);
     let t = Instant::now();
@@ -490,7 +472,7 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         seconds: t.elapsed().as_secs_f64(),
     };
     let model = if p.lut != OWN_LUT {
-        let Choice::Polar(sc) = p.choice else {
+        let Family::Polar(sc) = p.row.family else {
             return Err(format!("{}: the table size is swept on the polar pipeline only", p.id));
         };
         image(&|i| {
@@ -500,7 +482,7 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
     } else if p.knobs == UNIT_KNOBS {
         sim::render::model(m, &prep)
     } else {
-        let Choice::Surface(v) = p.choice else {
+        let Family::CartSurface(v) = p.row.family else {
             return Err(format!("{}: width knobs are swept on cart_surface only", p.id));
         };
         image(&|i| {
@@ -509,12 +491,12 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         })
     };
     let secs = t.elapsed().as_secs_f64();
-    let errs = sim::render::errors(pipe.as_ref(), &scene, &prep, &model);
+    let errs = sim::pipeline::errors(pipe.as_ref(), &scene, &prep, &model);
     // a knob's normal is the model's at the knob
     let angle = if p.knobs == UNIT_KNOBS {
         errs.normal.as_ref().map(stats)
     } else {
-        let Choice::Surface(v) = p.choice else { unreachable!() };
+        let Family::CartSurface(v) = p.row.family else { unreachable!() };
         let mut s = ErrorStats::default();
         for (k, i) in prep.pixels().iter().enumerate() {
             let n = vectors::cart_surface::exact_trace_knobs(v, p.knobs, i).normal.map(|c| c as f64);
@@ -523,14 +505,14 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<Result_, String> 
         Some(stats(&s))
     };
     let exact_shade: Vec<f64> = model.outs.iter().map(|o| pipe.shade(o)).collect();
-    let three = three_parts(p.choice, &scene, &prep, &exact_shade);
+    let three = three_parts(p, &scene, &prep, &exact_shade);
     let n = prep.pixels().len();
     let mut r = Result_ {
         id: p.id.clone(),
         scene: p.scene.clone(),
         pipeline: m.name.to_string(),
         units: pipe.units().join(" → "),
-        knob: if p.choice == Choice::Height(4) {
+        knob: if p.height_bits == 4 {
             "4-bit heights (UQ3.1), read doubled".into()
         } else if p.lut != OWN_LUT {
             format!("sin/cos table 2^{} × 8 (S's top {0} bits)", p.lut)
@@ -958,8 +940,8 @@ mod tests {
         let pts = points(&DEFAULT_SCENES.map(String::from)).unwrap();
         let ids: std::collections::BTreeSet<&str> = pts.iter().map(|p| p.id.as_str()).collect();
         assert_eq!(ids.len(), pts.len());
-        assert!(pts.iter().all(|p| p.knobs == UNIT_KNOBS || matches!(p.choice, Choice::Surface(_))));
-        assert!(pts.iter().all(|p| p.lut == OWN_LUT || p.choice == Choice::Polar(Scale::Seed)));
+        assert!(pts.iter().all(|p| p.knobs == UNIT_KNOBS || matches!(p.row.family, Family::CartSurface(_))));
+        assert!(pts.iter().all(|p| p.lut == OWN_LUT || p.row.name == "polar_pipeline"));
         // the torus is matte and curved: no height or palette pipeline on it, the matte variants on it
         assert!(!ids.iter().any(|i| i.starts_with("demo.height") || i.starts_with("demo.palette")));
         assert!(ids.contains("demo.cart_surface_nearest_matte") && !ids.contains("quad.cart_surface_nearest_matte"));
