@@ -15,26 +15,6 @@ use vectors::cart_pipeline::Decode;
 use vectors::polar_encode::Scale;
 use vectors::stats::ErrorStats;
 
-/// The demo's scene, embedded: `scenes/demo.toml`, a torus.
-pub const DEMO_SCENE: &str = include_str!("../scenes/demo.toml");
-/// The quad every pipeline is compared on (the height-map and palette pipelines draw the quad only): `scenes/quad.toml`.
-pub const QUAD_SCENE: &str = include_str!("../scenes/quad.toml");
-
-/// The embedded scene, read as any scene file is.
-pub fn demo_scene() -> Result<Scene, String> {
-    Ok(demo_spec()?.scene)
-}
-
-/// The embedded demo scene as read, with the pipeline it names.
-pub fn demo_spec() -> Result<sim::scene_file::SceneSpec, String> {
-    sim::scene_file::parse(DEMO_SCENE, "scenes/demo.toml (embedded)", Path::new("."))
-}
-
-/// The embedded quad.
-pub fn quad_scene() -> Result<Scene, String> {
-    Ok(sim::scene_file::parse(QUAD_SCENE, "scenes/quad.toml (embedded)", Path::new("."))?.scene)
-}
-
 fn bar(len: u64, what: &str) -> ProgressBar {
     let b = ProgressBar::new(len);
     b.set_style(
@@ -107,8 +87,8 @@ pub fn run(
 ) -> Result<(), String> {
     let wall = Instant::now();
     // a user's map is read (or refused) before anything is written
-    let mut scene = Scene { size, ..quad_scene()? };
-    let torus_spec = demo_spec()?;
+    let mut scene = Scene { size, ..sim::scene_file::quad()?.scene };
+    let torus_spec = sim::scene_file::demo()?;
     let mut torus = Scene { size, ..torus_spec.scene.clone() };
     if let Some(path) = height_map {
         let loaded = sim::heightmap::load(path)?;
@@ -121,7 +101,7 @@ pub fn run(
         scene = Scene { tex: side, relief, map: map.clone(), ..scene };
         torus = Scene { tex: side, relief, map, ..torus };
     }
-    crate::cli::writable_folder(out)?;
+    crate::output::writable_folder(out)?;
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
     let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };

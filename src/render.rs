@@ -36,7 +36,7 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         }
     }
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
-    crate::cli::writable_folder(out)?;
+    crate::output::writable_folder(out)?;
     for n in &spec.notes {
         println!("{n}");
     }

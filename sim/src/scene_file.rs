@@ -644,6 +644,21 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     Ok(SceneSpec { name, scene, pipeline, settings, notes })
 }
 
+/// The demo's scene, embedded: `scenes/demo.toml`, a torus.
+pub const DEMO: &str = include_str!("../../scenes/demo.toml");
+/// The quad every pipeline is compared on (the height-map and palette pipelines draw the quad only): `scenes/quad.toml`.
+pub const QUAD: &str = include_str!("../../scenes/quad.toml");
+
+/// The embedded demo scene as read, with the pipeline it names.
+pub fn demo() -> Result<SceneSpec, String> {
+    parse(DEMO, "scenes/demo.toml (embedded)", Path::new("."))
+}
+
+/// The embedded quad as read.
+pub fn quad() -> Result<SceneSpec, String> {
+    parse(QUAD, "scenes/quad.toml (embedded)", Path::new("."))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
