@@ -1,5 +1,6 @@
 //! A unit by its name in the unit table: its model (`unit`), and its rtl block's type for code that needs it
-//! (`with_unit!`); the cell count and placement by name that the report and `widths --budget` use.
+//! (`with_unit!`); a unit's yosys cells and placement by name, for the
+//! report.
 
 /// Defines `with_unit!(name, U => body)`: run `body` with `U` bound to the rtl block of the unit called `name`,
 /// for every unit of `vectors::unit_table!` (the `$` passed through lets this macro write one of its own).

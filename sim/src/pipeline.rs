@@ -1,7 +1,8 @@
-//! A pipeline, as the demo and the renderers see it: the units it holds, its model and its rtl block, how it
-//! builds its per-pixel inputs from a scene (with the f64 ideal of every pixel beside them), and how it reads a
-//! shade and a colour off its outputs. Seed 000's Cartesian (both texel decodes) and polar pipelines, seed 001's
-//! height-map pipeline and seed 004's palette pipeline (at two palette sizes) implement it.
+//! A pipeline, as the demo and the renderers see it: its row of the table (`crate::pipelines`: the units it holds,
+//! its model and its rtl block), how it builds its per-pixel inputs from a scene (with the f64 ideal of every pixel
+//! beside them), and how it reads a shade and a colour off its outputs. One implementation per family: seed 000's
+//! Cartesian pipelines (lights per vertex, or one light per surface) and polar pipelines, seed 001's height-map
+//! pipeline and seed 004's palette pipelines; `build` makes a row's.
 
 use crate::pipelines::{self, Choices, Family, Per, Row, Settings};
 pub use crate::prepared::{Ideal, Prepared};
