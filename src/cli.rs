@@ -1,3 +1,5 @@
+//! The command line: parses the arguments and dispatches to the commands' modules; nothing else.
+
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 
@@ -255,64 +257,6 @@ impl From<PolarScale> for vectors::polar_encode::Scale {
     }
 }
 
-/// Defines `with_unit!(name, U => body)`: run `body` with `U` bound to the rtl block of the unit called `name`,
-/// for every unit of `vectors::unit_table!` (the `$` passed through lets this macro write one of its own).
-macro_rules! define_with_unit {
-    ([$d:tt] rtl { $($name:ident: $model:expr, $block:ty, [$($waiver:tt)*];)* } software { $($soft:ident),* }) => {
-        macro_rules! with_unit {
-            ($d unit:expr, $d u:ident => $d body:expr) => {
-                match $d unit {
-                    $(stringify!($name) => {
-                        type $d u = $block;
-                        $d body
-                    })*
-                    other => Err(format!("`{other}` has no rtl block")),
-                }
-            };
-        }
-    };
-}
-vectors::unit_table!(define_with_unit, $);
-
-/// A command's output folder, made and tried with a file before any work, refused in one line.
-pub fn writable_folder(out: &std::path::Path) -> Result<(), String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("cannot create {}: {e}", out.display()))?;
-    try_a_file_in(out).map_err(|e| format!("cannot write into {}: {e}", out.display()))
-}
-
-/// A file written into `dir` and removed.
-fn try_a_file_in(dir: &std::path::Path) -> std::io::Result<()> {
-    let probe = dir.join(format!(".{}.write-test", std::process::id()));
-    std::fs::write(&probe, b"")?;
-    let _ = std::fs::remove_file(&probe);
-    Ok(())
-}
-
-/// A file can be written at `path`: its folder exists and takes a file (tried with one, removed), and it is not a
-/// folder itself.
-pub fn writable_file(path: &std::path::Path) -> Result<(), String> {
-    if path.is_dir() {
-        return Err(format!("{} is a folder; name a file", path.display()));
-    }
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => std::path::Path::new("."),
-    };
-    try_a_file_in(dir).map_err(|e| format!("cannot write {}: {e}", path.display()))
-}
-
-pub fn unit(name: &str) -> Result<&'static vectors::UnitModel, String> {
-    if vectors::unit::SOFTWARE_ONLY.contains(&name) {
-        return Err(format!(
-            "`{name}` is software only (no rtl block, no vectors): its errors are in `bumprtl accuracy`"
-        ));
-    }
-    vectors::unit::find(name).ok_or_else(|| {
-        let names: Vec<&str> = vectors::UNITS.iter().map(|u| u.name).collect();
-        format!("unknown unit `{name}`; the units are: {}", names.join(", "))
-    })
-}
-
 /// clap's own message for a bad command line, cut to one line: the error, then clap's tip if it has one.
 fn one_line(e: &clap::Error) -> String {
     let text = e.render().to_string();
@@ -349,135 +293,36 @@ pub fn main() -> Result<(), String> {
     };
     match cli.cmd {
         Cmd::Vectors { unit: name, exhaustive, count, seed, out } => {
-            let u = unit(&name)?;
-            let inputs = vectors::unit::generate(u, exhaustive, count, seed)?;
-            let command = if exhaustive {
-                format!("bumprtl vectors {name} --exhaustive")
-            } else {
-                format!("bumprtl vectors {name} --count {count} --seed {seed}")
-            };
-            let text = vectors::csv::render(u, &inputs, &command);
-            match out {
-                Some(p) if p.as_os_str() != "-" => synth::export::write_atomic(&p, text.as_bytes())?,
-                _ => print!("{text}"),
-            }
+            crate::unit_commands::vectors(name, exhaustive, count, seed, out)?
         }
-        Cmd::Verilog { scene: Some(scene), out, .. } => {
-            let spec = sim::scene_file::load(&scene)?;
-            let pipe = crate::render::pipeline(&spec);
-            let text = pipe.rtl().verilog();
-            if out.as_os_str() == "-" {
-                print!("{text}");
-            } else {
-                writable_folder(&out)?;
-                let p = out.join(format!("{}.v", pipe.model().name));
-                synth::export::write_atomic(&p, text.as_bytes())?;
-                println!("{} ({}: {})", p.display(), spec.name, pipe.units().join(" → "));
-            }
-        }
+        Cmd::Verilog { scene: Some(scene), out, .. } => crate::unit_commands::verilog_scene(scene, out)?,
         Cmd::Verilog { unit: None, .. } => return Err("verilog: name a unit or --scene FILE".into()),
-        Cmd::Verilog { unit: Some(name), out, .. } => {
-            let u = unit(&name)?;
-            if out.as_os_str() == "-" {
-                // the module alone: a testbench and its vector files cannot share one stream
-                with_unit!(name.as_str(), U => Ok::<_, String>(print!("{}", synth::export::<U>().text)))?;
-                return Ok(());
-            }
-            let text = vectors::csv::golden(u.name)
-                .ok_or_else(|| format!("{name} has no golden vector file in this build"))?;
-            let file = vectors::csv::parse(u, text).map_err(|e| format!("vectors/data/{name}.csv: {e}"))?;
-            let n_in = u.inputs.len();
-            let ins: Vec<Vec<u64>> =
-                file.rows.iter().map(|r| vectors::unit::to_patterns(&r[..n_in], u.inputs)).collect();
-            let outs: Vec<Vec<u64>> =
-                file.rows.iter().map(|r| vectors::unit::to_patterns(&r[n_in..], u.outputs)).collect();
-            let source = format!("vectors/data/{name}.csv");
-            let paths = with_unit!(name.as_str(), U => {
-                let v = synth::export::<U>().write(&out)?;
-                let mut p = vec![v];
-                p.extend(synth::selfcheck::write::<U>(&out, &ins, &outs, &source)?);
-                Ok::<_, String>(p)
-            })?;
-            for p in paths {
-                println!("{}", p.display());
-            }
-        }
-        Cmd::Wave { unit: name, out, count } => {
-            let u = unit(&name)?;
-            let inputs = vectors::unit::generate(u, false, count, 1)?;
-            if out.as_os_str() == "-" {
-                let w = Box::new(std::io::BufWriter::new(std::io::stdout()));
-                with_unit!(name.as_str(), U => sim::wave::trace::<U>(u, &inputs, w).map_err(|e| format!("cannot write the VCD to standard output: {e}")))?;
-            } else {
-                with_unit!(name.as_str(), U => sim::wave::write_vcd::<U>(u, &inputs, &out))?;
-                println!("{} ({} vectors)", out.display(), inputs.len());
-            }
-        }
+        Cmd::Verilog { unit: Some(name), out, .. } => crate::unit_commands::verilog(name, out)?,
+        Cmd::Wave { unit: name, out, count } => crate::unit_commands::wave(name, out, count)?,
         Cmd::Widths { unit: name, budget: Some(b), target, dir, .. } => {
-            unit(&name)?;
-            let part = synth::fpga::part(&target)?;
-            writable_folder(&dir)?; // before the first synthesis
-            crate::widths::budget(&name, b, part, &dir)?
+            crate::unit_commands::widths_budget(name, b, target, dir)?
         }
-        Cmd::Widths { unit: name, count, seed, csv, .. } => {
-            let m = unit(&name)?;
-            if let Some(c) = &csv {
-                writable_file(c)?; // before the minutes of simulation
-            }
-            with_unit!(name.as_str(), U => crate::widths::run::<U>(m, count, seed, csv.as_deref()))?;
-        }
+        Cmd::Widths { unit: name, count, seed, csv, .. } => crate::unit_commands::widths(name, count, seed, csv)?,
         Cmd::Synth { unit: name, scene, target, dir, freq } => {
-            let name = match (name, scene) {
-                (Some(n), _) => n,
-                (None, Some(scene)) => {
-                    let spec = sim::scene_file::load(&scene)?;
-                    let pipe = crate::render::pipeline(&spec);
-                    println!("{}: {} ({})", spec.name, pipe.model().name, pipe.units().join(" → "));
-                    pipe.model().name.to_string()
-                }
-                (None, None) => return Err("synth: name a unit or --scene FILE".into()),
-            };
-            unit(&name)?;
-            let part = target.as_deref().map(synth::fpga::part).transpose()?;
-            if let Some(f) = freq {
-                if !(1.0..=500.0).contains(&f) {
-                    return Err(format!("--freq {f}: the clock target must be between 1 and 500 MHz"));
-                }
-            }
-            let d = dir.join(&name);
-            let r = with_unit!(name.as_str(), U => {
-                let (part, choice) = match part {
-                    Some(p) => (p, String::new()),
-                    None => {
-                        let (p, _, why) = synth::fpga::choose::<U>(&d)?;
-                        (p, why)
-                    }
-                };
-                let freq = freq.unwrap_or(part.default_freq());
-                synth::fpga::synth_and_place::<U>(&d, part, freq, &choice)
-            })?;
-            crate::report::synth_row(&r);
-            let family = r.part().family;
-            let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| with_unit!(name.as_str(), U => synth::fpga::synth_tied::<U>(&d, family, tag, ties, keep));
-            crate::hardware::mode_views(&name, family, &tied)?;
+            crate::unit_commands::synth(name, scene, target, dir, freq)?
         }
         Cmd::Report { scenes, out, budgets, no_place, only, plan, point, merge } => {
             let scenes =
-                if scenes.is_empty() { crate::sweep::DEFAULT_SCENES.map(String::from).to_vec() } else { scenes };
+                if scenes.is_empty() { crate::report::DEFAULT_SCENES.map(String::from).to_vec() } else { scenes };
             let place = !no_place;
             match (plan, point, merge) {
                 (Some(file), _, _) => {
-                    writable_file(&file)?;
-                    crate::sweep::plan(&scenes, &file, &out, &budgets, place, only.as_deref())?
+                    crate::output::writable_file(&file)?;
+                    crate::report::plan(&scenes, &file, &out, &budgets, place, only.as_deref())?
                 }
-                (None, Some(id), _) => crate::sweep::one(&scenes, &id, &out, place)?,
-                (None, None, true) => crate::sweep::merge(&scenes, &out, &budgets, only.as_deref())?,
-                (None, None, false) => crate::sweep::run(&scenes, &out, &budgets, place, only.as_deref())?,
+                (None, Some(id), _) => crate::report::one(&scenes, &id, &out, place)?,
+                (None, None, true) => crate::report::merge(&scenes, &out, &budgets, only.as_deref())?,
+                (None, None, false) => crate::report::run(&scenes, &out, &budgets, place, only.as_deref())?,
             }
         }
         Cmd::Accuracy { directions, samples, lut_cost, dir } => {
-            crate::report::accuracy(directions, samples);
-            crate::report::lut_sizes(lut_cost, &dir)?;
+            crate::accuracy::accuracy(directions, samples);
+            crate::accuracy::lut_sizes(lut_cost, &dir)?;
         }
         Cmd::Quantize { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: quantize writes a folder of files (palette, index map, mips); name a folder".into())
@@ -487,42 +332,12 @@ pub fn main() -> Result<(), String> {
                 crate::quantize::Args { map: &map, size: size as usize, dither, green_down, relief, q, out: &out };
             crate::quantize::run(&args)?
         }
-        Cmd::PaletteTable { no_synth, dir, out } => {
-            writable_folder(&out)?; // before the minutes of work, synthesis included
-            let tools =
-                synth::tools::missing(&["yosys", "nextpnr-ice40"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
-            let fmax =
-                if no_synth || !tools {
-                    if !no_synth {
-                        println!(
-                            "the rtl columns need yosys, nextpnr-ice40 and nextpnr-ecp5 (`bash .ci/run` installs them)"
-                        );
-                    }
-                    crate::palette_table::Fmax::default()
-                } else {
-                    let (ecp5, up5k) = (synth::fpga::ECP5_25F, synth::fpga::UP5K);
-                    let d = dir.join("table_builder").join(ecp5.name);
-                    let one = synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(
-                        &d,
-                        ecp5,
-                        ecp5.default_freq(),
-                    )?;
-                    let d = dir.join("palette_pipeline_shared").join(up5k.name);
-                    let shared = synth::fpga::synth_and_place_cached::<
-                        rtl::palette_pipeline_shared::PalettePipelineShared,
-                    >(&d, up5k, up5k.default_freq())?;
-                    crate::palette_table::Fmax { builder_mhz: one.fmax_mhz, shared_mhz: shared.fmax_mhz }
-                };
-            crate::palette_table::run(fmax, &out)?
-        }
+        Cmd::PaletteTable { no_synth, dir, out } => crate::palette_table::command(no_synth, &dir, &out)?,
         Cmd::Render { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: render writes pictures and a waveform; name a folder".into())
         }
         Cmd::Render { scene, out, window, no_verilator } => crate::render::run(&scene, &out, window, !no_verilator)?,
-        Cmd::Hardcases => crate::hardcases::run(&|name, inputs| {
-            let m = unit(name)?;
-            with_unit!(name, U => Ok(crate::hardcases::rtl_outputs::<U>(m, inputs)))
-        })?,
+        Cmd::Hardcases => crate::unit_commands::hardcases()?,
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())
         }
@@ -531,22 +346,4 @@ pub fn main() -> Result<(), String> {
         }
     }
     Ok(())
-}
-
-/// A unit's iCE40 cells from yosys (cached), by name.
-pub fn synth_cells(name: &str, dir: &std::path::Path) -> Result<synth::fpga::Cells, String> {
-    with_unit!(name, U => synth::fpga::synth_unit::<U>(dir, synth::fpga::Family::Ice40))
-}
-
-/// A unit placed on the smallest part it fits at that part's default clock target (cached); None where that part
-/// is an ECP5 and nextpnr-ecp5 is not installed.
-pub fn place_cached(name: &str, dir: &std::path::Path) -> Result<Option<synth::fpga::SynthReport>, String> {
-    with_unit!(name, U => {
-        let (part, _, _) = synth::fpga::choose::<U>(dir)?;
-        if part.family == synth::fpga::Family::Ecp5 && synth::tools::nextpnr_ecp5().is_none() {
-            Ok(None)
-        } else {
-            synth::fpga::synth_and_place_cached::<U>(dir, part, part.default_freq()).map(Some)
-        }
-    })
 }

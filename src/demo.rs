@@ -15,30 +15,6 @@ use vectors::cart_pipeline::Decode;
 use vectors::polar_encode::Scale;
 use vectors::stats::ErrorStats;
 
-/// The demo's scene, embedded: `scenes/demo.toml`, a torus.
-pub const DEMO_SCENE: &str = include_str!("../scenes/demo.toml");
-/// The quad every pipeline is compared on (the height-map and palette pipelines draw the quad only): `scenes/quad.toml`.
-pub const QUAD_SCENE: &str = include_str!("../scenes/quad.toml");
-
-/// The embedded scene, read as any scene file is.
-pub fn demo_scene() -> Result<Scene, String> {
-    Ok(demo_spec()?.scene)
-}
-
-/// The embedded demo scene as read, with the pipeline it names.
-pub fn demo_spec() -> Result<sim::scene_file::SceneSpec, String> {
-    sim::scene_file::parse(DEMO_SCENE, "scenes/demo.toml (embedded)", Path::new("."))
-}
-
-/// The embedded quad.
-pub fn quad_scene() -> Result<Scene, String> {
-    Ok(sim::scene_file::parse(QUAD_SCENE, "scenes/quad.toml (embedded)", Path::new("."))?.scene)
-}
-
-/// The polar surface of the demo: h = 1 (a pure dot product, k1 = 0) and p = 4.
-pub const POLAR_H: f64 = 1.0;
-pub const POLAR_PW: i64 = 16;
-
 fn bar(len: u64, what: &str) -> ProgressBar {
     let b = ProgressBar::new(len);
     b.set_style(
@@ -97,7 +73,7 @@ fn run_pipeline<'a>(
     // both Verilator runs, the one-thread and the split one, against the model
     let mism_vl = vl.as_ref().map(|r| r.image.mismatches(&model) + r.single.mismatches(&model)).unwrap_or(0);
     let mism_hdl = hdl.as_ref().map(|h| h.mismatches(&model)).unwrap_or(0);
-    let render::Errors { shade, colour, normal, surface } = render::errors(pipe, scene, &prep, &model);
+    let sim::pipeline::Errors { shade, colour, normal, surface } = sim::pipeline::errors(pipe, scene, &prep, &model);
     Ok(Run { pipe, prep, ideal_s, model, hdl, vl, mism_hdl, mism_vl, shade, colour, normal, surface })
 }
 
@@ -111,8 +87,8 @@ pub fn run(
 ) -> Result<(), String> {
     let wall = Instant::now();
     // a user's map is read (or refused) before anything is written
-    let mut scene = Scene { size, ..quad_scene()? };
-    let torus_spec = demo_spec()?;
+    let mut scene = Scene { size, ..sim::scene_file::quad()?.scene };
+    let torus_spec = sim::scene_file::demo()?;
     let mut torus = Scene { size, ..torus_spec.scene.clone() };
     if let Some(path) = height_map {
         let loaded = sim::heightmap::load(path)?;
@@ -125,7 +101,7 @@ pub fn run(
         scene = Scene { tex: side, relief, map: map.clone(), ..scene };
         torus = Scene { tex: side, relief, map, ..torus };
     }
-    crate::cli::writable_folder(out)?;
+    crate::output::writable_folder(out)?;
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
     let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };
@@ -134,14 +110,16 @@ pub fn run(
 
     // every pipeline, and whether rust-hdl renders it here (the hemi-oct variant's rust-hdl run is left to the
     // tests: the model and Verilator are the two fast paths)
-    let polar = Polar { scale, pw: POLAR_PW, h: POLAR_H };
+    // the polar surface: a scene's default (h = 1, p = 4)
+    let own = sim::pipelines::Settings::default();
+    let polar = Polar::new(scale, own.pw, own.h);
     let (cart, hemi) = (Cartesian::glossy(Decode::Seed), Cartesian::glossy(Decode::HemiOct));
     let height = Height::new(&scene);
     let (pal256, pal4096) = (Palette::new(256, &scene), Palette::new(4096, &scene));
     let pipes: [(&dyn Pipeline, bool); 6] =
         [(&cart, true), (&hemi, false), (&polar, true), (&height, true), (&pal256, true), (&pal4096, false)];
     // the demo's own scene first: the torus through the pipeline its file names (the model and Verilator)
-    let torus_pipe = crate::render::pipeline(&torus_spec);
+    let torus_pipe = torus_spec.build();
     let on_torus = run_pipeline(torus_pipe.as_ref(), &torus, out, false, no_vl.is_empty())?;
     let runs = pipes
         .iter()

@@ -70,7 +70,7 @@ pub fn mode_views(unit: &str, family: synth::fpga::Family, synth_tied: TiedSynth
     for (tag, ties, keep) in views.iter() {
         let (c, b) = synth_tied(tag, ties, keep)?;
         println!("    {tag:<8} {lut} {:>6}  {ff} {:>6}  {dsp} {:>3}  {bram} {:>3}", c.lut4, c.ff, c.dsp, c.bram);
-        crate::report::blocks_line(&b, family, 13);
+        crate::synth_figures::blocks_line(&b, family, 13);
         if !ties.is_empty() {
             sum = synth::fpga::Cells {
                 lut4: sum.lut4 + c.lut4,

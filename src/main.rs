@@ -1,15 +1,23 @@
 //! `bumprtl`: the command line over the bumprtl crates. Every failure is one line on stderr and a non-zero exit.
 
+// first: `with_unit!` is a macro the modules after it use
+#[macro_use]
+mod units;
+
+mod accuracy;
+mod blocks;
 mod cli;
 mod demo;
 mod fonts;
 mod hardcases;
 mod hardware;
+mod output;
 mod palette_table;
 mod quantize;
 mod render;
 mod report;
-mod sweep;
+mod synth_figures;
+mod unit_commands;
 mod widths;
 
 fn main() {

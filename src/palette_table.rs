@@ -69,6 +69,32 @@ pub struct Fmax {
 /// 30 block RAMs; 2 × 2,048 words would need 32).
 const SHARED_MAX: usize = 256;
 
+/// `bumprtl palette-table`: the rtl columns' fmax from placing the table builders (unless skipped, or the tools
+/// are missing), then the table and Figure 3's pictures into `out`.
+pub fn command(no_synth: bool, dir: &std::path::Path, out: &std::path::Path) -> Result<(), String> {
+    crate::output::writable_folder(out)?; // before the minutes of work, synthesis included
+    let tools = synth::tools::missing(&["yosys", "nextpnr-ice40"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
+    let fmax = if no_synth || !tools {
+        if !no_synth {
+            println!("the rtl columns need yosys, nextpnr-ice40 and nextpnr-ecp5 (`bash .ci/run` installs them)");
+        }
+        Fmax::default()
+    } else {
+        let (ecp5, up5k) = (synth::fpga::ECP5_25F, synth::fpga::UP5K);
+        let d = dir.join("table_builder").join(ecp5.name);
+        let one =
+            synth::fpga::synth_and_place_cached::<rtl::table_builder::TableBuilder>(&d, ecp5, ecp5.default_freq())?;
+        let d = dir.join("palette_pipeline_shared").join(up5k.name);
+        let shared = synth::fpga::synth_and_place_cached::<rtl::palette_pipeline_shared::PalettePipelineShared>(
+            &d,
+            up5k,
+            up5k.default_freq(),
+        )?;
+        Fmax { builder_mhz: one.fmax_mhz, shared_mhz: shared.fmax_mhz }
+    };
+    run(fmax, &out)
+}
+
 pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
     let normals = normal_map();
     let view = [0.0, 1.0, 0.0];

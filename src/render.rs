@@ -3,9 +3,7 @@
 //! for a window, traced to a VCD. The rtl paths must equal the model on every pixel they render; the command fails
 //! if they do not. The scene is read (or refused) before anything is written.
 
-use sim::pipeline::{CartSurface, Cartesian, Height, Palette, Pipeline, Polar};
 use sim::render::{self, Window};
-use sim::scene_file::{PipelineKind, SceneSpec};
 use std::path::Path;
 use std::time::Instant;
 
@@ -27,17 +25,6 @@ pub fn parse_window(s: &str) -> Result<Window, String> {
     Ok(Window { x, y, w, h })
 }
 
-/// The pipeline a scene names, built for it.
-pub fn pipeline(spec: &SceneSpec) -> Box<dyn Pipeline> {
-    match spec.pipeline {
-        PipelineKind::Cartesian { decode, gloss } => Box::new(Cartesian { decode, gloss }),
-        PipelineKind::CartSurface(variant) => Box::new(CartSurface { variant }),
-        PipelineKind::Polar { scale, pw, h } => Box::new(Polar { scale, pw, h }),
-        PipelineKind::Height => Box::new(Height::new(&spec.scene)),
-        PipelineKind::Palette(n) => Box::new(Palette::new(n, &spec.scene)),
-    }
-}
-
 pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> Result<(), String> {
     let wall = Instant::now();
     let spec = sim::scene_file::load(path)?;
@@ -49,12 +36,12 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         }
     }
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
-    crate::cli::writable_folder(out)?;
+    crate::output::writable_folder(out)?;
     for n in &spec.notes {
         println!("{n}");
     }
     let stem = path.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
-    let pipe = pipeline(&spec);
+    let pipe = spec.build();
     let (m, rtl) = (pipe.model(), pipe.rtl());
     println!("scene: {} ({}), {size} × {size}", spec.name, path.display());
     println!("pipeline: {} ({}, latency {} clocks): {}", m.name, pipe.label(), rtl.latency(), pipe.describe(scene));
@@ -110,7 +97,7 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         png("verilator", &|k| pipe.colour(&v.image.outs[k]))?;
     }
     png("shade", &|k| [to8(pipe.shade(&model.outs[k])); 3])?;
-    let e = render::errors(pipe.as_ref(), scene, &prep, &model);
+    let e = sim::pipeline::errors(pipe.as_ref(), scene, &prep, &model);
     let hmax = e.colour.max.max(1.0);
     png("error_heat", &|k| render::heat(render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb), hmax))?;
 

@@ -273,35 +273,35 @@ impl Point {
 macro_rules! normalise_blocks {
     ($($t:literal),* $(,)?) => {
         &[$(
-            ($t, 0, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 0>> as crate::report::SynthFn),
-            ($t, 1, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 1>> as crate::report::SynthFn),
+            ($t, 0, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 0>> as crate::blocks::SynthFn),
+            ($t, 1, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 1>> as crate::blocks::SynthFn),
         )*]
     };
 }
 
 macro_rules! bilinear_blocks {
     ($(($f:literal, $d:literal)),* $(,)?) => {
-        &[$(($f, $d, synth::fpga::synth_unit::<rtl::bilinear::Bilinear<$f, $d>> as crate::report::SynthFn)),*]
+        &[$(($f, $d, synth::fpga::synth_unit::<rtl::bilinear::Bilinear<$f, $d>> as crate::blocks::SynthFn)),*]
     };
 }
 
 macro_rules! power_blocks {
     ($(($lf:literal, $eb:literal)),* $(,)?) => {
-        &[$(($lf, $eb, synth::fpga::synth_unit::<rtl::power::Power<$lf, $eb>> as crate::report::SynthFn)),*]
+        &[$(($lf, $eb, synth::fpga::synth_unit::<rtl::power::Power<$lf, $eb>> as crate::blocks::SynthFn)),*]
     };
 }
 
-const POWER_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::power_sizes!(power_blocks);
-const NORMALISE_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::normalise_table_sizes!(normalise_blocks);
-const BILINEAR_BLOCKS: &[(u32, u32, crate::report::SynthFn)] = vectors::bilinear_sizes!(bilinear_blocks);
+const POWER_BLOCKS: &[(u32, u32, crate::blocks::SynthFn)] = vectors::power_sizes!(power_blocks);
+const NORMALISE_BLOCKS: &[(u32, u32, crate::blocks::SynthFn)] = vectors::normalise_table_sizes!(normalise_blocks);
+const BILINEAR_BLOCKS: &[(u32, u32, crate::blocks::SynthFn)] = vectors::bilinear_sizes!(bilinear_blocks);
 
 /// The synthesis of `Normalise<t, n>`, where the sweep builds it.
-pub fn normalise_block(t: u32, n: u32) -> Option<crate::report::SynthFn> {
+pub fn normalise_block(t: u32, n: u32) -> Option<crate::blocks::SynthFn> {
     NORMALISE_BLOCKS.iter().find(|b| (b.0, b.1) == (t, n)).map(|b| b.2)
 }
 
 /// The synthesis of `Bilinear<f, d>` (four channels), where the sweep builds it.
-pub fn bilinear_block(f: u32, d: u32) -> Option<crate::report::SynthFn> {
+pub fn bilinear_block(f: u32, d: u32) -> Option<crate::blocks::SynthFn> {
     BILINEAR_BLOCKS.iter().find(|b| (b.0, b.1) == (f, d)).map(|b| b.2)
 }
 
@@ -320,7 +320,7 @@ pub fn sweep(
     say: &dyn Fn(&str),
 ) -> Result<Vec<Point>, String> {
     const SAMPLES: usize = 200_000;
-    let cost = |f: crate::report::SynthFn, name: String| {
+    let cost = |f: crate::blocks::SynthFn, name: String| {
         say(&name);
         f(&dir.join(&name), family)
     };
@@ -340,7 +340,7 @@ pub fn sweep(
             }
         }
         "sincos" => {
-            for &(tb, w, f) in crate::report::SINCOS_BLOCKS {
+            for &(tb, w, f) in crate::blocks::SINCOS_BLOCKS {
                 let e = vectors::sincos::size_error(tb, w);
                 points.push(Point {
                     setting: format!("{} entries of {w} bits", 1u32 << tb),

@@ -13,7 +13,7 @@ fn bench(c: &mut Criterion) {
     let pipes: [&dyn Pipeline; 5] = [
         &Cartesian::glossy(Decode::Seed),
         &Cartesian::glossy(Decode::HemiOct),
-        &Polar { scale: Scale::Seed, pw: 16, h: 1.0 },
+        &Polar::new(Scale::Seed, 16, 1.0),
         &height,
         &palette,
     ];

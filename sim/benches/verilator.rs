@@ -26,7 +26,7 @@ fn bench(c: &mut Criterion) {
     let scene = sim::scene::Scene::default();
     let cart = Cartesian::glossy(vectors::cart_pipeline::Decode::Seed).prepare(&scene);
     frame::<rtl::cart_pipeline::CartPipeline>(c, &vectors::cart_pipeline::MODEL, &cart.inputs);
-    let polar = Polar { scale: vectors::polar_encode::Scale::Seed, pw: 16, h: 1.0 }.prepare(&scene);
+    let polar = Polar::new(vectors::polar_encode::Scale::Seed, 16, 1.0).prepare(&scene);
     frame::<rtl::polar_pipeline::PolarPipelineSeed>(c, &vectors::polar_pipeline::MODEL, &polar.inputs);
 }
 

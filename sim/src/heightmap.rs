@@ -1,7 +1,8 @@
 //! A user's height map from a PNG: 8- or 16-bit greyscale as it is, colour read as its luma (and said so), any
 //! size from 2 × 2 up, brought to the square power-of-two side the height path's memory holds (2^n texels, n ≤ 8)
 //! by bilinear resampling when it is not one already (and said so). Heights come out in [0, 1], white the highest.
-//! Every failure is one line naming the file and what is wrong with it.
+//! Every failure is one line naming the file and what is wrong with it. A user's normal map (RGB PNG) is read here
+//! too, into a `NormalMap`.
 
 use std::path::Path;
 
@@ -10,6 +11,14 @@ use std::path::Path;
 pub struct HeightMap {
     pub side: usize,
     pub h: Vec<f64>,
+}
+
+/// A tangent-space normal map in the project's frame (x along u, y out of the surface, z along v, down the image):
+/// `side` × `side` unit normals, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NormalMap {
+    pub side: usize,
+    pub n: Vec<[f64; 3]>,
 }
 
 /// The largest side the height path's memory (`height_fetch`) holds.
@@ -25,7 +34,7 @@ pub struct Loaded {
 
 /// A normal map and the lines to tell the user about how it was read.
 pub struct LoadedNormals {
-    pub map: crate::scene::NormalMap,
+    pub map: NormalMap,
     pub notes: Vec<String>,
 }
 
@@ -201,7 +210,7 @@ pub fn load_normal_map(path: &Path, green_down: bool) -> Result<LoadedNormals, S
     let n: Vec<[f64; 3]> = gl.iter().map(|g| [g[0], g[2], -g[1]]).collect();
     let side = w.max(h).next_power_of_two().min(MAX_SIDE);
     if w == side && h == side {
-        return Ok(LoadedNormals { map: crate::scene::NormalMap { side, n }, notes });
+        return Ok(LoadedNormals { map: NormalMap { side, n }, notes });
     }
     notes.push(format!("{name}: {w} × {h} resampled (bilinear, renormalised) to {side} × {side}: maps are square, 2^n texels up to {MAX_SIDE}"));
     let comp: Vec<Vec<f64>> =
@@ -217,7 +226,7 @@ pub fn load_normal_map(path: &Path, green_down: bool) -> Result<LoadedNormals, S
             }
         })
         .collect();
-    Ok(LoadedNormals { map: crate::scene::NormalMap { side, n: out }, notes })
+    Ok(LoadedNormals { map: NormalMap { side, n: out }, notes })
 }
 
 #[cfg(test)]

@@ -1,15 +1,15 @@
-//! A pipeline, as the demo and the renderers see it: the units it holds, its model and its rtl block, how it
-//! builds its per-pixel inputs from a scene (with the f64 ideal of every pixel beside them), and how it reads a
-//! shade and a colour off its outputs. Seed 000's Cartesian (both texel decodes) and polar pipelines, seed 001's
-//! height-map pipeline and seed 004's palette pipeline (at two palette sizes) implement it.
+//! A pipeline, as the demo and the renderers see it: its row of the table (`crate::pipelines`: the units it holds,
+//! its model and its rtl block), how it builds its per-pixel inputs from a scene (with the f64 ideal of every pixel
+//! beside them), and how it reads a shade and a colour off its outputs. One implementation per family: seed 000's
+//! Cartesian pipelines (lights per vertex, or one light per surface) and polar pipelines, seed 001's height-map
+//! pipeline and seed 004's palette pipelines; `build` makes a row's.
 
+use crate::pipelines::{self, Choices, Family, Per, Row, Settings};
+pub use crate::prepared::{Ideal, Prepared};
 use crate::raster;
-use crate::render::{self, Image, VerilatorRun};
+use crate::render::{self, Image};
+pub use crate::rtl_paths::{Rtl, RtlPaths};
 use crate::scene::Scene;
-use rtl::StreamUnit;
-use std::marker::PhantomData;
-use std::path::Path;
-use synth::fpga::{Fit, Part};
 use vectors::cart_encode::{self, Encoder};
 use vectors::cart_pipeline::{self, Decode};
 use vectors::polar_encode::{self, Scale};
@@ -18,67 +18,26 @@ use vectors::{
     UnitModel,
 };
 
-/// The f64 ideal of one pixel.
-#[derive(Clone, Copy, Debug)]
-pub struct Ideal {
-    /// The shade in 8-bit units (0..255, real), on the same scale as `Pipeline::shade`.
-    pub shade: f64,
-    /// The blended colour, 8-bit units, real.
-    pub rgb: [f64; 3],
-    /// The filtered float normal and the pixel's own light direction.
-    pub normal: [f64; 3],
-    pub light: [f64; 3],
-}
-
-/// A scene set up for one pipeline: per pixel its input vector (in the model's port order) and its ideal, after
-/// `prologue` vectors that set up the block's state for the frame (a palette's colour table; none elsewhere).
-pub struct Prepared {
-    pub size: usize,
-    pub inputs: Vec<Vec<i64>>,
-    pub prologue: usize,
-    pub ideal: Vec<Ideal>,
-    /// each pixel's place in the frame (row by row); empty when the pixels fill the frame in order
-    pub at: Vec<usize>,
-}
-
-impl Prepared {
-    pub fn new(size: usize) -> Prepared {
-        Prepared { size, inputs: vec![], prologue: 0, ideal: vec![], at: vec![] }
-    }
-
-    /// Pixel k's place in the frame.
-    pub fn frame_index(&self, k: usize) -> usize {
-        if self.at.is_empty() {
-            k
-        } else {
-            self.at[k]
-        }
-    }
-
-    /// For each place of the frame, the pixel there, if the surface covers it.
-    pub fn by_place(&self) -> Vec<Option<usize>> {
-        let mut m = vec![None; self.size * self.size];
-        for k in 0..self.ideal.len() {
-            m[self.frame_index(k)] = Some(k);
-        }
-        m
-    }
-
-    /// The pixels' input vectors, the prologue left out.
-    pub fn pixels(&self) -> &[Vec<i64>] {
-        &self.inputs[self.prologue..]
-    }
-}
-
+/// A family's behaviour on a scene; its row of the table of pipelines (`crate::pipelines::PIPELINES`) names the
+/// pipeline, its units, its model and its rtl block.
 pub trait Pipeline: Sync {
+    fn row(&self) -> &'static Row;
     /// A short name for tables ("Cartesian").
-    fn label(&self) -> &'static str;
+    fn label(&self) -> &'static str {
+        self.row().label
+    }
     /// The bit-exact model of the whole pipeline; its name is the rtl block's.
-    fn model(&self) -> &'static UnitModel;
+    fn model(&self) -> &'static UnitModel {
+        self.row().model
+    }
     /// The rtl block, behind the paths that need its type.
-    fn rtl(&self) -> &'static dyn RtlPaths;
+    fn rtl(&self) -> &'static dyn RtlPaths {
+        self.row().rtl
+    }
     /// The units the pipeline holds, in dataflow order, by their names in the unit table.
-    fn units(&self) -> &'static [&'static str];
+    fn units(&self) -> &'static [&'static str] {
+        self.row().units
+    }
     /// One line saying what the pipeline does with the scene.
     fn describe(&self, scene: &Scene) -> String;
     fn prepare(&self, scene: &Scene) -> Prepared;
@@ -113,111 +72,36 @@ pub fn gloss_shade(conc: i64, n: [f64; 3], l: [f64; 3]) -> f64 {
     gloss::ideal_real(conc, x) / 1023.0 * 255.0
 }
 
-/// What a pipeline's rtl block does in the paths that need its type; `Rtl::<U>::PATHS` is one.
-pub trait RtlPaths: Sync {
-    fn name(&self) -> &'static str;
-    fn latency(&self) -> usize;
-    fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image;
-    fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
-    fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String>;
-    /// The prepared vectors through rust-hdl with every signal traced to `path`: the outputs past the prologue.
-    fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String>;
-    fn export(&self, dir: &Path) -> Result<(), String>;
-    /// The exported module's text.
-    fn verilog(&self) -> String;
-    fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String>;
-}
-
-/// The paths of the rtl block `U`.
-pub struct Rtl<U>(PhantomData<fn() -> U>);
-
-impl<U: StreamUnit + Send + 'static> Rtl<U> {
-    pub const PATHS: Rtl<U> = Rtl(PhantomData);
-}
-
-impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
-    fn name(&self) -> &'static str {
-        U::NAME
-    }
-    fn latency(&self) -> usize {
-        U::LATENCY
-    }
-    fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image {
-        render::rust_hdl::<U>(m, p, tick)
-    }
-    fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
-        render::verilator::<U>(m, p, dir, threads)
-    }
-    fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String> {
-        crate::wave::write_vcd::<U>(m, inputs, path).map(|_| ())
-    }
-    fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String> {
-        let got = crate::wave::write_vcd::<U>(m, &p.inputs, path)?;
-        Ok(got[p.prologue.min(got.len())..].iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect())
-    }
-    fn export(&self, dir: &Path) -> Result<(), String> {
-        synth::export::<U>().write(dir).map(|_| ())
-    }
-    fn verilog(&self) -> String {
-        synth::export::<U>().text
-    }
-    fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
-        synth::fpga::measure::<U>(dir, parts, say)
-    }
-}
-
 /// Seed 000's second embodiment: the height map's normals encoded as Cartesian texels (the seed's offset binary,
 /// or hemi-octahedral with the decode that reads it), bilinear, the vertex lights interpolated per pixel; with the
 /// gloss unit, or for a material with C = 0 without it (`cart_pipeline_matte`, `cart_pipeline_hemi_oct_matte`).
+#[derive(Clone, Copy, Debug)]
 pub struct Cartesian {
     pub decode: Decode,
     pub gloss: bool,
+    pub(crate) row: &'static Row,
+}
+
+/// The row that serves these choices (a test of `crate::pipelines` keeps every family's choices served).
+fn row_for(c: Choices) -> &'static Row {
+    pipelines::choose(&c).unwrap_or_else(|| panic!("no pipeline serves {c:?}"))
 }
 
 impl Cartesian {
+    pub fn new(decode: Decode, gloss: bool) -> Cartesian {
+        let row = row_for(pipelines::cartesian(decode, Per::Vertex, gloss, pipelines::Filter::Bilinear));
+        Cartesian { decode, gloss, row }
+    }
+
     /// The full pipeline, gloss unit and all.
-    pub const fn glossy(decode: Decode) -> Cartesian {
-        Cartesian { decode, gloss: true }
+    pub fn glossy(decode: Decode) -> Cartesian {
+        Cartesian::new(decode, true)
     }
 }
 
 impl Pipeline for Cartesian {
-    fn label(&self) -> &'static str {
-        match (self.decode, self.gloss) {
-            (Decode::Seed, true) => "Cartesian",
-            (Decode::HemiOct, true) => "hemi-oct",
-            (Decode::Seed, false) => "Cartesian, matte",
-            (Decode::HemiOct, false) => "hemi-oct, matte",
-        }
-    }
-    fn model(&self) -> &'static UnitModel {
-        match (self.decode, self.gloss) {
-            (Decode::Seed, true) => &cart_pipeline::MODEL,
-            (Decode::HemiOct, true) => &cart_pipeline::MODEL_HEMI_OCT,
-            (Decode::Seed, false) => &cart_pipeline::MODEL_MATTE,
-            (Decode::HemiOct, false) => &cart_pipeline::MODEL_HEMI_OCT_MATTE,
-        }
-    }
-    fn rtl(&self) -> &'static dyn RtlPaths {
-        use rtl::cart_pipeline::*;
-        match (self.decode, self.gloss) {
-            (Decode::Seed, true) => &Rtl::<CartPipeline>::PATHS,
-            (Decode::HemiOct, true) => &Rtl::<CartPipelineHemiOct>::PATHS,
-            (Decode::Seed, false) => &Rtl::<CartPipelineMatte>::PATHS,
-            (Decode::HemiOct, false) => &Rtl::<CartPipelineHemiOctMatte>::PATHS,
-        }
-    }
-    fn units(&self) -> &'static [&'static str] {
-        match (self.decode, self.gloss) {
-            (Decode::Seed, true) => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
-            (Decode::HemiOct, true) => {
-                &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"]
-            }
-            (Decode::Seed, false) => &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
-            (Decode::HemiOct, false) => {
-                &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "blend"]
-            }
-        }
+    fn row(&self) -> &'static Row {
+        self.row
     }
     fn describe(&self, scene: &Scene) -> String {
         let texels = match self.decode {
@@ -307,67 +191,21 @@ fn cartesian_prepare(scene: &Scene, decode: Decode, ports: usize, fill: FillCart
 /// Seed 000's Cartesian pipeline built for a scene with one light per surface (`cart_surface` and its variants):
 /// the surface's light made a unit vector once (as the full pipeline's light path would make it) and sent with
 /// each pixel; no gloss unit when C = 0; the texels bilinear or the nearest one.
+#[derive(Clone, Copy, Debug)]
 pub struct CartSurface {
     pub variant: cart_surface::Variant,
+    pub(crate) row: &'static Row,
+}
+
+impl CartSurface {
+    pub fn new(variant: cart_surface::Variant) -> CartSurface {
+        CartSurface { variant, row: row_for(pipelines::surface(variant)) }
+    }
 }
 
 impl Pipeline for CartSurface {
-    fn label(&self) -> &'static str {
-        // `Variant::ALL`'s order
-        const LABELS: [&str; 8] = [
-            "Cartesian, one light",
-            "Cartesian, one light, matte",
-            "hemi-oct, one light",
-            "hemi-oct, one light, matte",
-            "Cartesian, nearest, one light",
-            "Cartesian, nearest, one light, matte",
-            "hemi-oct, nearest, one light",
-            "hemi-oct, nearest, one light, matte",
-        ];
-        LABELS[cart_surface::Variant::ALL.iter().position(|v| *v == self.variant).unwrap_or(0)]
-    }
-    fn model(&self) -> &'static UnitModel {
-        self.variant.model()
-    }
-    fn rtl(&self) -> &'static dyn RtlPaths {
-        use rtl::cart_surface::*;
-        match self.model().name {
-            "cart_surface" => &Rtl::<CartSurface>::PATHS,
-            "cart_surface_matte" => &Rtl::<CartSurfaceMatte>::PATHS,
-            "cart_surface_hemi_oct" => &Rtl::<CartSurfaceHemiOct>::PATHS,
-            "cart_surface_hemi_oct_matte" => &Rtl::<CartSurfaceHemiOctMatte>::PATHS,
-            "cart_surface_nearest" => &Rtl::<CartSurfaceNearest>::PATHS,
-            "cart_surface_nearest_matte" => &Rtl::<CartSurfaceNearestMatte>::PATHS,
-            "cart_surface_nearest_hemi_oct" => &Rtl::<CartSurfaceNearestHemiOct>::PATHS,
-            _ => &Rtl::<CartSurfaceNearestHemiOctMatte>::PATHS,
-        }
-    }
-    fn units(&self) -> &'static [&'static str] {
-        let v = self.variant;
-        // [filter?] decode, normalise, dot3, [gloss], blend
-        const ALL: [[[&[&str]; 2]; 2]; 2] = [
-            [
-                [
-                    &["bilinear", "cart_decode", "normalise", "dot3", "blend"],
-                    &["bilinear", "cart_decode", "normalise", "dot3", "gloss", "blend"],
-                ],
-                [
-                    &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "blend"],
-                    &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
-                ],
-            ],
-            [
-                [
-                    &["cart_decode", "normalise", "dot3", "blend"],
-                    &["cart_decode", "normalise", "dot3", "gloss", "blend"],
-                ],
-                [
-                    &["cart_decode_hemi_oct", "normalise", "dot3", "blend"],
-                    &["cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
-                ],
-            ],
-        ];
-        ALL[v.nearest as usize][(v.decode == Decode::HemiOct) as usize][v.gloss as usize]
+    fn row(&self) -> &'static Row {
+        self.row
     }
     fn describe(&self, scene: &Scene) -> String {
         let v = self.variant;
@@ -431,6 +269,7 @@ pub struct Polar {
     pub scale: Scale,
     pub pw: i64,
     pub h: f64,
+    pub(crate) row: &'static Row,
 }
 
 /// The polar set-up's own findings beside the common ones: the surface's light and which pixels filter across R's
@@ -444,6 +283,11 @@ pub struct PolarSetup {
 }
 
 impl Polar {
+    pub fn new(scale: Scale, pw: i64, h: f64) -> Polar {
+        let row = row_for(pipelines::polar(scale));
+        Polar { scale, pw, h, row }
+    }
+
     pub fn set_up(&self, scene: &Scene) -> PolarSetup {
         use polar_pipeline::input;
         let t = scene.tex;
@@ -480,23 +324,8 @@ impl Polar {
 }
 
 impl Pipeline for Polar {
-    fn label(&self) -> &'static str {
-        "polar"
-    }
-    fn model(&self) -> &'static UnitModel {
-        polar_pipeline::MODEL_FOR[self.scale as usize]
-    }
-    fn rtl(&self) -> &'static dyn RtlPaths {
-        match self.scale {
-            Scale::Seed => &Rtl::<rtl::polar_pipeline::PolarPipelineSeed>::PATHS,
-            Scale::Dc255 => &Rtl::<rtl::polar_pipeline::PolarPipelineDc>::PATHS,
-        }
-    }
-    fn units(&self) -> &'static [&'static str] {
-        match self.scale {
-            Scale::Seed => &["polar_shade", "power", "blend"],
-            Scale::Dc255 => &["polar_shade_dc", "power", "blend"],
-        }
+    fn row(&self) -> &'static Row {
+        self.row
     }
     fn describe(&self, scene: &Scene) -> String {
         let l = polar_encode::encode_light(self.scale, scene.light_dir(0.5, 0.5), self.h);
@@ -539,6 +368,7 @@ pub struct Height {
     pub dst: [i64; 3],
     /// the map's height bits: 8 (UQ6.2), or 4 (UQ3.1, ¶50), whose codes q enter the 8-bit datapath as 2q
     pub bits: u32,
+    pub(crate) row: &'static Row,
 }
 
 impl Height {
@@ -547,7 +377,8 @@ impl Height {
     }
 
     pub fn with_bits(scene: &Scene, bits: u32) -> Height {
-        Height { light: scene.light_dir(0.5, 0.5), src: scene.src, dst: scene.dst, bits }
+        let row = row_for(pipelines::height());
+        Height { light: scene.light_dir(0.5, 0.5), src: scene.src, dst: scene.dst, bits, row }
     }
 
     /// The scene's true heights at the texel centres (row-major), in texels.
@@ -590,17 +421,8 @@ impl Height {
 }
 
 impl Pipeline for Height {
-    fn label(&self) -> &'static str {
-        "height map"
-    }
-    fn model(&self) -> &'static UnitModel {
-        &height_pipeline::MODEL
-    }
-    fn rtl(&self) -> &'static dyn RtlPaths {
-        &Rtl::<rtl::height_pipeline::HeightPipeline>::PATHS
-    }
-    fn units(&self) -> &'static [&'static str] {
-        &["replicate", "blend_adjust", "bilinear", "tangent", "height_normal", "normalise"]
+    fn row(&self) -> &'static Row {
+        self.row
     }
     fn describe(&self, scene: &Scene) -> String {
         let (_, k) = Height::codes_in(scene, self.bits);
@@ -672,6 +494,7 @@ pub struct Palette {
     pub dst: [i64; 3],
     /// what the last `prepare` built: the palette's codes (for `normal`) and its quantization
     built: std::sync::RwLock<Option<std::sync::Arc<PaletteBuilt>>>,
+    pub(crate) row: &'static Row,
 }
 
 /// The quantization a `Palette` prepared: its codes, the map's distinct normals, the angle from each texel's normal
@@ -686,7 +509,8 @@ pub struct PaletteBuilt {
 impl Palette {
     pub fn new(s_n: usize, scene: &Scene) -> Palette {
         assert!((1..=4096).contains(&s_n), "the palette pipelines hold 1 to 4,096 normals (s_N = {s_n})");
-        Palette { s_n, src: scene.src, dst: scene.dst, built: Default::default() }
+        let row = row_for(pipelines::palette(s_n));
+        Palette { s_n, src: scene.src, dst: scene.dst, built: Default::default(), row }
     }
 
     /// The quantization of the last `prepare`.
@@ -708,30 +532,8 @@ impl Palette {
 }
 
 impl Pipeline for Palette {
-    fn label(&self) -> &'static str {
-        if self.s_n <= 256 {
-            "palette 256"
-        } else {
-            "palette 4096"
-        }
-    }
-    fn model(&self) -> &'static UnitModel {
-        if self.s_n <= 256 {
-            &palette_pipeline::MODEL
-        } else {
-            &palette_pipeline::MODEL_12
-        }
-    }
-    fn rtl(&self) -> &'static dyn RtlPaths {
-        use rtl::palette_pipeline::PalettePipeline;
-        if self.s_n <= 256 {
-            &Rtl::<PalettePipeline<8, 9>>::PATHS
-        } else {
-            &Rtl::<PalettePipeline<12, 13>>::PATHS
-        }
-    }
-    fn units(&self) -> &'static [&'static str] {
-        &["normalise", "dot3", "gloss", "palette_lookup"]
+    fn row(&self) -> &'static Row {
+        self.row
     }
     fn describe(&self, scene: &Scene) -> String {
         let what = match self.built() {
@@ -814,42 +616,64 @@ impl Pipeline for Palette {
     }
 }
 
+/// A frame's errors against the scene's ideal: the shade (8-bit units), the blended colour (worst channel), the
+/// normal's angle where the pipeline has one, and the shade against the ideal under the pipeline's one light where
+/// it lights a surface with one.
+pub struct Errors {
+    pub shade: vectors::stats::ErrorStats,
+    pub colour: vectors::stats::ErrorStats,
+    pub normal: Option<vectors::stats::ErrorStats>,
+    pub surface: Option<vectors::stats::ErrorStats>,
+}
+
+/// The model's frame against the ideal.
+pub fn errors(pipe: &dyn Pipeline, scene: &Scene, prep: &Prepared, model: &Image) -> Errors {
+    use vectors::stats::{angle_deg, ErrorStats};
+    let place = render::pixel_at(prep.size);
+    let where_ = |k: usize| place(prep.frame_index(k));
+    let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
+    let mut normal = pipe.normal(&prep.pixels()[0]).map(|_| ErrorStats::default());
+    let mut surface = pipe.surface_ideal(scene, &prep.ideal[0]).map(|_| ErrorStats::default());
+    for (k, (o, ideal)) in model.outs.iter().zip(&prep.ideal).enumerate() {
+        shade.add((pipe.shade(o) - ideal.shade).abs(), || where_(k));
+        colour.add(render::colour_err(pipe.colour(o), ideal.rgb), || where_(k));
+        if let (Some(s), Some(n)) = (normal.as_mut(), pipe.normal(&prep.pixels()[k])) {
+            s.add(angle_deg(n, ideal.normal), || where_(k));
+        }
+        if let (Some(s), Some(i)) = (surface.as_mut(), pipe.surface_ideal(scene, ideal)) {
+            s.add((pipe.shade(o) - i).abs(), || where_(k));
+        }
+    }
+    Errors { shade, colour, normal, surface }
+}
+
+/// A row's pipeline, built for a scene with these settings.
+pub fn build(row: &'static Row, scene: &Scene, s: &Settings) -> Box<dyn Pipeline> {
+    match row.family {
+        Family::Cartesian(decode) => Box::new(Cartesian { decode, gloss: row.serves.gloss, row }),
+        Family::CartSurface(variant) => Box::new(CartSurface { variant, row }),
+        Family::Polar(scale) => Box::new(Polar { scale, pw: s.pw, h: s.h, row }),
+        Family::Height => Box::new(Height { row, ..Height::with_bits(scene, s.height_bits) }),
+        Family::Palette => {
+            let p = Palette::new(s.palette.unwrap_or(1 << row.serves.index_bits), scene);
+            Box::new(Palette { row, ..p })
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn all() -> Vec<Box<dyn Pipeline>> {
-        let mut v: Vec<Box<dyn Pipeline>> = vec![
-            Box::new(Cartesian::glossy(Decode::Seed)),
-            Box::new(Cartesian::glossy(Decode::HemiOct)),
-            Box::new(Cartesian { decode: Decode::Seed, gloss: false }),
-            Box::new(Cartesian { decode: Decode::HemiOct, gloss: false }),
-            Box::new(Polar { scale: Scale::Seed, pw: 16, h: 1.0 }),
-            Box::new(Polar { scale: Scale::Dc255, pw: 16, h: 1.0 }),
-            Box::new(Height::new(&Scene::default())),
-            Box::new(Palette::new(256, &Scene::default())),
-            Box::new(Palette::new(4096, &Scene::default())),
-        ];
-        v.extend(cart_surface::Variant::ALL.map(|variant| Box::new(CartSurface { variant }) as Box<dyn Pipeline>));
-        v
+        pipelines::PIPELINES.iter().map(|r| build(r, &Scene::default(), &Settings::default())).collect()
     }
 
     #[test]
-    fn a_surface_pipeline_holds_the_units_its_variant_needs_and_no_others() {
-        let mut labels = std::collections::BTreeSet::new();
-        for variant in cart_surface::Variant::ALL {
-            let p = CartSurface { variant };
-            let has = |u: &str| p.units().contains(&u);
-            assert_eq!(has("gloss"), variant.gloss, "{variant:?}");
-            assert_eq!(has("bilinear"), !variant.nearest, "{variant:?}");
-            assert_eq!(
-                (has("cart_decode_hemi_oct"), has("cart_decode")),
-                (variant.decode == Decode::HemiOct, variant.decode == Decode::Seed)
-            );
-            assert!(!has("light_iter") && p.units().iter().filter(|u| **u == "normalise").count() == 1, "{variant:?}");
-            labels.insert(p.label());
+    fn a_built_pipeline_is_its_row() {
+        for (p, r) in all().iter().zip(pipelines::PIPELINES) {
+            assert_eq!((p.row().name, p.model().name, p.rtl().name()), (r.name, r.name, r.name));
         }
-        assert_eq!(labels.len(), 8);
     }
 
     /// The per-vertex pipeline without the gloss unit holds the full one's other units and renders a C = 0 scene
@@ -858,7 +682,7 @@ mod tests {
     fn a_matte_scene_gets_the_per_vertex_pipeline_without_gloss_and_the_same_picture() {
         for decode in [Decode::Seed, Decode::HemiOct] {
             let scene = Scene { size: 24, conc: 0, ..Scene::default() };
-            let (m, g) = (Cartesian { decode, gloss: false }, Cartesian::glossy(decode));
+            let (m, g) = (Cartesian::new(decode, false), Cartesian::glossy(decode));
             assert!(!m.units().contains(&"gloss") && g.units().contains(&"gloss"));
             assert_eq!(
                 m.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>(),
@@ -871,17 +695,6 @@ mod tests {
                 assert_eq!(a.len() + 1, b.len());
                 assert_eq!((m.model().exact)(a), (g.model().exact)(b));
                 assert_eq!(m.normal(a), g.normal(b));
-            }
-        }
-    }
-
-    #[test]
-    fn every_pipeline_names_units_of_the_table_and_its_rtl_is_its_model() {
-        for p in all() {
-            assert_eq!(p.rtl().name(), p.model().name);
-            assert!(vectors::unit::find(p.model().name).is_some(), "{} is in the unit table", p.model().name);
-            for u in p.units() {
-                assert!(vectors::unit::find(u).is_some(), "{}: unit {u} is not in the unit table", p.model().name);
             }
         }
     }

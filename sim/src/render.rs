@@ -3,7 +3,7 @@
 //! A frame's inputs may begin with a prologue (`Prepared::prologue`: vectors that set up the block's state, a
 //! palette's colour table): every path runs it first and leaves its outputs out of the image.
 
-use crate::pipeline::Prepared;
+use crate::prepared::Prepared;
 use rtl::stream::Runner;
 use rtl::StreamUnit;
 use std::path::Path;
@@ -12,7 +12,7 @@ use synth::cosim::{self, Simulator};
 use vectors::UnitModel;
 
 /// One path's frame: per pixel the pipeline's output vector (values, signed where the port is), and the time the
-/// path took. A pipeline turns an output vector into a shade and a colour (`crate::pipeline::Pipeline`).
+/// path took. A pipeline turns an output vector into a shade and a colour.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Image {
     pub size: usize,
@@ -155,45 +155,9 @@ pub fn heat(e: f64, max: f64) -> [u8; 3] {
     [c(t), c(t - 1.0), c(t - 2.0)]
 }
 
-/// A frame's errors against the scene's ideal: the shade (8-bit units), the blended colour (worst channel), the
-/// normal's angle where the pipeline has one, and the shade against the ideal under the pipeline's one light where
-/// it lights a surface with one.
-pub struct Errors {
-    pub shade: vectors::stats::ErrorStats,
-    pub colour: vectors::stats::ErrorStats,
-    pub normal: Option<vectors::stats::ErrorStats>,
-    pub surface: Option<vectors::stats::ErrorStats>,
-}
-
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
 pub fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] as f64 - ideal[c]).abs()).fold(0.0, f64::max)
-}
-
-/// The model's frame against the ideal.
-pub fn errors(
-    pipe: &dyn crate::pipeline::Pipeline,
-    scene: &crate::scene::Scene,
-    prep: &Prepared,
-    model: &Image,
-) -> Errors {
-    use vectors::stats::{angle_deg, ErrorStats};
-    let place = pixel_at(prep.size);
-    let where_ = |k: usize| place(prep.frame_index(k));
-    let (mut shade, mut colour) = (ErrorStats::default(), ErrorStats::default());
-    let mut normal = pipe.normal(&prep.pixels()[0]).map(|_| ErrorStats::default());
-    let mut surface = pipe.surface_ideal(scene, &prep.ideal[0]).map(|_| ErrorStats::default());
-    for (k, (o, ideal)) in model.outs.iter().zip(&prep.ideal).enumerate() {
-        shade.add((pipe.shade(o) - ideal.shade).abs(), || where_(k));
-        colour.add(colour_err(pipe.colour(o), ideal.rgb), || where_(k));
-        if let (Some(s), Some(n)) = (normal.as_mut(), pipe.normal(&prep.pixels()[k])) {
-            s.add(angle_deg(n, ideal.normal), || where_(k));
-        }
-        if let (Some(s), Some(i)) = (surface.as_mut(), pipe.surface_ideal(scene, ideal)) {
-            s.add((pipe.shade(o) - i).abs(), || where_(k));
-        }
-    }
-    Errors { shade, colour, normal, surface }
 }
 
 /// A rectangle of a frame, in pixels.

@@ -21,7 +21,7 @@ pub struct Scene {
     /// A user's height map in place of the procedural one (`tex` is then its side).
     pub map: Option<std::sync::Arc<crate::heightmap::HeightMap>>,
     /// A user's normal map in place of the heights' normals (`tex` is then its side).
-    pub normal_map: Option<std::sync::Arc<NormalMap>>,
+    pub normal_map: Option<std::sync::Arc<crate::heightmap::NormalMap>>,
     /// A directional light (unit, towards the light) in place of the point light at `light_pos`.
     pub directional: Option<[f64; 3]>,
     /// One light for the whole surface: every vertex gets the direction at the quad's centre (on a curved surface,
@@ -41,14 +41,6 @@ pub struct Curved {
     pub view: crate::surface::View,
     /// the map's repeats along u and v
     pub repeat: [usize; 2],
-}
-
-/// A tangent-space normal map in the project's frame (x along u, y out of the surface, z along v, down the image):
-/// `side` × `side` unit normals, row-major.
-#[derive(Clone, Debug, PartialEq)]
-pub struct NormalMap {
-    pub side: usize,
-    pub n: Vec<[f64; 3]>,
 }
 
 impl Default for Scene {

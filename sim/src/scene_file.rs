@@ -40,14 +40,14 @@
 //! # weight = 1.0                  # polar: h, 0 to 1
 //! ```
 
+use crate::pipelines::{Choices, Row, Settings};
+pub use crate::pipelines::{Encoding, Filter, Per};
 use crate::scene::Scene;
 use serde::Deserialize;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use toml::Spanned;
-use vectors::cart_pipeline::Decode;
-use vectors::polar_encode::Scale;
 
 /// An integer range-checked as it is read; the error names the range and the value.
 macro_rules! ranged {
@@ -255,45 +255,12 @@ pub enum Green {
     Directx,
 }
 
-/// The bump map's encoding, which chooses the pipeline: seed 000's Cartesian texels (the seed's, or hemi-oct with
-/// its decode), seed 000's polar texels (the seed's 256 steps or the Dreamcast toolchains' 255), seed 001's 8-bit
-/// heights, seed 004's palette.
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
-#[serde(rename_all = "snake_case")]
-pub enum Encoding {
-    #[default]
-    Seed,
-    HemiOct,
-    Polar,
-    PolarDc255,
-    Heights,
-    Palette,
-}
-
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
-#[serde(rename_all = "snake_case")]
-pub enum Filter {
-    Bilinear,
-    /// the texel nearest the sample, no filter (the Cartesian pipelines with one light per surface)
-    Nearest,
-}
-
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
 #[serde(rename_all = "snake_case")]
 pub enum LightKind {
     #[default]
     Point,
     Directional,
-}
-
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
-#[serde(rename_all = "snake_case")]
-pub enum Per {
-    /// one light direction per vertex, interpolated per pixel (the light iterator)
-    #[default]
-    Vertex,
-    /// one light for the whole surface, its direction at the surface's centre
-    Surface,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -354,33 +321,21 @@ pub struct SceneFile {
     pub material: MaterialSpec,
 }
 
-/// The pipeline a scene is rendered by, with its settings.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum PipelineKind {
-    /// lights per vertex, interpolated per pixel; with the gloss unit unless C = 0
-    Cartesian {
-        decode: Decode,
-        gloss: bool,
-    },
-    /// one light per surface: `cart_surface` and its variants (no gloss unit at C = 0, bilinear or nearest)
-    CartSurface(vectors::cart_surface::Variant),
-    /// the angle scale, the power unit's pw = 4p, and the weight h
-    Polar {
-        scale: Scale,
-        pw: i64,
-        h: f64,
-    },
-    Height,
-    /// s_N
-    Palette(usize),
-}
-
-/// A scene read and checked: the scene, the pipeline for it, and what the reading has to tell.
+/// A scene read and checked: the scene, the pipeline for it (its row of the table, and what it is built with), and
+/// what the reading has to tell.
 pub struct SceneSpec {
     pub name: String,
     pub scene: Scene,
-    pub pipeline: PipelineKind,
+    pub pipeline: &'static Row,
+    pub settings: Settings,
     pub notes: Vec<String>,
+}
+
+impl SceneSpec {
+    /// The scene's pipeline, built for it.
+    pub fn build(&self) -> Box<dyn crate::pipeline::Pipeline> {
+        crate::pipeline::build(self.pipeline, &self.scene, &self.settings)
+    }
 }
 
 /// A curved surface's point light where the scene gives none: above, to the left and in front of the object.
@@ -621,34 +576,45 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             "[bump] filter = \"nearest\": only the Cartesian encodings (seed, hemi_oct) have a nearest-texel pipeline",
         ));
     }
-    let pipeline = match encoding {
+    // the choices that pick the pipeline, as the pipeline holds them (`Choices`)
+    let mut settings = Settings::default();
+    let one = |encoding, gloss, index_bits| Choices {
+        encoding,
+        per: Per::Surface,
+        gloss,
+        filter: Filter::Bilinear,
+        index_bits,
+    };
+    let choices = match encoding {
         Encoding::Seed | Encoding::HemiOct => {
             no(power, "power", "Cartesian")?;
             no(weight, "weight", "Cartesian")?;
-            let decode = if encoding == Encoding::Seed { Decode::Seed } else { Decode::HemiOct };
             // a gloss unit only where the material has gloss (C = 0 gives P = X)
             let gloss = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0) != 0;
-            if per == Some(Per::Surface) {
-                PipelineKind::CartSurface(vectors::cart_surface::Variant { decode, nearest, gloss })
-            } else if nearest {
+            let per = per.unwrap_or(Per::Vertex);
+            if per == Per::Vertex && nearest {
                 return Err(at.err(filter_span.unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": the nearest-texel pipelines light a surface with one light (per = \"surface\" under [light])"));
-            } else {
-                PipelineKind::Cartesian { decode, gloss }
             }
+            let filter = if nearest { Filter::Nearest } else { Filter::Bilinear };
+            Choices { encoding, per, gloss, filter, index_bits: 0 }
         }
         Encoding::Polar | Encoding::PolarDc255 => {
             one_light("polar")?;
             unused(gloss.clone(), "[material] gloss: the polar pipeline has no gloss unit (its power unit is the specular term: set power)")?;
-            let pw = mat.power.as_ref().map_or(16, |p| (p.get_ref().0 * 4.0) as i64);
-            let h = mat.weight.as_ref().map_or(1.0, |w| w.get_ref().0);
-            PipelineKind::Polar { scale: if encoding == Encoding::Polar { Scale::Seed } else { Scale::Dc255 }, pw, h }
+            if let Some(p) = &mat.power {
+                settings.pw = (p.get_ref().0 * 4.0) as i64;
+            }
+            if let Some(w) = &mat.weight {
+                settings.h = w.get_ref().0;
+            }
+            one(encoding, false, 0)
         }
         Encoding::Heights => {
             one_light("height")?;
             no(gloss.clone(), "gloss", "height")?;
             no(power, "power", "height")?;
             no(weight, "weight", "height")?;
-            PipelineKind::Height
+            one(encoding, false, 0)
         }
         Encoding::Palette => {
             one_light("palette")?;
@@ -657,9 +623,13 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             let Some(n) = &bump.palette else {
                 return Err(at.err(bump_span, "[bump] encoding = \"palette\" needs palette = s_N (1 to 4,096)"));
             };
-            PipelineKind::Palette(n.get_ref().0 as usize)
+            let s_n = n.get_ref().0 as usize;
+            settings.palette = Some(s_n);
+            one(encoding, true, crate::pipelines::palette_index_bits(s_n))
         }
     };
+    let pipeline = crate::pipelines::choose(&choices)
+        .ok_or_else(|| at.err(bump_span.clone(), format!("no pipeline serves these choices: {choices:?}")))?;
     if let Some(g) = &mat.gloss {
         scene.conc = g.get_ref().0;
     }
@@ -669,9 +639,24 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     if let Some(c) = mat.dst {
         scene.dst = c.map(|b| b.0);
     }
-    scene.per_surface = !matches!(pipeline, PipelineKind::Cartesian { .. });
+    scene.per_surface = pipeline.serves.per == Per::Surface;
     let name = f.name.unwrap_or_else(|| at.file.to_string());
-    Ok(SceneSpec { name, scene, pipeline, notes })
+    Ok(SceneSpec { name, scene, pipeline, settings, notes })
+}
+
+/// The demo's scene, embedded: `scenes/demo.toml`, a torus.
+pub const DEMO: &str = include_str!("../../scenes/demo.toml");
+/// The quad every pipeline is compared on (the height-map and palette pipelines draw the quad only): `scenes/quad.toml`.
+pub const QUAD: &str = include_str!("../../scenes/quad.toml");
+
+/// The embedded demo scene as read, with the pipeline it names.
+pub fn demo() -> Result<SceneSpec, String> {
+    parse(DEMO, "scenes/demo.toml (embedded)", Path::new("."))
+}
+
+/// The embedded quad as read.
+pub fn quad() -> Result<SceneSpec, String> {
+    parse(QUAD, "scenes/quad.toml (embedded)", Path::new("."))
 }
 
 #[cfg(test)]

@@ -35,8 +35,8 @@ fn agree(p: &dyn Pipeline) {
 fn every_pipeline_renders_bit_identically_in_the_three_paths() {
     agree(&Cartesian::glossy(Decode::Seed));
     agree(&Cartesian::glossy(Decode::HemiOct));
-    agree(&Polar { scale: Scale::Seed, pw: 16, h: 1.0 });
-    agree(&Polar { scale: Scale::Dc255, pw: 16, h: 1.0 });
+    agree(&Polar::new(Scale::Seed, 16, 1.0));
+    agree(&Polar::new(Scale::Dc255, 16, 1.0));
     agree(&Height::new(&scene()));
     agree(&Palette::new(256, &scene()));
     agree(&Palette::new(4096, &scene()));
@@ -60,7 +60,7 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 #[test]
 fn filtering_s_and_r_as_numbers_goes_wrong_across_the_wrap() {
-    let p = Polar { scale: Scale::Seed, pw: 4, h: 1.0 }.set_up(&scene());
+    let p = Polar::new(Scale::Seed, 4, 1.0).set_up(&scene());
     let (mut wrap, mut rest) = ((0.0, 0), (0.0, 0));
     for k in 0..SIZE * SIZE {
         let shade = vectors::polar_pipeline::exact_trace(Scale::Seed, &p.prepared.inputs[k]).shade as f64;
@@ -78,7 +78,7 @@ fn filtering_s_and_r_as_numbers_goes_wrong_across_the_wrap() {
 fn a_light_below_the_horizon_is_moved_onto_it_and_the_polar_path_pays_for_it() {
     let low = Scene { light_pos: [-0.6, -0.12, 0.5], ..scene() };
     let c = Cartesian::glossy(Decode::Seed).prepare(&low);
-    let p = Polar { scale: Scale::Seed, pw: 4, h: 1.0 }.set_up(&low);
+    let p = Polar::new(Scale::Seed, 4, 1.0).set_up(&low);
     assert!(p.light.moved && p.light.t == 0.0 && p.light.k2 == 0);
     let (mut ce, mut pe) = (0.0, 0.0);
     for k in 0..SIZE * SIZE {

@@ -2,9 +2,21 @@
 //! the line:column or the map's file; the parser and the PNG loader survive 100,000 generated and corrupted inputs
 //! each without a panic.
 use sim::scene::Scene;
-use sim::scene_file::{self, PipelineKind};
+use sim::scene_file;
 use std::path::{Path, PathBuf};
 use vectors::cart_pipeline::Decode;
+
+/// The name of the per-vertex Cartesian pipeline with this decode, with or without the gloss unit.
+fn cart(decode: Decode, gloss: bool) -> String {
+    let hemi = if decode == Decode::HemiOct { "_hemi_oct" } else { "" };
+    format!("cart_pipeline{hemi}{}", if gloss { "" } else { "_matte" })
+}
+
+/// The name of the Cartesian pipeline with one light per surface of this variant.
+fn surface(decode: Decode, nearest: bool, gloss: bool) -> String {
+    let hemi = if decode == Decode::HemiOct { "_hemi_oct" } else { "" };
+    format!("cart_surface{}{hemi}{}", if nearest { "_nearest" } else { "" }, if gloss { "" } else { "_matte" })
+}
 
 fn scenes_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes")
@@ -40,27 +52,26 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         (s.size, s.tex, s.light_pos, s.conc, s.src, s.dst, s.relief),
         (d.size, d.tex, d.light_pos, d.conc, d.src, d.dst, d.relief)
     );
-    assert_eq!(quad.pipeline, PipelineKind::Cartesian { decode: Decode::Seed, gloss: true });
+    assert_eq!(quad.pipeline.name, cart(Decode::Seed, true));
     assert!(!quad.scene.per_surface && quad.scene.curved.is_none());
     let demo = scene_file::load(&scenes_dir().join("demo.toml")).unwrap();
     // C = 0: the per-vertex pipeline without its gloss unit
-    assert_eq!(demo.pipeline, PipelineKind::Cartesian { decode: Decode::Seed, gloss: false });
+    assert_eq!(demo.pipeline.name, cart(Decode::Seed, false));
     assert!(matches!(demo.scene.curved.map(|c| c.shape), Some(sim::surface::Shape::Torus { .. })));
     // each pipeline has its scene
-    let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline;
-    assert_eq!(kind("hemi_oct.toml"), PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: true });
-    assert!(matches!(kind("polar.toml"), PipelineKind::Polar { pw: 16, .. }));
-    assert_eq!(kind("height.toml"), PipelineKind::Height);
-    assert_eq!(kind("palette.toml"), PipelineKind::Palette(256));
+    let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline.name;
+    assert_eq!(kind("hemi_oct.toml"), cart(Decode::HemiOct, true));
+    assert_eq!(kind("polar.toml"), "polar_pipeline");
+    assert_eq!(scene_file::load(&scenes_dir().join("polar.toml")).unwrap().settings.pw, 16);
+    assert_eq!(kind("height.toml"), "height_pipeline");
+    assert_eq!(kind("palette.toml"), "palette_pipeline");
+    assert_eq!(scene_file::load(&scenes_dir().join("palette.toml")).unwrap().settings.palette, Some(256));
     // the curved ones
     let torus = scene_file::load(&scenes_dir().join("torus.toml")).unwrap().scene;
     let c = torus.curved.expect("a torus");
     assert_eq!(c.shape, sim::surface::Shape::Torus { minor: 0.32 });
     assert_eq!((c.segments, c.repeat), ([72, 36], [6, 2]));
-    assert_eq!(
-        kind("torus.toml"),
-        PipelineKind::CartSurface(vectors::cart_surface::Variant { decode: Decode::Seed, nearest: false, gloss: true })
-    );
+    assert_eq!(kind("torus.toml"), surface(Decode::Seed, false, true));
     assert!(scene_file::load(&scenes_dir().join("sphere_polar.toml")).unwrap().scene.curved.is_some());
 }
 
@@ -102,29 +113,15 @@ fn a_directional_light_for_the_surface_lights_every_vertex_alike() {
 
 #[test]
 fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_material_and_filter_need() {
-    use vectors::cart_surface::Variant;
     let scene = |enc: &str, filter: &str, per: &str, gloss: &str| {
         format!("size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"{enc}\"\n{filter}[light]\nper = \"{per}\"\n[material]\n{gloss}")
     };
-    let kind = |t: String| parse(&t).unwrap_or_else(|e| panic!("{e}")).pipeline;
-    let v = |decode, nearest, gloss| PipelineKind::CartSurface(Variant { decode, nearest, gloss });
-    assert_eq!(
-        kind(scene("seed", "", "vertex", "gloss = 0\n")),
-        PipelineKind::Cartesian { decode: Decode::Seed, gloss: false }
-    );
-    assert_eq!(
-        kind(scene("seed", "", "vertex", "gloss = 1\n")),
-        PipelineKind::Cartesian { decode: Decode::Seed, gloss: true }
-    );
-    assert_eq!(
-        kind(scene("hemi_oct", "", "vertex", "")),
-        PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: true },
-        "the default gloss is 96"
-    );
-    assert_eq!(
-        kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")),
-        PipelineKind::Cartesian { decode: Decode::HemiOct, gloss: false }
-    );
+    let kind = |t: String| parse(&t).unwrap_or_else(|e| panic!("{e}")).pipeline.name;
+    let v = surface;
+    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 0\n")), cart(Decode::Seed, false));
+    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 1\n")), cart(Decode::Seed, true));
+    assert_eq!(kind(scene("hemi_oct", "", "vertex", "")), cart(Decode::HemiOct, true), "the default gloss is 96");
+    assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), cart(Decode::HemiOct, false));
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
     assert_eq!(kind(scene("seed", "", "surface", "")), v(Decode::Seed, false, true), "the default gloss is 96");
@@ -144,9 +141,9 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         &["only the Cartesian encodings"],
     );
     refused(&scene("seed", "filter = \"cubic\"\n", "surface", ""), "s.toml:5:10:", &["bilinear", "nearest"]);
-    assert_eq!(scene_file::load(&scenes_dir().join("up5k.toml")).unwrap().pipeline, v(Decode::Seed, true, false));
+    assert_eq!(scene_file::load(&scenes_dir().join("up5k.toml")).unwrap().pipeline.name, v(Decode::Seed, true, false));
     assert_eq!(
-        scene_file::load(&scenes_dir().join("directional.toml")).unwrap().pipeline,
+        scene_file::load(&scenes_dir().join("directional.toml")).unwrap().pipeline.name,
         v(Decode::Seed, false, false)
     );
 }

@@ -1,5 +1,7 @@
-//! Printed tables: accuracy (error with where its max occurs) and synthesis figures.
+//! `bumprtl accuracy`: exact against ideal for every unit (error with where its max occurs), the encoders' angular
+//! error, and the LUT-size tables of the sine/cosine units (against their yosys cost, when asked).
 
+use crate::blocks::{SynthFn, COS_SIGN_BLOCKS, SINCOS_BLOCKS};
 use vectors::stats::ErrorStats;
 
 fn stat_line(unit: &str, metric: &str, s: &ErrorStats) {
@@ -79,24 +81,6 @@ pub fn accuracy(directions: usize, samples: usize) {
     }
 }
 
-pub type SynthFn = fn(&std::path::Path, synth::fpga::Family) -> Result<synth::fpga::Cells, String>;
-
-macro_rules! sincos_blocks {
-    ($(($tb:literal, $w:literal)),* $(,)?) => {
-        &[$(($tb, $w, synth::fpga::synth_unit::<rtl::sincos::SinCos<$tb, $w>> as SynthFn)),*]
-    };
-}
-
-macro_rules! cos_sign_blocks {
-    ($(($tb:literal, $w:literal)),* $(,)?) => {
-        &[$(($tb, $w, synth::fpga::synth_unit::<rtl::cos_sign::CosSign<$tb, $w>> as SynthFn)),*]
-    };
-}
-
-/// The rtl block of every size of each LUT-size table, from the same list as the model's `LUT_SIZES`.
-pub const SINCOS_BLOCKS: &[(u32, u32, SynthFn)] = vectors::sincos_lut_sizes!(sincos_blocks);
-const COS_SIGN_BLOCKS: &[(u32, u32, SynthFn)] = vectors::cos_sign_lut_sizes!(cos_sign_blocks);
-
 /// The LUT-size tables of the sine/cosine unit [10] and the cosine unit with sign [18]: entries and width against
 /// error (every input) and, when `cost` is on, against what yosys makes of the rtl block of that size for iCE40.
 pub fn lut_sizes(cost: bool, dir: &std::path::Path) -> Result<(), String> {
@@ -148,57 +132,4 @@ fn lut_row(r: &vectors::sincos::SizeRow, c: Option<&synth::fpga::Cells>) {
         f(c.map(|c| c.ff)),
         f(c.map(|c| c.bram))
     );
-}
-
-/// One unit's figures on its part, each resource as a share of the part.
-pub fn synth_row(r: &synth::fpga::SynthReport) {
-    let p = r.part();
-    let [lut, ff, dsp, bram, carry] = p.family.cells();
-    println!("{} on the {}", r.unit, p.title);
-    if !r.choice.is_empty() {
-        println!("  chosen because {}", r.choice);
-    }
-    let share = |n: u64, of: u64| format!("{n:>6} of {of:>6}  {:>5.1} %", 100.0 * n as f64 / of as f64);
-    println!("  {lut:<12} {}", share(r.cells.lut4, p.lut4));
-    println!("  {ff:<12} {}", share(r.cells.ff, p.ff));
-    println!("  {dsp:<12} {}", share(r.cells.dsp, p.dsp));
-    println!("  {bram:<12} {}", share(r.cells.bram, p.bram));
-    println!("  {carry:<12} {:>6}", r.cells.carry);
-    if r.cells.soft > 0 {
-        println!("  {} of its products built in logic, the smallest first, to fit the {} {dsp}", r.cells.soft, p.dsp);
-    }
-    match (&r.place_error, r.lc, r.fmax_mhz) {
-        (Some(e), _, _) => println!("  does not place: {e}"),
-        (None, lc, f) => {
-            if let Some(lc) = lc {
-                println!("  {:<12} {}  (placed, with the serial I/O wrapper)", p.logic_cell_name(), share(lc, p.lut4));
-            }
-            println!(
-                "  fmax         {:>6} MHz  latency {} clocks, one pixel per clock",
-                f.map(|x| format!("{x:.1}")).unwrap_or("-".into()),
-                r.latency
-            );
-        }
-    }
-    if let Some(c) = &r.critical {
-        println!("  critical path {c}");
-    }
-    blocks_line(&r.blocks, p.family, 2);
-}
-
-/// The hard blocks by top-level instance: "unit$0 3, unit$1 3, …" DSP, then BRAM.
-pub fn blocks_line(b: &synth::fpga::Blocks, family: synth::fpga::Family, indent: usize) {
-    let [.., dsp, bram, _] = family.cells();
-    for (k, name) in [(0, dsp), (1, bram)] {
-        let list: Vec<String> = b
-            .by_instance
-            .iter()
-            .map(|(i, d, m)| (i, [*d, *m][k]))
-            .filter(|x| x.1 > 0)
-            .map(|(i, n)| format!("{i} {n}"))
-            .collect();
-        if !list.is_empty() {
-            println!("{:indent$}{name:<12} by instance: {}", "", list.join(", "));
-        }
-    }
 }

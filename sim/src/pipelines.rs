@@ -1,0 +1,427 @@
+//! The table of pipelines: one row per rtl pipeline the project builds, with everything that names it (its unit
+//! name, family, label, the units it holds), the scene choices it serves, its bit-exact model and its rtl block.
+//! Every consumer chooses through it: the scene reader (`crate::scene_file`) turns a scene's choices into a row
+//! with `choose`, the command line's `render`, `demo`, `verilog --scene`, `synth --scene` and `report` read the
+//! row, and `crate::pipeline::build` makes a row's `Pipeline` (the family's behaviour: set-up, shade, colour).
+//!
+//! A new pipeline is its rtl top, its model, its test and its row here (and, for a new family, its `Pipeline`
+//! implementation). A test keeps every row reachable from exactly one combination of scene choices.
+
+use crate::rtl_paths::{Rtl, RtlPaths};
+use crate::scene::Scene;
+use serde::Deserialize;
+use vectors::cart_pipeline::Decode;
+use vectors::cart_surface::Variant;
+use vectors::polar_encode::Scale;
+use vectors::UnitModel;
+
+/// The bump map's encoding, which chooses the family: seed 000's Cartesian texels (the seed's, or hemi-oct with
+/// its decode), seed 000's polar texels (the seed's 256 steps or the Dreamcast toolchains' 255), seed 001's 8-bit
+/// heights, seed 004's palette.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum Encoding {
+    #[default]
+    Seed,
+    HemiOct,
+    Polar,
+    PolarDc255,
+    Heights,
+    Palette,
+}
+
+/// How the texels are filtered.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum Filter {
+    #[default]
+    Bilinear,
+    /// the texel nearest the sample, no filter (the Cartesian pipelines with one light per surface)
+    Nearest,
+}
+
+/// Where the light is taken.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum Per {
+    /// one light direction per vertex, interpolated per pixel (the light iterator)
+    #[default]
+    Vertex,
+    /// one light for the whole surface, its direction at the surface's centre
+    Surface,
+}
+
+/// The scene choices that pick a pipeline. The scene reader fills them as the chosen pipeline holds them: the
+/// polar, height and palette pipelines light a surface with one light and filter bilinearly (the palette's
+/// nearest texel is its own method, not a choice), the palette pipelines always hold the gloss unit, the polar and
+/// height ones never; `index_bits` is the palette's (8: s_N ≤ 256, 12: ≤ 4,096) and 0 elsewhere.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Choices {
+    pub encoding: Encoding,
+    pub per: Per,
+    pub gloss: bool,
+    pub filter: Filter,
+    pub index_bits: u32,
+}
+
+/// A pipeline family: the rows that share one `Pipeline` implementation, with the family's own parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// seed 000's second embodiment, lights per vertex
+    Cartesian(Decode),
+    /// seed 000's Cartesian path with one light per surface
+    CartSurface(Variant),
+    /// seed 000's first embodiment (FIG. 3)
+    Polar(Scale),
+    /// seed 001's height map
+    Height,
+    /// seed 004 (Tarini et al.)
+    Palette,
+}
+
+/// One pipeline.
+pub struct Row {
+    /// the rtl unit's name (the model's and the block's)
+    pub name: &'static str,
+    pub family: Family,
+    /// a short name for tables
+    pub label: &'static str,
+    /// the units it holds, in dataflow order, by their names in the unit table
+    pub units: &'static [&'static str],
+    /// the one combination of scene choices it serves
+    pub serves: Choices,
+    pub model: &'static UnitModel,
+    pub rtl: &'static dyn RtlPaths,
+}
+
+impl std::fmt::Debug for Row {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Row({})", self.name)
+    }
+}
+
+impl PartialEq for Row {
+    fn eq(&self, other: &Row) -> bool {
+        self.name == other.name
+    }
+}
+
+impl Row {
+    /// Whether the pipeline can render the scene as the scene asks: the height and palette pipelines only a quad
+    /// (an address unit walking one flat map; a colour table of one light a frame), a Cartesian pipeline without
+    /// the gloss unit only a matte material (C = 0).
+    pub fn renders(&self, scene: &Scene) -> bool {
+        match self.family {
+            Family::Cartesian(_) | Family::CartSurface(_) => self.serves.gloss || scene.conc == 0,
+            Family::Polar(_) => true,
+            Family::Height | Family::Palette => scene.curved.is_none(),
+        }
+    }
+}
+
+/// The row that serves these choices, if one does.
+pub fn choose(c: &Choices) -> Option<&'static Row> {
+    PIPELINES.iter().find(|r| r.serves == *c)
+}
+
+/// The row of the pipeline called `name`.
+pub fn named(name: &str) -> Option<&'static Row> {
+    PIPELINES.iter().find(|r| r.name == name)
+}
+
+/// A Cartesian pipeline's choices: its texels, where its light is taken, its gloss unit, its filter.
+pub const fn cartesian(decode: Decode, per: Per, gloss: bool, filter: Filter) -> Choices {
+    let encoding = match decode {
+        Decode::Seed => Encoding::Seed,
+        Decode::HemiOct => Encoding::HemiOct,
+    };
+    Choices { encoding, per, gloss, filter, index_bits: 0 }
+}
+
+/// A Cartesian pipeline with one light per surface: its variant's choices.
+pub const fn surface(v: Variant) -> Choices {
+    cartesian(v.decode, Per::Surface, v.gloss, if v.nearest { Filter::Nearest } else { Filter::Bilinear })
+}
+
+const fn one_light(encoding: Encoding, gloss: bool, index_bits: u32) -> Choices {
+    Choices { encoding, per: Per::Surface, gloss, filter: Filter::Bilinear, index_bits }
+}
+
+/// The polar pipeline's choices at this angle scale.
+pub const fn polar(scale: Scale) -> Choices {
+    let encoding = match scale {
+        Scale::Seed => Encoding::Polar,
+        Scale::Dc255 => Encoding::PolarDc255,
+    };
+    one_light(encoding, false, 0)
+}
+
+/// The height pipeline's choices.
+pub const fn height() -> Choices {
+    one_light(Encoding::Heights, false, 0)
+}
+
+/// The palette pipeline's choices for a palette of `s_n` normals.
+pub fn palette(s_n: usize) -> Choices {
+    one_light(Encoding::Palette, true, palette_index_bits(s_n))
+}
+
+use vectors::cart_pipeline as cp;
+use vectors::cart_surface as cs;
+
+const fn cart(
+    name: &'static str,
+    label: &'static str,
+    decode: Decode,
+    gloss: bool,
+    units: &'static [&'static str],
+    model: &'static UnitModel,
+    rtl: &'static dyn RtlPaths,
+) -> Row {
+    let serves = cartesian(decode, Per::Vertex, gloss, Filter::Bilinear);
+    Row { name, family: Family::Cartesian(decode), label, units, serves, model, rtl }
+}
+
+const fn surf(
+    name: &'static str,
+    label: &'static str,
+    v: Variant,
+    units: &'static [&'static str],
+    model: &'static UnitModel,
+    rtl: &'static dyn RtlPaths,
+) -> Row {
+    Row { name, family: Family::CartSurface(v), label, units, serves: surface(v), model, rtl }
+}
+
+const S: Decode = Decode::Seed;
+const H: Decode = Decode::HemiOct;
+const fn v(decode: Decode, nearest: bool, gloss: bool) -> Variant {
+    Variant { decode, nearest, gloss }
+}
+
+/// Every pipeline, in the report's order.
+pub static PIPELINES: &[Row] = &[
+    cart(
+        "cart_pipeline",
+        "Cartesian",
+        S,
+        true,
+        &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
+        &cp::MODEL,
+        &Rtl::<rtl::cart_pipeline::CartPipeline>::PATHS,
+    ),
+    cart(
+        "cart_pipeline_hemi_oct",
+        "hemi-oct",
+        H,
+        true,
+        &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"],
+        &cp::MODEL_HEMI_OCT,
+        &Rtl::<rtl::cart_pipeline::CartPipelineHemiOct>::PATHS,
+    ),
+    cart(
+        "cart_pipeline_matte",
+        "Cartesian, matte",
+        S,
+        false,
+        &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
+        &cp::MODEL_MATTE,
+        &Rtl::<rtl::cart_pipeline::CartPipelineMatte>::PATHS,
+    ),
+    cart(
+        "cart_pipeline_hemi_oct_matte",
+        "hemi-oct, matte",
+        H,
+        false,
+        &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "blend"],
+        &cp::MODEL_HEMI_OCT_MATTE,
+        &Rtl::<rtl::cart_pipeline::CartPipelineHemiOctMatte>::PATHS,
+    ),
+    surf(
+        "cart_surface",
+        "Cartesian, one light",
+        v(S, false, true),
+        &["bilinear", "cart_decode", "normalise", "dot3", "gloss", "blend"],
+        &cs::MODEL,
+        &Rtl::<rtl::cart_surface::CartSurface>::PATHS,
+    ),
+    surf(
+        "cart_surface_matte",
+        "Cartesian, one light, matte",
+        v(S, false, false),
+        &["bilinear", "cart_decode", "normalise", "dot3", "blend"],
+        &cs::MODEL_MATTE,
+        &Rtl::<rtl::cart_surface::CartSurfaceMatte>::PATHS,
+    ),
+    surf(
+        "cart_surface_hemi_oct",
+        "hemi-oct, one light",
+        v(H, false, true),
+        &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
+        &cs::MODEL_HEMI_OCT,
+        &Rtl::<rtl::cart_surface::CartSurfaceHemiOct>::PATHS,
+    ),
+    surf(
+        "cart_surface_hemi_oct_matte",
+        "hemi-oct, one light, matte",
+        v(H, false, false),
+        &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "blend"],
+        &cs::MODEL_HEMI_OCT_MATTE,
+        &Rtl::<rtl::cart_surface::CartSurfaceHemiOctMatte>::PATHS,
+    ),
+    surf(
+        "cart_surface_nearest",
+        "Cartesian, nearest, one light",
+        v(S, true, true),
+        &["cart_decode", "normalise", "dot3", "gloss", "blend"],
+        &cs::MODEL_NEAREST,
+        &Rtl::<rtl::cart_surface::CartSurfaceNearest>::PATHS,
+    ),
+    surf(
+        "cart_surface_nearest_matte",
+        "Cartesian, nearest, one light, matte",
+        v(S, true, false),
+        &["cart_decode", "normalise", "dot3", "blend"],
+        &cs::MODEL_NEAREST_MATTE,
+        &Rtl::<rtl::cart_surface::CartSurfaceNearestMatte>::PATHS,
+    ),
+    surf(
+        "cart_surface_nearest_hemi_oct",
+        "hemi-oct, nearest, one light",
+        v(H, true, true),
+        &["cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
+        &cs::MODEL_NEAREST_HEMI_OCT,
+        &Rtl::<rtl::cart_surface::CartSurfaceNearestHemiOct>::PATHS,
+    ),
+    surf(
+        "cart_surface_nearest_hemi_oct_matte",
+        "hemi-oct, nearest, one light, matte",
+        v(H, true, false),
+        &["cart_decode_hemi_oct", "normalise", "dot3", "blend"],
+        &cs::MODEL_NEAREST_HEMI_OCT_MATTE,
+        &Rtl::<rtl::cart_surface::CartSurfaceNearestHemiOctMatte>::PATHS,
+    ),
+    Row {
+        name: "polar_pipeline",
+        family: Family::Polar(Scale::Seed),
+        label: "polar",
+        units: &["polar_shade", "power", "blend"],
+        serves: one_light(Encoding::Polar, false, 0),
+        model: &vectors::polar_pipeline::MODEL,
+        rtl: &Rtl::<rtl::polar_pipeline::PolarPipelineSeed>::PATHS,
+    },
+    Row {
+        name: "polar_pipeline_dc",
+        family: Family::Polar(Scale::Dc255),
+        label: "polar",
+        units: &["polar_shade_dc", "power", "blend"],
+        serves: one_light(Encoding::PolarDc255, false, 0),
+        model: &vectors::polar_pipeline::MODEL_DC,
+        rtl: &Rtl::<rtl::polar_pipeline::PolarPipelineDc>::PATHS,
+    },
+    Row {
+        name: "height_pipeline",
+        family: Family::Height,
+        label: "height map",
+        units: &["replicate", "blend_adjust", "bilinear", "tangent", "height_normal", "normalise"],
+        serves: one_light(Encoding::Heights, false, 0),
+        model: &vectors::height_pipeline::MODEL,
+        rtl: &Rtl::<rtl::height_pipeline::HeightPipeline>::PATHS,
+    },
+    Row {
+        name: "palette_pipeline",
+        family: Family::Palette,
+        label: "palette 256",
+        units: &["normalise", "dot3", "gloss", "palette_lookup"],
+        serves: one_light(Encoding::Palette, true, 8),
+        model: &vectors::palette_pipeline::MODEL,
+        rtl: &Rtl::<rtl::palette_pipeline::PalettePipeline<8, 9>>::PATHS,
+    },
+    Row {
+        name: "palette_pipeline_12",
+        family: Family::Palette,
+        label: "palette 4096",
+        units: &["normalise", "dot3", "gloss", "palette_lookup"],
+        serves: one_light(Encoding::Palette, true, 12),
+        model: &vectors::palette_pipeline::MODEL_12,
+        rtl: &Rtl::<rtl::palette_pipeline::PalettePipeline<12, 13>>::PATHS,
+    },
+];
+
+/// A palette of `s_n` normals: the index bits of the pipeline that holds it (8 up to 256 entries, else 12).
+pub fn palette_index_bits(s_n: usize) -> u32 {
+    if s_n <= 256 {
+        8
+    } else {
+        12
+    }
+}
+
+/// What a pipeline is built with beside its row: the polar power (pw = 4p) and weight h, the height map's bits
+/// (8, or 4 read doubled: the same block), the palette's size s_N (where the scene names one; else the row's
+/// largest, 2^index bits).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    pub pw: i64,
+    pub h: f64,
+    pub height_bits: u32,
+    pub palette: Option<usize>,
+}
+
+impl Default for Settings {
+    /// The polar surface of the demo and a scene's default: h = 1 (a pure dot product, k1 = 0) and p = 4; 8-bit
+    /// heights.
+    fn default() -> Settings {
+        Settings { pw: 16, h: 1.0, height_bits: 8, palette: None }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_row_is_named_after_its_model_and_its_block_and_holds_units_of_the_table() {
+        let mut names = std::collections::BTreeSet::new();
+        for r in PIPELINES {
+            assert!(names.insert(r.name), "{} twice", r.name);
+            assert_eq!((r.model.name, r.rtl.name()), (r.name, r.name));
+            assert!(vectors::unit::find(r.name).is_some(), "{} is in the unit table", r.name);
+            for u in r.units {
+                assert!(vectors::unit::find(u).is_some(), "{}: unit {u} is not in the unit table", r.name);
+            }
+        }
+    }
+
+    #[test]
+    fn no_two_rows_serve_the_same_choices() {
+        for (i, a) in PIPELINES.iter().enumerate() {
+            for b in &PIPELINES[i + 1..] {
+                assert_ne!(a.serves, b.serves, "{} and {}", a.name, b.name);
+            }
+            assert_eq!(choose(&a.serves), Some(a));
+        }
+    }
+
+    #[test]
+    fn a_surface_row_holds_the_units_its_variant_needs_and_no_others() {
+        let mut seen = vec![];
+        for r in PIPELINES {
+            let Family::CartSurface(variant) = r.family else { continue };
+            let has = |u: &str| r.units.contains(&u);
+            assert_eq!(has("gloss"), variant.gloss, "{variant:?}");
+            assert_eq!(has("bilinear"), !variant.nearest, "{variant:?}");
+            assert_eq!(
+                (has("cart_decode_hemi_oct"), has("cart_decode")),
+                (variant.decode == Decode::HemiOct, variant.decode == Decode::Seed)
+            );
+            assert!(!has("light_iter") && r.units.iter().filter(|u| **u == "normalise").count() == 1, "{variant:?}");
+            assert_eq!(r.model.name, variant.model().name, "{variant:?}");
+            seen.push(variant);
+        }
+        assert!(Variant::ALL.iter().all(|v| seen.contains(v)) && seen.len() == 8);
+        let labels: std::collections::BTreeSet<&str> =
+            PIPELINES.iter().filter(|r| matches!(r.family, Family::CartSurface(_))).map(|r| r.label).collect();
+        assert_eq!(labels.len(), 8);
+    }
+}

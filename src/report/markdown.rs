@@ -1,0 +1,57 @@
+//! The report as Markdown.
+
+use super::figures::{PointFigures, LUT4_PER_MAC16};
+use super::pareto::{cheapest, pareto};
+use std::fmt::Write as _;
+
+/// The report as Markdown: one table (the model's speed in its own column, the only figure a rerun changes), the
+/// budgets' answers.
+pub fn markdown(rs: &[PointFigures], budgets: &[f64]) -> String {
+    let on = pareto(rs);
+    let f2 = |x: Option<(f64, f64)>| x.map(|(a, b)| format!("{a:.3} / {b:.2}")).unwrap_or("-".into());
+    let mut s = String::new();
+    let _ = writeln!(s, "# bumprtl report\n");
+    let _ = writeln!(
+        s,
+        "Error against each scene's f64 ideal, 8-bit LSB (mean / max; angle in degrees). The shade's error split: encoding, method, datapath \
+         (a palette's quantization is its encoding; a height map's parts are taken through its B-spline). Cost: iCE40 yosys cells (products beyond the UP5K's 8 SB_MAC16 in logic); \
+         `cost` = SB_LUT4 + {LUT4_PER_MAC16}·SB_MAC16; `est.`: the pipeline plus the swept unit's difference. P: on the scene's Pareto set of cost \
+         against mean colour error.\n"
+    );
+    let _ = writeln!(s, "| point | pipeline | knob | colour | shade | angle ° | encoding | method | datapath | LUT4 | FF | MAC16 | RAM40 | in logic | cost | part | LC | fmax MHz | latency | P | model Mpx/s |");
+    let _ = writeln!(s, "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+    for (r, p) in rs.iter().zip(&on) {
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}{} | {} | {} | {} | {} | {} | {:.2} |",
+            r.id, r.pipeline, r.knob, f2(Some(r.colour)), f2(Some(r.shade)), f2(r.angle), f2(r.encoding), f2(r.method), f2(r.datapath),
+            r.lut4, r.ff, r.dsp, r.bram, r.soft, r.cost(), if r.estimated { " est." } else { "" }, r.part,
+            r.lc.map(|x| x.to_string()).unwrap_or("-".into()), r.fmax.map(|x| format!("{x:.1}")).unwrap_or("-".into()), r.latency,
+            if *p { "P" } else { "" }, r.model_mpx
+        );
+    }
+    for b in budgets {
+        let _ = writeln!(s, "\nBudget {b} 8-bit LSB mean colour error:");
+        for (scene, c) in cheapest(rs, *b) {
+            match c {
+                Some(r) => {
+                    let _ = writeln!(
+                        s,
+                        "- {scene}: {} ({}{}), cost {}{}, colour {:.3} / {:.2}",
+                        r.id,
+                        r.units,
+                        if r.knob == "-" { String::new() } else { format!("; {}", r.knob) },
+                        r.cost(),
+                        if r.estimated { " est." } else { "" },
+                        r.colour.0,
+                        r.colour.1
+                    );
+                }
+                None => {
+                    let _ = writeln!(s, "- {scene}: no configuration meets it");
+                }
+            }
+        }
+    }
+    s
+}

@@ -1,0 +1,55 @@
+//! A unit's synthesis figures as `synth` (and the demo's hardware table) print them: each resource as a share of
+//! the part, the hard blocks by instance.
+
+/// One unit's figures on its part, each resource as a share of the part.
+pub fn synth_row(r: &synth::fpga::SynthReport) {
+    let p = r.part();
+    let [lut, ff, dsp, bram, carry] = p.family.cells();
+    println!("{} on the {}", r.unit, p.title);
+    if !r.choice.is_empty() {
+        println!("  chosen because {}", r.choice);
+    }
+    let share = |n: u64, of: u64| format!("{n:>6} of {of:>6}  {:>5.1} %", 100.0 * n as f64 / of as f64);
+    println!("  {lut:<12} {}", share(r.cells.lut4, p.lut4));
+    println!("  {ff:<12} {}", share(r.cells.ff, p.ff));
+    println!("  {dsp:<12} {}", share(r.cells.dsp, p.dsp));
+    println!("  {bram:<12} {}", share(r.cells.bram, p.bram));
+    println!("  {carry:<12} {:>6}", r.cells.carry);
+    if r.cells.soft > 0 {
+        println!("  {} of its products built in logic, the smallest first, to fit the {} {dsp}", r.cells.soft, p.dsp);
+    }
+    match (&r.place_error, r.lc, r.fmax_mhz) {
+        (Some(e), _, _) => println!("  does not place: {e}"),
+        (None, lc, f) => {
+            if let Some(lc) = lc {
+                println!("  {:<12} {}  (placed, with the serial I/O wrapper)", p.logic_cell_name(), share(lc, p.lut4));
+            }
+            println!(
+                "  fmax         {:>6} MHz  latency {} clocks, one pixel per clock",
+                f.map(|x| format!("{x:.1}")).unwrap_or("-".into()),
+                r.latency
+            );
+        }
+    }
+    if let Some(c) = &r.critical {
+        println!("  critical path {c}");
+    }
+    blocks_line(&r.blocks, p.family, 2);
+}
+
+/// The hard blocks by top-level instance: "unit$0 3, unit$1 3, …" DSP, then BRAM.
+pub fn blocks_line(b: &synth::fpga::Blocks, family: synth::fpga::Family, indent: usize) {
+    let [.., dsp, bram, _] = family.cells();
+    for (k, name) in [(0, dsp), (1, bram)] {
+        let list: Vec<String> = b
+            .by_instance
+            .iter()
+            .map(|(i, d, m)| (i, [*d, *m][k]))
+            .filter(|x| x.1 > 0)
+            .map(|(i, n)| format!("{i} {n}"))
+            .collect();
+        if !list.is_empty() {
+            println!("{:indent$}{name:<12} by instance: {}", "", list.join(", "));
+        }
+    }
+}

@@ -1,0 +1,148 @@
+//! The commands on one unit of the unit table (or the pipeline a scene names): its vectors, Verilog, waveform,
+//! widths, synthesis, and the hard cases of every unit; each checks its arguments before any work.
+
+use std::path::PathBuf;
+
+/// Write a unit's test vectors as CSV.
+pub fn vectors(name: String, exhaustive: bool, count: usize, seed: u64, out: Option<PathBuf>) -> Result<(), String> {
+    let u = crate::units::unit(&name)?;
+    let inputs = vectors::unit::generate(u, exhaustive, count, seed)?;
+    let command = if exhaustive {
+        format!("bumprtl vectors {name} --exhaustive")
+    } else {
+        format!("bumprtl vectors {name} --count {count} --seed {seed}")
+    };
+    let text = vectors::csv::render(u, &inputs, &command);
+    match out {
+        Some(p) if p.as_os_str() != "-" => synth::export::write_atomic(&p, text.as_bytes())?,
+        _ => print!("{text}"),
+    }
+    Ok(())
+}
+
+/// The Verilog of the pipeline a scene file is rendered by.
+pub fn verilog_scene(scene: PathBuf, out: PathBuf) -> Result<(), String> {
+    let spec = sim::scene_file::load(&scene)?;
+    let row = spec.pipeline;
+    let text = row.rtl.verilog();
+    if out.as_os_str() == "-" {
+        print!("{text}");
+    } else {
+        crate::output::writable_folder(&out)?;
+        let p = out.join(format!("{}.v", row.name));
+        synth::export::write_atomic(&p, text.as_bytes())?;
+        println!("{} ({}: {})", p.display(), spec.name, row.units.join(" → "));
+    }
+    Ok(())
+}
+
+/// A unit's Verilog with a self-checking testbench of its golden vectors.
+pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
+    let u = crate::units::unit(&name)?;
+    if out.as_os_str() == "-" {
+        // the module alone: a testbench and its vector files cannot share one stream
+        with_unit!(name.as_str(), U => Ok::<_, String>(print!("{}", synth::export::<U>().text)))?;
+        return Ok(());
+    }
+    let text = vectors::csv::golden(u.name).ok_or_else(|| format!("{name} has no golden vector file in this build"))?;
+    let file = vectors::csv::parse(u, text).map_err(|e| format!("vectors/data/{name}.csv: {e}"))?;
+    let n_in = u.inputs.len();
+    let ins: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[..n_in], u.inputs)).collect();
+    let outs: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[n_in..], u.outputs)).collect();
+    let source = format!("vectors/data/{name}.csv");
+    let paths = with_unit!(name.as_str(), U => {
+        let v = synth::export::<U>().write(&out)?;
+        let mut p = vec![v];
+        p.extend(synth::selfcheck::write::<U>(&out, &ins, &outs, &source)?);
+        Ok::<_, String>(p)
+    })?;
+    for p in paths {
+        println!("{}", p.display());
+    }
+    Ok(())
+}
+
+/// A unit traced in rust-hdl to a VCD.
+pub fn wave(name: String, out: PathBuf, count: usize) -> Result<(), String> {
+    let u = crate::units::unit(&name)?;
+    let inputs = vectors::unit::generate(u, false, count, 1)?;
+    if out.as_os_str() == "-" {
+        let w = Box::new(std::io::BufWriter::new(std::io::stdout()));
+        with_unit!(name.as_str(), U => sim::wave::trace::<U>(u, &inputs, w).map_err(|e| format!("cannot write the VCD to standard output: {e}")))?;
+    } else {
+        with_unit!(name.as_str(), U => sim::wave::write_vcd::<U>(u, &inputs, &out))?;
+        println!("{} ({} vectors)", out.display(), inputs.len());
+    }
+    Ok(())
+}
+
+/// `widths --budget`: the unit's width parameters swept against cost.
+pub fn widths_budget(name: String, b: f64, target: String, dir: PathBuf) -> Result<(), String> {
+    crate::units::unit(&name)?;
+    let part = synth::fpga::part(&target)?;
+    crate::output::writable_folder(&dir)?; // before the first synthesis
+    crate::widths::budget(&name, b, part, &dir)?;
+    Ok(())
+}
+
+/// Every signal of a unit's rtl block: its format and the range it takes.
+pub fn widths(name: String, count: usize, seed: u64, csv: Option<PathBuf>) -> Result<(), String> {
+    let m = crate::units::unit(&name)?;
+    if let Some(c) = &csv {
+        crate::output::writable_file(c)?; // before the minutes of simulation
+    }
+    with_unit!(name.as_str(), U => crate::widths::run::<U>(m, count, seed, csv.as_deref()))?;
+    Ok(())
+}
+
+/// A unit (or a scene's pipeline) synthesised and placed, its figures printed.
+pub fn synth(
+    name: Option<String>,
+    scene: Option<PathBuf>,
+    target: Option<String>,
+    dir: PathBuf,
+    freq: Option<f64>,
+) -> Result<(), String> {
+    let name = match (name, scene) {
+        (Some(n), _) => n,
+        (None, Some(scene)) => {
+            let spec = sim::scene_file::load(&scene)?;
+            let row = spec.pipeline;
+            println!("{}: {} ({})", spec.name, row.name, row.units.join(" → "));
+            row.name.to_string()
+        }
+        (None, None) => return Err("synth: name a unit or --scene FILE".into()),
+    };
+    crate::units::unit(&name)?;
+    let part = target.as_deref().map(synth::fpga::part).transpose()?;
+    if let Some(f) = freq {
+        if !(1.0..=500.0).contains(&f) {
+            return Err(format!("--freq {f}: the clock target must be between 1 and 500 MHz"));
+        }
+    }
+    let d = dir.join(&name);
+    let r = with_unit!(name.as_str(), U => {
+        let (part, choice) = match part {
+            Some(p) => (p, String::new()),
+            None => {
+                let (p, _, why) = synth::fpga::choose::<U>(&d)?;
+                (p, why)
+            }
+        };
+        let freq = freq.unwrap_or(part.default_freq());
+        synth::fpga::synth_and_place::<U>(&d, part, freq, &choice)
+    })?;
+    crate::synth_figures::synth_row(&r);
+    let family = r.part().family;
+    let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| with_unit!(name.as_str(), U => synth::fpga::synth_tied::<U>(&d, family, tag, ties, keep));
+    crate::hardware::mode_views(&name, family, &tied)?;
+    Ok(())
+}
+
+/// Every unit's hard cases through its model and its rtl block.
+pub fn hardcases() -> Result<(), String> {
+    crate::hardcases::run(&|name, inputs| {
+        let m = crate::units::unit(name)?;
+        with_unit!(name, U => Ok(crate::hardcases::rtl_outputs::<U>(m, inputs)))
+    })
+}
