@@ -9,7 +9,7 @@ fn stat_line(unit: &str, metric: &str, s: &ErrorStats) {
 }
 
 pub fn accuracy(directions: usize, samples: usize) {
-    println!("{:<20} {:<52} {:>9} {:>9}   {}", "unit", "error (exact against ideal)", "mean", "max", "max at");
+    println!("{:<20} {:<52} {:>9} {:>9}   max at", "unit", "error (exact against ideal)", "mean", "max");
     for r in sim::accuracy::units(samples, 1) {
         stat_line(&r.unit, &r.metric, &r.stats);
     }

@@ -293,7 +293,7 @@ pub fn run(
         let names: Vec<&str> = std::iter::once(&on_torus).chain(&runs).map(|r| r.pipe.label()).collect();
         hardware_table(&names, hw);
     }
-    println!("{:<52} {:>9} {:>9}   {}", "error of the bit-exact models vs the scene's ideal", "mean", "max", "max at");
+    println!("{:<52} {:>9} {:>9}   max at", "error of the bit-exact models vs the scene's ideal", "mean", "max");
     let row = |name: &str, s: &ErrorStats| match s.count {
         0 => println!("{name:<52} {:>9} {:>9}", "none", "none"),
         _ => println!("{name:<52} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax),

@@ -92,7 +92,7 @@ pub fn command(no_synth: bool, dir: &std::path::Path, out: &std::path::Path) -> 
         )?;
         Fmax { builder_mhz: one.fmax_mhz, shared_mhz: shared.fmax_mhz }
     };
-    run(fmax, &out)
+    run(fmax, out)
 }
 
 pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {

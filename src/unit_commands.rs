@@ -41,7 +41,10 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     let u = crate::units::unit(&name)?;
     if out.as_os_str() == "-" {
         // the module alone: a testbench and its vector files cannot share one stream
-        with_unit!(name.as_str(), U => Ok::<_, String>(print!("{}", synth::export::<U>().text)))?;
+        with_unit!(name.as_str(), U => {
+            print!("{}", synth::export::<U>().text);
+            Ok::<_, String>(())
+        })?;
         return Ok(());
     }
     let text = vectors::csv::golden(u.name).ok_or_else(|| format!("{name} has no golden vector file in this build"))?;

@@ -418,7 +418,7 @@ pub fn budget(unit: &str, budget: f64, part: synth::fpga::Part, dir: &std::path:
     );
     println!("P: on the Pareto set (no other setting as good in error and every resource, and better in one); *: the unit's own");
     let [lut, ff, dsp, bram, _] = part.family.cells();
-    println!("{:<34} {:>10} {:>10} {:>8} {:>8} {:>6} {:>6}  {}", "setting", "mean", "max", lut, ff, dsp, bram, "");
+    println!("{:<34} {:>10} {:>10} {:>8} {:>8} {:>6} {:>6}  ", "setting", "mean", "max", lut, ff, dsp, bram);
     for (k, p) in points.iter().enumerate() {
         let marks = format!(
             "{}{}{}",

@@ -752,7 +752,7 @@ fn without_speed(md: &str) -> String {
 
 #[test]
 fn a_report_plan_run_through_gnu_parallel_merges_into_the_report_run_in_one_process() {
-    if synth::tools::missing(&["yosys", "parallel"]).len() > 0 {
+    if !synth::tools::missing(&["yosys", "parallel"]).is_empty() {
         eprintln!("skipped: yosys or GNU parallel not installed (`bash .ci/run` installs them)");
         return;
     }

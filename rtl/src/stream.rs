@@ -147,6 +147,8 @@ impl<U: StreamUnit> Runner<U> {
     pub fn with_vcd(out: Option<Box<dyn std::io::Write>>) -> Self {
         let mut uut = U::build();
         uut.connect_all();
+        // one thread writes the VCD (the runner through rust-hdl's probe); the Arc shares it with `finish`
+        #[allow(clippy::arc_with_non_send_sync)]
         let sink: Option<Sink> = out.map(|w| std::sync::Arc::new(std::sync::Mutex::new((w, None))));
         let vcd = sink.as_ref().map(|s| write_vcd_header(Guarded(s.clone()), &uut));
         let mut r = Runner { uut, cycle: 0, vcd, sink };

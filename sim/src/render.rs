@@ -100,7 +100,7 @@ pub fn verilator<U: StreamUnit>(
             let f = run()?;
             let mut i = from_frame(m, p.size, &f, skip);
             i.seconds = t.elapsed().as_secs_f64();
-            if best.as_ref().map_or(true, |b| i.seconds < b.seconds) {
+            if best.as_ref().is_none_or(|b| i.seconds < b.seconds) {
                 best = Some(i);
             }
         }

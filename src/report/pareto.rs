@@ -18,7 +18,7 @@ pub fn pareto(rs: &[PointFigures]) -> Vec<bool> {
 }
 
 /// The cheapest point of each scene whose mean colour error is within the budget.
-pub fn cheapest<'a>(rs: &'a [PointFigures], budget: f64) -> Vec<(&'a str, Option<&'a PointFigures>)> {
+pub fn cheapest(rs: &[PointFigures], budget: f64) -> Vec<(&str, Option<&PointFigures>)> {
     let mut scenes: Vec<&str> = vec![];
     for r in rs {
         if !scenes.contains(&r.scene.as_str()) {

@@ -309,7 +309,7 @@ impl Built {
     }
 
     fn padded<'a>(&self, slots: &'a [Option<Vec<u64>>]) -> impl Iterator<Item = Option<&'a Vec<u64>>> {
-        slots.iter().map(Option::as_ref).chain(std::iter::repeat(None).take(self.latency + 1))
+        slots.iter().map(Option::as_ref).chain(std::iter::repeat_n(None, self.latency + 1))
     }
 
     /// The slots as the library reads them: per slot the valid word, then one word per input; bubbles are zeros.

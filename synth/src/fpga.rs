@@ -573,7 +573,7 @@ pub fn synth_and_place<U: StreamUnit>(
                 // one line: which tool failed where, and its last word
                 let mut lines = e.lines().map(str::trim).filter(|l| !l.is_empty());
                 let first = lines.next().unwrap_or("place-and-route failed").to_string();
-                return Err(match lines.last() {
+                return Err(match lines.next_back() {
                     Some(last) => format!("{first} {last}"),
                     None => first,
                 });
@@ -747,6 +747,7 @@ mod tests {
 
 /// A unit on one part: placed, or the resource that keeps it off the part.
 #[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)] // a handful a command, each read whole: boxing the report buys nothing
 pub enum Fit {
     Placed(SynthReport),
     DoesNotFit(String),

@@ -131,7 +131,8 @@ impl V {
     fn within(self, signed: bool, lo: i128, hi: i128) -> Option<V> {
         let p: Vec<(i128, i128)> = (if signed { self.signed() } else { self.unsigned() })
             .into_iter()
-            .filter_map(|(a, b)| (a.max(lo) <= b.min(hi)).then(|| (a.max(lo), b.min(hi))))
+            .filter(|&(a, b)| a.max(lo) <= b.min(hi))
+            .map(|(a, b)| (a.max(lo), b.min(hi)))
             .collect();
         if p.is_empty() {
             return None;

@@ -6,6 +6,7 @@
 //!   builder needs no normaliser (6 multipliers);
 //! - one `Dot3` takes N·L on a normal's first clock and N·H on its second (3 multipliers, not 6);
 //! - the three channels' P·s take two multipliers: r and g on the first clock, b on the second (2, not 3).
+//!
 //! With `Gloss`'s three that is 8 products a clock. The entry is `vectors::table_builder::exact_normalised`, bit for
 //! bit: the same blocks in the same order, only time-shared.
 //!

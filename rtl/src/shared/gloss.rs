@@ -1,5 +1,5 @@
-//! `gloss`: the seed's quadratic glossiness, `P = L + ((C·(Q − L)) >> 8)` with `L = max(0, 1023 − (k·(1023 − X)
-//! >> 3))`, `k = C + 8`, `Q = (L·L) >> 10`. Since Q ≤ L the signed step is done on the magnitude:
+//! `gloss`: the quadratic glossiness of US 6,819,319, `P = L + ((C·(Q − L)) >> 8)` with
+//! `L = max(0, 1023 − (k·(1023 − X) >> 3))`, `k = C + 8`, `Q = (L·L) >> 10`. Since Q ≤ L the signed step is done on the magnitude:
 //! `(C·(Q − L)) >> 8` (arithmetic, floor) = `−((C·(L − Q) + 255) >> 8)`, so every signal here is unsigned.
 //! Latency 11: k, t; their operand register; k·t; the L clamp; its operand register; L·L; L − Q; its operand register;
 //! C·(L − Q); the ceiling shift; the final subtract. An operand register feeds nothing but its multiplier, so the
@@ -13,6 +13,7 @@ use rust_hdl::prelude::*;
 pub const LATENCY: usize = 11;
 
 crate::stream_block! {
+    #[derive(Default)]
     pub struct Gloss: unit("gloss", LATENCY) {
         in {
             conc: U8,
@@ -70,57 +71,6 @@ crate::stream_block! {
         w_d: Signal<Local, Bits<16>>,
         w_prod: Signal<Local, Bits<32>>,
         ceil_sum: Signal<Local, Bits<18>>,
-    }
-}
-
-impl Default for Gloss {
-    fn default() -> Self {
-        Self {
-            clock: Default::default(),
-            valid_in: Default::default(),
-            conc: Default::default(),
-            x: Default::default(),
-            valid_out: Default::default(),
-            p: Default::default(),
-            s1_k: Default::default(),
-            s1_t: Default::default(),
-            s1_c: Default::default(),
-            s1b_k: Default::default(),
-            s1b_t: Default::default(),
-            s1b_c: Default::default(),
-            s2_m: Default::default(),
-            s2_c: Default::default(),
-            s3_l: Default::default(),
-            s3_c: Default::default(),
-            s3b_l: Default::default(),
-            s3b_c: Default::default(),
-            s4_ll: Default::default(),
-            s4_l: Default::default(),
-            s4_c: Default::default(),
-            s5_d: Default::default(),
-            s5_l: Default::default(),
-            s5_c: Default::default(),
-            s5b_d: Default::default(),
-            s5b_l: Default::default(),
-            s5b_c: Default::default(),
-            s6_prod: Default::default(),
-            s6_l: Default::default(),
-            s7_q: Default::default(),
-            s7_l: Default::default(),
-            s8_p: Default::default(),
-            valid: Default::default(),
-            w_k: Default::default(),
-            w_t: Default::default(),
-            w_m: Default::default(),
-            m3: Default::default(),
-            m3_lo: Default::default(),
-            w_l: Default::default(),
-            w_ll: Default::default(),
-            w_c: Default::default(),
-            w_d: Default::default(),
-            w_prod: Default::default(),
-            ceil_sum: Default::default(),
-        }
     }
 }
 

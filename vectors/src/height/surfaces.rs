@@ -144,6 +144,25 @@ pub fn all() -> Vec<Surface> {
     vec![sine(8.0), sine(16.0), sine(32.0), cap()]
 }
 
+/// The surface sampled at texel centres, above its lowest point (texel units).
+fn true_heights(s: &Surface) -> Vec<f64> {
+    let n = s.texels;
+    (0..n * n).map(|k| (s.h)((k % n) as f64 + 0.5, (k / n) as f64 + 0.5) - s.lo).collect()
+}
+
+/// Heights in texel units in the 8-bit codes' units for scale k (UQ6.2 steps: 4·m per texel, k = 16/m), unrounded.
+fn in_code_units(h: &[f64], scale: i64) -> Vec<f64> {
+    let m = (1 << crate::height::height_normal::SCALE_FRAC) as f64 / scale as f64;
+    h.iter().map(|x| x * 4.0 * m).collect()
+}
+
+/// A surface's true heights in 8-bit code units and its scale k: the map a method in reals reads.
+pub fn codes_in_reals(s: &Surface) -> (Vec<f64>, i64) {
+    let true_h = true_heights(s);
+    let (_, scale) = crate::height::height_normal::encode_heights(&true_h, 0.0, s.hi - s.lo);
+    (in_code_units(&true_h, scale), scale)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -178,23 +197,4 @@ mod tests {
             }
         }
     }
-}
-
-/// The surface sampled at texel centres, above its lowest point (texel units).
-fn true_heights(s: &Surface) -> Vec<f64> {
-    let n = s.texels;
-    (0..n * n).map(|k| (s.h)((k % n) as f64 + 0.5, (k / n) as f64 + 0.5) - s.lo).collect()
-}
-
-/// Heights in texel units in the 8-bit codes' units for scale k (UQ6.2 steps: 4·m per texel, k = 16/m), unrounded.
-fn in_code_units(h: &[f64], scale: i64) -> Vec<f64> {
-    let m = (1 << crate::height::height_normal::SCALE_FRAC) as f64 / scale as f64;
-    h.iter().map(|x| x * 4.0 * m).collect()
-}
-
-/// A surface's true heights in 8-bit code units and its scale k: the map a method in reals reads.
-pub fn codes_in_reals(s: &Surface) -> (Vec<f64>, i64) {
-    let true_h = true_heights(s);
-    let (_, scale) = crate::height::height_normal::encode_heights(&true_h, 0.0, s.hi - s.lo);
-    (in_code_units(&true_h, scale), scale)
 }

@@ -125,10 +125,8 @@ fn random_with(rng: &mut dyn rand::RngCore, bits: u32) -> Vec<i64> {
         table_builder::sq1_10([rng.gen_range(-1.0..1.0), 1.0, rng.gen_range(-1.0..1.0)]),
         table_builder::sq1_10([rng.gen_range(-0.5..0.5), 1.0, rng.gen_range(-0.5..0.5)]),
     );
-    for c in 0..3 {
-        v[input::l_x + c] = l[c];
-        v[input::h_x + c] = h[c];
-    }
+    v[input::l_x..input::l_x + 3].copy_from_slice(&l);
+    v[input::h_x..input::h_x + 3].copy_from_slice(&h);
     v
 }
 

@@ -75,10 +75,8 @@ fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
     };
     let (l, h) = (dir(rng), dir(rng));
     let mut v = random_inputs(rng);
-    for c in 0..3 {
-        v[input::l_x + c] = l[c];
-        v[input::h_x + c] = h[c];
-    }
+    v[input::l_x..input::l_x + 3].copy_from_slice(&l);
+    v[input::h_x..input::h_x + 3].copy_from_slice(&h);
     v
 }
 

@@ -2,6 +2,7 @@
 //! unit ... combined with the existing colour". Two modes, per channel, both exact round-to-nearest of a /255:
 //! - `mode = 0`, modulate: `out = round(src·α / 255)`;
 //! - `mode = 1`, alpha-lerp: `out = round((src·α + dst·(255 − α)) / 255)`.
+//!
 //! The division: `t = num + 128`, `out = (t + (t >> 8)) >> 8`, which equals round-half-up(num/255) for every
 //! num ≤ 255·255 (checked exhaustively below).
 
