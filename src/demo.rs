@@ -5,7 +5,8 @@
 //! (`sim::pipeline`); this file is the command's flow and its printing.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar, Prepared};
+use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar};
+use sim::prepared::Prepared;
 use sim::render::{self, Image};
 use sim::scene::Scene;
 use sim::shortcomings::Shortcomings;

@@ -5,10 +5,10 @@
 //! pipeline and seed 004's palette pipelines; `build` makes a row's.
 
 use crate::pipelines::{self, Choices, Family, Per, Row, Settings};
-pub use crate::prepared::{Ideal, Prepared};
+use crate::prepared::{Ideal, Prepared};
 use crate::raster;
 use crate::render::{self, Image};
-pub use crate::rtl_paths::{Rtl, RtlPaths};
+use crate::rtl_paths::RtlPaths;
 use crate::scene::Scene;
 use vectors::cart_encode::{self, Encoder};
 use vectors::cart_pipeline::{self, Decode};

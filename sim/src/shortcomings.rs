@@ -2,7 +2,8 @@
 //! light and against its own codes; the pixels filtered across R's 255 → 0 wrap (with the Cartesian path on the same
 //! pixels); a light below the horizon, through both paths' N·L.
 
-use crate::pipeline::{Cartesian, Pipeline, Polar, PolarSetup, Prepared};
+use crate::pipeline::{Cartesian, Pipeline, Polar, PolarSetup};
+use crate::prepared::Prepared;
 use crate::render::Image;
 use crate::scene::Scene;
 use vectors::cart_pipeline::Decode;

@@ -2,8 +2,9 @@
 
 use super::figures::stats;
 use super::points::{settings, Point};
-use sim::pipeline::{Height, Prepared};
+use sim::pipeline::Height;
 use sim::pipelines::Family;
+use sim::prepared::Prepared;
 use sim::scene::Scene;
 use vectors::cart_pipeline::Decode;
 use vectors::stats::ErrorStats;
