@@ -1,7 +1,6 @@
 //! `bumprtl accuracy`: exact against ideal for every unit (error with where its max occurs), the encoders' angular
 //! error, and the LUT-size tables of the sine/cosine units (against their yosys cost, when asked).
 
-use crate::blocks::{SynthFn, COS_SIGN_BLOCKS, SINCOS_BLOCKS};
 use vectors::stats::ErrorStats;
 
 fn stat_line(unit: &str, metric: &str, s: &ErrorStats) {
@@ -84,32 +83,28 @@ pub fn accuracy(directions: usize, samples: usize) {
 /// The LUT-size tables of the sine/cosine unit [10] and the cosine unit with sign [18]: entries and width against
 /// error (every input) and, when `cost` is on, against what yosys makes of the rtl block of that size for iCE40.
 pub fn lut_sizes(cost: bool, dir: &std::path::Path) -> Result<(), String> {
-    let table =
-        |name: &str, rows: Vec<vectors::sincos::SizeRow>, blocks: &[(u32, u32, SynthFn)]| -> Result<(), String> {
-            lut_header();
-            for r in rows {
-                let tb = r.entries.trailing_zeros();
-                let c = if !cost {
-                    None
-                } else {
-                    let (.., f) = blocks
-                        .iter()
-                        .find(|b| (b.0, b.1) == (tb, r.width))
-                        .ok_or(format!("no rtl {name} of {} x {}", r.entries, r.width))?;
-                    Some(f(&dir.join(format!("{name}_t{}w{}", r.entries, r.width)), synth::fpga::Family::Ice40)?)
-                };
-                lut_row(&r, c.as_ref());
-            }
-            Ok(())
-        };
+    let table = |name: &str, rows: Vec<vectors::sincos::SizeRow>| -> Result<(), String> {
+        lut_header();
+        for r in rows {
+            let tb = r.entries.trailing_zeros();
+            let c = if !cost {
+                None
+            } else {
+                let b = crate::units::block(name, (tb, r.width))?;
+                Some(b.synth_unit(&dir.join(format!("{name}_t{}w{}", r.entries, r.width)), synth::fpga::Family::Ice40)?)
+            };
+            lut_row(&r, c.as_ref());
+        }
+        Ok(())
+    };
     println!(
         "\nsin/cos unit [10]: table size and width (10-bit elevation in; error in 8-bit LSB; the rtl has 256 × 8):"
     );
-    table("sincos", sim::accuracy::sincos_sizes(), SINCOS_BLOCKS)?;
+    table("sincos", sim::accuracy::sincos_sizes())?;
     println!(
         "\ncosine unit with sign [18]: table size and width (d = R − Q in; error of the signed cosine, 8-bit LSB):"
     );
-    table("cos_sign", sim::accuracy::cos_sign_sizes(), COS_SIGN_BLOCKS)
+    table("cos_sign", sim::accuracy::cos_sign_sizes())
 }
 
 fn lut_header() {

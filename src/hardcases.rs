@@ -5,8 +5,6 @@
 //! Every check is the ask written as a test of the outputs (a length, a sign, an equality between two inputs), not
 //! the model's own value copied.
 
-use vectors::UnitModel;
-
 /// One hard case: its vectors through `unit` (the row reads the last vector's outputs), and the check of them.
 pub struct Case {
     pub unit: &'static str,
@@ -207,9 +205,10 @@ pub fn rtl_cases() -> Vec<Case> {
 }
 
 /// The most negative value of every signed input of every unit at once, the unsigned ones at 0: a row per unit.
-pub fn most_negative(units: &[&'static UnitModel]) -> Vec<Case> {
+pub fn most_negative(units: &'static [sim::units::Unit]) -> Vec<Case> {
     units
         .iter()
+        .map(|u| u.model)
         .filter(|m| m.inputs.iter().any(|p| p.signed))
         .map(|m| {
             let input: Vec<i64> = m.inputs.iter().map(|p| if p.signed { p.range().0 } else { 0 }).collect();
@@ -270,15 +269,15 @@ pub fn software_rows() -> Vec<Row> {
     rows
 }
 
-/// Every case: through `rtl` (the unit's block in rust-hdl, by name) and the model, checked.
-pub fn rows(rtl: &dyn Fn(&str, &[Vec<i64>]) -> Result<Vec<Vec<i64>>, String>) -> Result<Vec<Row>, String> {
+/// Every case: through the unit's rtl block in rust-hdl, back to back, and through its model, checked.
+pub fn rows() -> Result<Vec<Row>, String> {
     let mut cases = rtl_cases();
-    cases.extend(most_negative(vectors::UNITS));
+    cases.extend(most_negative(sim::units::UNITS));
     let mut rows = vec![];
     for c in cases {
-        let m = vectors::unit::find(c.unit).ok_or_else(|| format!("hard case of an unknown unit `{}`", c.unit))?;
-        let model = m.run(&c.inputs);
-        let got = rtl(c.unit, &c.inputs)?;
+        let u = sim::units::find(c.unit).ok_or_else(|| format!("hard case of an unknown unit `{}`", c.unit))?;
+        let model = u.model.run(&c.inputs);
+        let got = u.rtl.outputs(u.model, &c.inputs);
         let (seen, ok) = (c.check)(&got);
         let same = got == model;
         rows.push(Row {
@@ -294,8 +293,8 @@ pub fn rows(rtl: &dyn Fn(&str, &[Vec<i64>]) -> Result<Vec<Vec<i64>>, String>) ->
 }
 
 /// The table, and an error if a row fails.
-pub fn run(rtl: &dyn Fn(&str, &[Vec<i64>]) -> Result<Vec<Vec<i64>>, String>) -> Result<(), String> {
-    let rows = rows(rtl)?;
+pub fn run() -> Result<(), String> {
+    let rows = rows()?;
     println!("| unit | hard case | what the seeds ask | what the rtl does | |");
     println!("| --- | --- | --- | --- | --- |");
     // a cell's own `|` (|x|, |L|) escaped, so that the Markdown table keeps its columns
@@ -323,11 +322,4 @@ pub fn run(rtl: &dyn Fn(&str, &[Vec<i64>]) -> Result<Vec<Vec<i64>>, String>) -> 
         return Err(format!("{} hard cases fail: {}", failed.len(), failed.join("; ")));
     }
     Ok(())
-}
-
-/// A unit's vectors through its rtl block in rust-hdl, back to back: the outputs, in the model's numbers.
-pub fn rtl_outputs<U: rtl::StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    let mut r = rtl::stream::Runner::<U>::new();
-    let got = r.run(inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))));
-    got.outputs.iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect()
 }

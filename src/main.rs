@@ -1,11 +1,6 @@
 //! `bumprtl`: the command line over the bumprtl crates. Every failure is one line on stderr and a non-zero exit.
 
-// first: `with_unit!` is a macro the modules after it use
-#[macro_use]
-mod units;
-
 mod accuracy;
-mod blocks;
 mod cli;
 mod demo;
 mod fonts;
@@ -18,6 +13,7 @@ mod render;
 mod report;
 mod synth_figures;
 mod unit_commands;
+mod units;
 mod widths;
 
 fn main() {

@@ -1,11 +1,11 @@
-//! The commands on one unit of the unit table (or the pipeline a scene names): its vectors, Verilog, waveform,
-//! widths, synthesis, and the hard cases of every unit; each checks its arguments before any work.
+//! The commands on one unit of the table of units (`sim::units`), or the pipeline a scene names: its vectors,
+//! Verilog, waveform, widths, synthesis, and the hard cases of every unit; each checks its arguments before any work.
 
 use std::path::PathBuf;
 
 /// Write a unit's test vectors as CSV.
 pub fn vectors(name: String, exhaustive: bool, count: usize, seed: u64, out: Option<PathBuf>) -> Result<(), String> {
-    let u = crate::units::unit(&name)?;
+    let u = sim::units::unit(&name)?.model;
     let inputs = vectors::unit::generate(u, exhaustive, count, seed)?;
     let command = if exhaustive {
         format!("bumprtl vectors {name} --exhaustive")
@@ -24,7 +24,7 @@ pub fn vectors(name: String, exhaustive: bool, count: usize, seed: u64, out: Opt
 pub fn verilog_scene(scene: PathBuf, out: PathBuf) -> Result<(), String> {
     let spec = sim::scene_file::load(&scene)?;
     let row = spec.pipeline;
-    let text = row.rtl.verilog();
+    let text = row.rtl().verilog();
     if out.as_os_str() == "-" {
         print!("{text}");
     } else {
@@ -38,13 +38,11 @@ pub fn verilog_scene(scene: PathBuf, out: PathBuf) -> Result<(), String> {
 
 /// A unit's Verilog with a self-checking testbench of its golden vectors.
 pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
-    let u = crate::units::unit(&name)?;
+    let unit = sim::units::unit(&name)?;
+    let u = unit.model;
     if out.as_os_str() == "-" {
         // the module alone: a testbench and its vector files cannot share one stream
-        with_unit!(name.as_str(), U => {
-            print!("{}", synth::export::<U>().text);
-            Ok::<_, String>(())
-        })?;
+        print!("{}", unit.rtl.verilog());
         return Ok(());
     }
     let text = vectors::csv::golden(u.name).ok_or_else(|| format!("{name} has no golden vector file in this build"))?;
@@ -53,13 +51,7 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     let ins: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[..n_in], u.inputs)).collect();
     let outs: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[n_in..], u.outputs)).collect();
     let source = format!("vectors/data/{name}.csv");
-    let paths = with_unit!(name.as_str(), U => {
-        let v = synth::export::<U>().write(&out)?;
-        let mut p = vec![v];
-        p.extend(synth::selfcheck::write::<U>(&out, &ins, &outs, &source)?);
-        Ok::<_, String>(p)
-    })?;
-    for p in paths {
+    for p in unit.rtl.selfcheck(&out, &ins, &outs, &source)? {
         println!("{}", p.display());
     }
     Ok(())
@@ -67,13 +59,14 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
 
 /// A unit traced in rust-hdl to a VCD.
 pub fn wave(name: String, out: PathBuf, count: usize) -> Result<(), String> {
-    let u = crate::units::unit(&name)?;
+    let unit = sim::units::unit(&name)?;
+    let u = unit.model;
     let inputs = vectors::unit::generate(u, false, count, 1)?;
     if out.as_os_str() == "-" {
         let w = Box::new(std::io::BufWriter::new(std::io::stdout()));
-        with_unit!(name.as_str(), U => sim::wave::trace::<U>(u, &inputs, w).map_err(|e| format!("cannot write the VCD to standard output: {e}")))?;
+        unit.rtl.trace(u, &inputs, w).map_err(|e| format!("cannot write the VCD to standard output: {e}"))?;
     } else {
-        with_unit!(name.as_str(), U => sim::wave::write_vcd::<U>(u, &inputs, &out))?;
+        unit.rtl.write_vcd(u, &inputs, &out)?;
         println!("{} ({} vectors)", out.display(), inputs.len());
     }
     Ok(())
@@ -81,7 +74,7 @@ pub fn wave(name: String, out: PathBuf, count: usize) -> Result<(), String> {
 
 /// `widths --budget`: the unit's width parameters swept against cost.
 pub fn widths_budget(name: String, b: f64, target: String, dir: PathBuf) -> Result<(), String> {
-    crate::units::unit(&name)?;
+    sim::units::unit(&name)?;
     let part = synth::fpga::part(&target)?;
     crate::output::writable_folder(&dir)?; // before the first synthesis
     crate::widths::budget(&name, b, part, &dir)?;
@@ -90,11 +83,11 @@ pub fn widths_budget(name: String, b: f64, target: String, dir: PathBuf) -> Resu
 
 /// Every signal of a unit's rtl block: its format and the range it takes.
 pub fn widths(name: String, count: usize, seed: u64, csv: Option<PathBuf>) -> Result<(), String> {
-    let m = crate::units::unit(&name)?;
+    let unit = sim::units::unit(&name)?;
     if let Some(c) = &csv {
         crate::output::writable_file(c)?; // before the minutes of simulation
     }
-    with_unit!(name.as_str(), U => crate::widths::run::<U>(m, count, seed, csv.as_deref()))?;
+    crate::widths::run(unit, count, seed, csv.as_deref())?;
     Ok(())
 }
 
@@ -116,7 +109,7 @@ pub fn synth(
         }
         (None, None) => return Err("synth: name a unit or --scene FILE".into()),
     };
-    crate::units::unit(&name)?;
+    let rtl = sim::units::unit(&name)?.rtl;
     let part = target.as_deref().map(synth::fpga::part).transpose()?;
     if let Some(f) = freq {
         if !(1.0..=500.0).contains(&f) {
@@ -124,28 +117,22 @@ pub fn synth(
         }
     }
     let d = dir.join(&name);
-    let r = with_unit!(name.as_str(), U => {
-        let (part, choice) = match part {
-            Some(p) => (p, String::new()),
-            None => {
-                let (p, _, why) = synth::fpga::choose::<U>(&d)?;
-                (p, why)
-            }
-        };
-        let freq = freq.unwrap_or(part.default_freq());
-        synth::fpga::synth_and_place::<U>(&d, part, freq, &choice)
-    })?;
+    let (part, choice) = match part {
+        Some(p) => (p, String::new()),
+        None => {
+            let (p, _, why) = rtl.choose(&d)?;
+            (p, why)
+        }
+    };
+    let r = rtl.synth_and_place(&d, part, freq.unwrap_or(part.default_freq()), &choice)?;
     crate::synth_figures::synth_row(&r);
     let family = r.part().family;
-    let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| with_unit!(name.as_str(), U => synth::fpga::synth_tied::<U>(&d, family, tag, ties, keep));
+    let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| rtl.synth_tied(&d, family, tag, ties, keep);
     crate::hardware::mode_views(&name, family, &tied)?;
     Ok(())
 }
 
 /// Every unit's hard cases through its model and its rtl block.
 pub fn hardcases() -> Result<(), String> {
-    crate::hardcases::run(&|name, inputs| {
-        let m = crate::units::unit(name)?;
-        with_unit!(name, U => Ok(crate::hardcases::rtl_outputs::<U>(m, inputs)))
-    })
+    crate::hardcases::run()
 }

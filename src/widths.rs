@@ -3,10 +3,8 @@
 //! 2^20, else its hard cases and `--count` random vectors): the bits that range needs, the spare bits at the top,
 //! and a flag where two or more of them go unused. See the `widths` crate.
 
-use ::widths::{bits_needed, bounds, mismatches, seen_ticking, sites, wraps::Waived, Formats};
+use ::widths::{bits_needed, bounds, mismatches, wraps::Waived};
 use indicatif::{ProgressBar, ProgressStyle};
-use rtl::StreamUnit;
-use vectors::UnitModel;
 
 /// One signal's row.
 pub struct Row {
@@ -56,7 +54,8 @@ pub struct Measured {
 }
 
 /// The unit's signals, their seen and proven ranges, and the rtl against the model on the same vectors.
-pub fn measure<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64) -> Result<Measured, String> {
+pub fn measure(unit: &sim::units::Unit, count: usize, seed: u64) -> Result<Measured, String> {
+    let (m, rtl) = (unit.model, unit.rtl);
     let exhaustive = m.exhaustive.is_some();
     let inputs = vectors::unit::generate(m, exhaustive, count, seed)?;
     let what = if exhaustive {
@@ -69,14 +68,10 @@ pub fn measure<U: StreamUnit>(m: &UnitModel, count: usize, seed: u64) -> Result<
         ProgressStyle::with_template("{msg:<24} [{bar:40}] {pos}/{len} vectors {eta}").unwrap().progress_chars("=> "),
     );
     bar.set_message(format!("rust-hdl: {}", m.name));
-    let ranges = seen_ticking::<U>(m, &inputs, &|k| bar.set_position(k as u64));
+    let ranges = rtl.seen(m, &inputs, &|k| bar.set_position(k as u64));
     bar.finish_and_clear();
-    let f = Formats::of::<U>();
-    let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
-    let signed = |n: &str| f.format(n).is_some_and(|x| x.signed);
-    let proof = bounds::prove(&U::build(), &ports, &signed);
-    let proven = &proof.values;
-    let sites = sites(&f, &proof);
+    let a = rtl.analyse(m);
+    let (f, proven, sites) = (&a.formats, &a.proof.values, a.sites());
     let mut rows = vec![];
     for s in &ranges.signals {
         let Some(fmt) = f.format(&s.name) else { continue }; // clocks: no value to range
@@ -142,14 +137,10 @@ pub fn csv(rows: &[Row]) -> String {
     t
 }
 
-pub fn run<U: StreamUnit>(
-    m: &UnitModel,
-    count: usize,
-    seed: u64,
-    csv_out: Option<&std::path::Path>,
-) -> Result<(), String> {
+pub fn run(unit: &sim::units::Unit, count: usize, seed: u64, csv_out: Option<&std::path::Path>) -> Result<(), String> {
+    let m = unit.model;
     let t = std::time::Instant::now();
-    let Measured { rows, vectors: n, what, clocks, mismatches } = measure::<U>(m, count, seed)?;
+    let Measured { rows, vectors: n, what, clocks, mismatches } = measure(unit, count, seed)?;
     let secs = t.elapsed().as_secs_f64();
     if let Some(p) = csv_out {
         synth::export::write_atomic(p, csv(&rows).as_bytes())?;
@@ -268,43 +259,6 @@ impl Point {
     }
 }
 
-/// Every seed-table size with no Newton step and with one (a second costs three more DSPs than the first and buys
-/// less than a Uq1.12 seed can hold: `bumprtl report` prints the model's figures for it).
-macro_rules! normalise_blocks {
-    ($($t:literal),* $(,)?) => {
-        &[$(
-            ($t, 0, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 0>> as crate::blocks::SynthFn),
-            ($t, 1, synth::fpga::synth_unit::<rtl::normalise::Normalise<$t, 1>> as crate::blocks::SynthFn),
-        )*]
-    };
-}
-
-macro_rules! bilinear_blocks {
-    ($(($f:literal, $d:literal)),* $(,)?) => {
-        &[$(($f, $d, synth::fpga::synth_unit::<rtl::bilinear::Bilinear<$f, $d>> as crate::blocks::SynthFn)),*]
-    };
-}
-
-macro_rules! power_blocks {
-    ($(($lf:literal, $eb:literal)),* $(,)?) => {
-        &[$(($lf, $eb, synth::fpga::synth_unit::<rtl::power::Power<$lf, $eb>> as crate::blocks::SynthFn)),*]
-    };
-}
-
-const POWER_BLOCKS: &[(u32, u32, crate::blocks::SynthFn)] = vectors::power_sizes!(power_blocks);
-const NORMALISE_BLOCKS: &[(u32, u32, crate::blocks::SynthFn)] = vectors::normalise_table_sizes!(normalise_blocks);
-const BILINEAR_BLOCKS: &[(u32, u32, crate::blocks::SynthFn)] = vectors::bilinear_sizes!(bilinear_blocks);
-
-/// The synthesis of `Normalise<t, n>`, where the sweep builds it.
-pub fn normalise_block(t: u32, n: u32) -> Option<crate::blocks::SynthFn> {
-    NORMALISE_BLOCKS.iter().find(|b| (b.0, b.1) == (t, n)).map(|b| b.2)
-}
-
-/// The synthesis of `Bilinear<f, d>` (four channels), where the sweep builds it.
-pub fn bilinear_block(f: u32, d: u32) -> Option<crate::blocks::SynthFn> {
-    BILINEAR_BLOCKS.iter().find(|b| (b.0, b.1) == (f, d)).map(|b| b.2)
-}
-
 /// The units with width parameters the sweep knows, and the unit of their budget. The normaliser's is the worst
 /// component's error (Sq1.10 LSB), not the angle: its table sets the length of the result, hardly its direction
 /// (a scale error of 1/√m moves every component alike), and N·L reads the length; the angle is printed beside.
@@ -320,14 +274,16 @@ pub fn sweep(
     say: &dyn Fn(&str),
 ) -> Result<Vec<Point>, String> {
     const SAMPLES: usize = 200_000;
-    let cost = |f: crate::blocks::SynthFn, name: String| {
+    // every setting in its own folder (one module name for all of them)
+    let cost = |s: &sim::units::Setting, name: String| {
         say(&name);
-        f(&dir.join(&name), family)
+        s.rtl.synth_unit(&dir.join(&name), family)
     };
     let mut points = vec![];
     match unit {
         "normalise" => {
-            for &(t, n, f) in NORMALISE_BLOCKS {
+            for f in sim::units::settings("normalise") {
+                let (t, n) = f.params;
                 let (lsb, deg) = vectors::normalise::error(t, n, SAMPLES, 3);
                 points.push(Point {
                     setting: format!("table 2^{t} entries, {n} Newton step{}", if n == 1 { "" } else { "s" }),
@@ -340,7 +296,8 @@ pub fn sweep(
             }
         }
         "sincos" => {
-            for &(tb, w, f) in crate::blocks::SINCOS_BLOCKS {
+            for f in sim::units::settings("sincos") {
+                let (tb, w) = f.params;
                 let e = vectors::sincos::size_error(tb, w);
                 points.push(Point {
                     setting: format!("{} entries of {w} bits", 1u32 << tb),
@@ -353,7 +310,8 @@ pub fn sweep(
             }
         }
         "bilinear" => {
-            for &(fb, d, f) in BILINEAR_BLOCKS {
+            for f in sim::units::settings("bilinear") {
+                let (fb, d) = f.params;
                 let e = vectors::bilinear::error_sized(fb, d, SAMPLES / 4, 3);
                 points.push(Point {
                     setting: format!("{fb} blend bits, {d} dropped"),
@@ -366,7 +324,8 @@ pub fn sweep(
             }
         }
         "power" => {
-            for &(lf, eb, f) in POWER_BLOCKS {
+            for f in sim::units::settings("power") {
+                let (lf, eb) = f.params;
                 let e = vectors::power::size_error(lf, eb);
                 points.push(Point {
                     setting: format!("L to 2^-{lf}, {} exp entries", 1u32 << eb),

@@ -692,7 +692,7 @@ fn synthesis_results_are_cached_under_a_content_hash_and_reused() {
     let kept: Vec<String> =
         std::fs::read_dir(&cache).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
     // one result per setting of the sweep, each named by a 128-bit hash and its kind
-    assert_eq!(kept.len(), vectors::sincos::LUT_SIZES.len(), "{kept:?}");
+    assert_eq!(kept.len(), sim::units::settings("sincos").count(), "{kept:?}");
     assert!(kept.iter().all(|n| n.len() == 32 + ".cells".len() && n.ends_with(".cells")), "{kept:?}");
     // the second run reads them back: the same table, and no new entry
     assert_eq!(run(), first);

@@ -20,9 +20,9 @@ fn row(unit: &str, metric: &str, stats: ErrorStats) -> Row {
 
 /// Every unit's own accuracy (`UnitModel::accuracy`), in the unit table's order.
 pub fn units(samples: usize, seed: u64) -> Vec<Row> {
-    vectors::UNITS
+    crate::units::UNITS
         .iter()
-        .filter_map(|m| m.accuracy.map(|f| (m.name, f)))
+        .filter_map(|u| u.model.accuracy.map(|f| (u.name(), f)))
         .flat_map(|(name, f)| f(samples, seed).into_iter().map(move |a| row(name, &a.metric, a.stats)))
         .collect()
 }
@@ -35,13 +35,14 @@ pub fn polar_encoders(n: usize, seed: u64) -> Vec<Row> {
         .collect()
 }
 
-/// The sine/cosine LUT sizes and widths of the LUT-size table, model error only (the cost comes from `synth`).
+/// The sine/cosine LUT sizes and widths of the LUT-size table (the swept settings of `crate::units`), model error
+/// only (the cost comes from `synth`).
 pub fn cos_sign_sizes() -> Vec<sincos::SizeRow> {
-    vectors::cos_sign::LUT_SIZES.iter().map(|&(tb, w)| vectors::cos_sign::size_error(tb, w)).collect()
+    crate::units::settings("cos_sign").map(|s| vectors::cos_sign::size_error(s.params.0, s.params.1)).collect()
 }
 
 pub fn sincos_sizes() -> Vec<sincos::SizeRow> {
-    sincos::LUT_SIZES.iter().map(|&(tb, w)| sincos::size_error(tb, w)).collect()
+    crate::units::settings("sincos").map(|s| sincos::size_error(s.params.0, s.params.1)).collect()
 }
 
 /// How many random hemisphere directions `bumprtl accuracy` draws per encoder, and the seed of their stream.

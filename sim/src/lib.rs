@@ -14,5 +14,6 @@ pub mod scene;
 pub mod scene_file;
 pub mod shortcomings;
 pub mod surface;
+pub mod units;
 pub mod variants;
 pub mod wave;

@@ -28,11 +28,11 @@ pub trait Pipeline: Sync {
     }
     /// The bit-exact model of the whole pipeline; its name is the rtl block's.
     fn model(&self) -> &'static UnitModel {
-        self.row().model
+        self.row().model()
     }
     /// The rtl block, behind the paths that need its type.
     fn rtl(&self) -> &'static dyn RtlPaths {
-        self.row().rtl
+        self.row().rtl()
     }
     /// The units the pipeline holds, in dataflow order, by their names in the unit table.
     fn units(&self) -> &'static [&'static str] {

@@ -1,14 +1,16 @@
 //! The table of pipelines: one row per rtl pipeline the project builds, with everything that names it (its unit
-//! name, family, label, the units it holds), the scene choices it serves, its bit-exact model and its rtl block.
+//! name, family, label, the units it holds) and the scene choices it serves; its bit-exact model and its rtl block
+//! are its unit's row in the table of units (`crate::units`).
 //! Every consumer chooses through it: the scene reader (`crate::scene_file`) turns a scene's choices into a row
 //! with `choose`, the command line's `render`, `demo`, `verilog --scene`, `synth --scene` and `report` read the
 //! row, and `crate::pipeline::build` makes a row's `Pipeline` (the family's behaviour: set-up, shade, colour).
 //!
-//! A new pipeline is its rtl top, its model, its test and its row here (and, for a new family, its `Pipeline`
-//! implementation). A test keeps every row reachable from exactly one combination of scene choices.
+//! A new pipeline is its rtl top, its model, its test, its row in the table of units and its row here (and, for a
+//! new family, its `Pipeline` implementation). A test keeps every row reachable from exactly one combination of scene choices.
 
-use crate::rtl_paths::{Rtl, RtlPaths};
+use crate::rtl_paths::RtlPaths;
 use crate::scene::Scene;
+use crate::units::Unit;
 use serde::Deserialize;
 use vectors::cart_pipeline::Decode;
 use vectors::cart_surface::Variant;
@@ -81,7 +83,7 @@ pub enum Family {
 
 /// One pipeline.
 pub struct Row {
-    /// the rtl unit's name (the model's and the block's)
+    /// its unit's name in the table of units (the model's and the block's)
     pub name: &'static str,
     pub family: Family,
     /// a short name for tables
@@ -90,8 +92,6 @@ pub struct Row {
     pub units: &'static [&'static str],
     /// the one combination of scene choices it serves
     pub serves: Choices,
-    pub model: &'static UnitModel,
-    pub rtl: &'static dyn RtlPaths,
 }
 
 impl std::fmt::Debug for Row {
@@ -107,6 +107,21 @@ impl PartialEq for Row {
 }
 
 impl Row {
+    /// Its row in the table of units.
+    pub fn unit(&self) -> &'static Unit {
+        crate::units::find(self.name).expect("every pipeline is a unit of the table (a test holds it)")
+    }
+
+    /// The bit-exact model of the whole pipeline.
+    pub fn model(&self) -> &'static UnitModel {
+        self.unit().model
+    }
+
+    /// The rtl block, behind the paths that need its type.
+    pub fn rtl(&self) -> &'static dyn RtlPaths {
+        self.unit().rtl
+    }
+
     /// Whether the pipeline can render the scene as the scene asks: the height and palette pipelines only a quad
     /// (an address unit walking one flat map; a colour table of one light a frame), a Cartesian pipeline without
     /// the gloss unit only a matte material (C = 0).
@@ -166,31 +181,19 @@ pub fn palette(s_n: usize) -> Choices {
     one_light(Encoding::Palette, true, palette_index_bits(s_n))
 }
 
-use vectors::cart_pipeline as cp;
-use vectors::cart_surface as cs;
-
 const fn cart(
     name: &'static str,
     label: &'static str,
     decode: Decode,
     gloss: bool,
     units: &'static [&'static str],
-    model: &'static UnitModel,
-    rtl: &'static dyn RtlPaths,
 ) -> Row {
     let serves = cartesian(decode, Per::Vertex, gloss, Filter::Bilinear);
-    Row { name, family: Family::Cartesian(decode), label, units, serves, model, rtl }
+    Row { name, family: Family::Cartesian(decode), label, units, serves }
 }
 
-const fn surf(
-    name: &'static str,
-    label: &'static str,
-    v: Variant,
-    units: &'static [&'static str],
-    model: &'static UnitModel,
-    rtl: &'static dyn RtlPaths,
-) -> Row {
-    Row { name, family: Family::CartSurface(v), label, units, serves: surface(v), model, rtl }
+const fn surf(name: &'static str, label: &'static str, v: Variant, units: &'static [&'static str]) -> Row {
+    Row { name, family: Family::CartSurface(v), label, units, serves: surface(v) }
 }
 
 const S: Decode = Decode::Seed;
@@ -207,8 +210,6 @@ pub static PIPELINES: &[Row] = &[
         S,
         true,
         &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
-        &cp::MODEL,
-        &Rtl::<rtl::cart_pipeline::CartPipeline>::PATHS,
     ),
     cart(
         "cart_pipeline_hemi_oct",
@@ -216,8 +217,6 @@ pub static PIPELINES: &[Row] = &[
         H,
         true,
         &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "gloss", "blend"],
-        &cp::MODEL_HEMI_OCT,
-        &Rtl::<rtl::cart_pipeline::CartPipelineHemiOct>::PATHS,
     ),
     cart(
         "cart_pipeline_matte",
@@ -225,8 +224,6 @@ pub static PIPELINES: &[Row] = &[
         S,
         false,
         &["bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
-        &cp::MODEL_MATTE,
-        &Rtl::<rtl::cart_pipeline::CartPipelineMatte>::PATHS,
     ),
     cart(
         "cart_pipeline_hemi_oct_matte",
@@ -234,72 +231,54 @@ pub static PIPELINES: &[Row] = &[
         H,
         false,
         &["bilinear", "cart_decode_hemi_oct", "normalise", "light_iter", "dot3", "blend"],
-        &cp::MODEL_HEMI_OCT_MATTE,
-        &Rtl::<rtl::cart_pipeline::CartPipelineHemiOctMatte>::PATHS,
     ),
     surf(
         "cart_surface",
         "Cartesian, one light",
         v(S, false, true),
         &["bilinear", "cart_decode", "normalise", "dot3", "gloss", "blend"],
-        &cs::MODEL,
-        &Rtl::<rtl::cart_surface::CartSurface>::PATHS,
     ),
     surf(
         "cart_surface_matte",
         "Cartesian, one light, matte",
         v(S, false, false),
         &["bilinear", "cart_decode", "normalise", "dot3", "blend"],
-        &cs::MODEL_MATTE,
-        &Rtl::<rtl::cart_surface::CartSurfaceMatte>::PATHS,
     ),
     surf(
         "cart_surface_hemi_oct",
         "hemi-oct, one light",
         v(H, false, true),
         &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
-        &cs::MODEL_HEMI_OCT,
-        &Rtl::<rtl::cart_surface::CartSurfaceHemiOct>::PATHS,
     ),
     surf(
         "cart_surface_hemi_oct_matte",
         "hemi-oct, one light, matte",
         v(H, false, false),
         &["bilinear", "cart_decode_hemi_oct", "normalise", "dot3", "blend"],
-        &cs::MODEL_HEMI_OCT_MATTE,
-        &Rtl::<rtl::cart_surface::CartSurfaceHemiOctMatte>::PATHS,
     ),
     surf(
         "cart_surface_nearest",
         "Cartesian, nearest, one light",
         v(S, true, true),
         &["cart_decode", "normalise", "dot3", "gloss", "blend"],
-        &cs::MODEL_NEAREST,
-        &Rtl::<rtl::cart_surface::CartSurfaceNearest>::PATHS,
     ),
     surf(
         "cart_surface_nearest_matte",
         "Cartesian, nearest, one light, matte",
         v(S, true, false),
         &["cart_decode", "normalise", "dot3", "blend"],
-        &cs::MODEL_NEAREST_MATTE,
-        &Rtl::<rtl::cart_surface::CartSurfaceNearestMatte>::PATHS,
     ),
     surf(
         "cart_surface_nearest_hemi_oct",
         "hemi-oct, nearest, one light",
         v(H, true, true),
         &["cart_decode_hemi_oct", "normalise", "dot3", "gloss", "blend"],
-        &cs::MODEL_NEAREST_HEMI_OCT,
-        &Rtl::<rtl::cart_surface::CartSurfaceNearestHemiOct>::PATHS,
     ),
     surf(
         "cart_surface_nearest_hemi_oct_matte",
         "hemi-oct, nearest, one light, matte",
         v(H, true, false),
         &["cart_decode_hemi_oct", "normalise", "dot3", "blend"],
-        &cs::MODEL_NEAREST_HEMI_OCT_MATTE,
-        &Rtl::<rtl::cart_surface::CartSurfaceNearestHemiOctMatte>::PATHS,
     ),
     Row {
         name: "polar_pipeline",
@@ -307,8 +286,6 @@ pub static PIPELINES: &[Row] = &[
         label: "polar",
         units: &["polar_shade", "power", "blend"],
         serves: one_light(Encoding::Polar, false, 0),
-        model: &vectors::polar_pipeline::MODEL,
-        rtl: &Rtl::<rtl::polar_pipeline::PolarPipelineSeed>::PATHS,
     },
     Row {
         name: "polar_pipeline_dc",
@@ -316,8 +293,6 @@ pub static PIPELINES: &[Row] = &[
         label: "polar",
         units: &["polar_shade_dc", "power", "blend"],
         serves: one_light(Encoding::PolarDc255, false, 0),
-        model: &vectors::polar_pipeline::MODEL_DC,
-        rtl: &Rtl::<rtl::polar_pipeline::PolarPipelineDc>::PATHS,
     },
     Row {
         name: "height_pipeline",
@@ -325,8 +300,6 @@ pub static PIPELINES: &[Row] = &[
         label: "height map",
         units: &["replicate", "blend_adjust", "bilinear", "tangent", "height_normal", "normalise"],
         serves: one_light(Encoding::Heights, false, 0),
-        model: &vectors::height_pipeline::MODEL,
-        rtl: &Rtl::<rtl::height_pipeline::HeightPipeline>::PATHS,
     },
     Row {
         name: "palette_pipeline",
@@ -334,8 +307,6 @@ pub static PIPELINES: &[Row] = &[
         label: "palette 256",
         units: &["normalise", "dot3", "gloss", "palette_lookup"],
         serves: one_light(Encoding::Palette, true, 8),
-        model: &vectors::palette_pipeline::MODEL,
-        rtl: &Rtl::<rtl::palette_pipeline::PalettePipeline<8, 9>>::PATHS,
     },
     Row {
         name: "palette_pipeline_12",
@@ -343,8 +314,6 @@ pub static PIPELINES: &[Row] = &[
         label: "palette 4096",
         units: &["normalise", "dot3", "gloss", "palette_lookup"],
         serves: one_light(Encoding::Palette, true, 12),
-        model: &vectors::palette_pipeline::MODEL_12,
-        rtl: &Rtl::<rtl::palette_pipeline::PalettePipeline<12, 13>>::PATHS,
     },
 ];
 
@@ -385,10 +354,10 @@ mod tests {
         let mut names = std::collections::BTreeSet::new();
         for r in PIPELINES {
             assert!(names.insert(r.name), "{} twice", r.name);
-            assert_eq!((r.model.name, r.rtl.name()), (r.name, r.name));
-            assert!(vectors::unit::find(r.name).is_some(), "{} is in the unit table", r.name);
+            assert!(crate::units::find(r.name).is_some(), "{} is in the unit table", r.name);
+            assert_eq!((r.model().name, r.rtl().name()), (r.name, r.name));
             for u in r.units {
-                assert!(vectors::unit::find(u).is_some(), "{}: unit {u} is not in the unit table", r.name);
+                assert!(crate::units::find(u).is_some(), "{}: unit {u} is not in the unit table", r.name);
             }
         }
     }
@@ -416,7 +385,7 @@ mod tests {
                 (variant.decode == Decode::HemiOct, variant.decode == Decode::Seed)
             );
             assert!(!has("light_iter") && r.units.iter().filter(|u| **u == "normalise").count() == 1, "{variant:?}");
-            assert_eq!(r.model.name, variant.model().name, "{variant:?}");
+            assert_eq!(r.model().name, variant.model().name, "{variant:?}");
             seen.push(variant);
         }
         assert!(Variant::ALL.iter().all(|v| seen.contains(v)) && seen.len() == 8);

@@ -1,27 +1,63 @@
-//! A pipeline's rtl block behind a trait object: the paths that need its type (rust-hdl, Verilator, the VCD, the
-//! Verilog, synthesis), so that the table of pipelines (`crate::pipelines`) can name each block as a value.
+//! An rtl block behind a trait object: everything that needs the block's type (rust-hdl, Verilator, the VCD, the
+//! Verilog, yosys and nextpnr, the width analysis), so that the tables of units and pipelines (`crate::units`,
+//! `crate::pipelines`) can name each block as a value, and the code that reads them needs no type parameter.
+//!
+//! Two levels, so that a block is compiled for no more than its row needs: `RtlBlock` is what a swept setting of a
+//! unit's width parameters is read through (its Verilog, its cells, its widths); `RtlPaths` adds what a unit of the
+//! table is run through (its waveform, its self-checking export, placement, rendering). `Rtl::<U>::PATHS` is both.
 
 use crate::prepared::Prepared;
 use crate::render::{self, Image, VerilatorRun};
 use rtl::StreamUnit;
 use std::marker::PhantomData;
-use std::path::Path;
-use synth::fpga::{Fit, Part};
+use std::path::{Path, PathBuf};
+use synth::fpga::{Blocks, Cells, Family, Fit, Part, SynthReport};
 use vectors::UnitModel;
 
-/// What a pipeline's rtl block does in the paths that need its type; `Rtl::<U>::PATHS` is one.
-pub trait RtlPaths: Sync {
+/// A block as its Verilog, its cells and its widths.
+pub trait RtlBlock: Sync {
     fn name(&self) -> &'static str;
     fn latency(&self) -> usize;
-    fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image;
-    fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
-    fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String>;
-    /// The prepared vectors through rust-hdl with every signal traced to `path`: the outputs past the prologue.
-    fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String>;
-    fn export(&self, dir: &Path) -> Result<(), String>;
     /// The exported module's text.
     fn verilog(&self) -> String;
+    /// The module written to `dir/<name>.v`: that path.
+    fn export(&self, dir: &Path) -> Result<PathBuf, String>;
+    /// Its yosys cells in `family` (cached).
+    fn synth_unit(&self, dir: &Path, family: Family) -> Result<Cells, String>;
+    /// Every signal's declared format and its range proven over `m`'s input ports (no simulation).
+    fn analyse(&self, m: &UnitModel) -> widths::Analysis;
+    /// `inputs` through rust-hdl, every signal probed every clock; `tick` gets the vectors done.
+    fn seen(&self, m: &UnitModel, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> widths::Ranges;
+}
+
+/// A unit's block as every path runs it.
+pub trait RtlPaths: RtlBlock {
+    fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image;
+    fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
+    /// The outputs of `inputs` through rust-hdl, back to back, as values.
+    fn outputs(&self, m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Vec<i64>>;
+    fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String>;
+    /// The VCD of `inputs` into any writer (standard output, say); Err when a write failed.
+    fn trace(&self, m: &UnitModel, inputs: &[Vec<i64>], w: Box<dyn std::io::Write>) -> std::io::Result<()>;
+    /// The prepared vectors through rust-hdl with every signal traced to `path`: the outputs past the prologue.
+    fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String>;
+    /// A self-checking testbench of these bit patterns beside the module in `dir`: the files written.
+    fn selfcheck(&self, dir: &Path, ins: &[Vec<u64>], outs: &[Vec<u64>], source: &str) -> Result<Vec<PathBuf>, String>;
+    /// Cells and, for each part that holds them, placement and timing.
     fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String>;
+    /// The part it is placed on when the user names none, its cells there, and why each smaller part was passed over.
+    fn choose(&self, dir: &Path) -> Result<(Part, Cells, String), String>;
+    fn synth_and_place(&self, dir: &Path, part: Part, freq_mhz: f64, choice: &str) -> Result<SynthReport, String>;
+    fn synth_and_place_cached(&self, dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String>;
+    /// Its cells with some inputs tied to constants (a mode's view of the block).
+    fn synth_tied(
+        &self,
+        dir: &Path,
+        family: Family,
+        tag: &str,
+        ties: &[(&str, u64)],
+        keep: &[&str],
+    ) -> Result<(Cells, Blocks), String>;
 }
 
 /// The paths of the rtl block `U`.
@@ -31,33 +67,77 @@ impl<U: StreamUnit + Send + 'static> Rtl<U> {
     pub const PATHS: Rtl<U> = Rtl(PhantomData);
 }
 
-impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
+impl<U: StreamUnit + Send + 'static> RtlBlock for Rtl<U> {
     fn name(&self) -> &'static str {
         U::NAME
     }
     fn latency(&self) -> usize {
         U::LATENCY
     }
+    fn verilog(&self) -> String {
+        synth::export::<U>().text
+    }
+    fn export(&self, dir: &Path) -> Result<PathBuf, String> {
+        synth::export::<U>().write(dir)
+    }
+    fn synth_unit(&self, dir: &Path, family: Family) -> Result<Cells, String> {
+        synth::fpga::synth_unit::<U>(dir, family)
+    }
+    fn analyse(&self, m: &UnitModel) -> widths::Analysis {
+        widths::analyse::<U>(m)
+    }
+    fn seen(&self, m: &UnitModel, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> widths::Ranges {
+        widths::seen_ticking::<U>(m, inputs, tick)
+    }
+}
+
+impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
     fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image {
         render::rust_hdl::<U>(m, p, tick)
     }
     fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String> {
         render::verilator::<U>(m, p, dir, threads)
     }
+    fn outputs(&self, m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+        let mut r = rtl::stream::Runner::<U>::new();
+        let got = r.run(inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))));
+        got.outputs.iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect()
+    }
     fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String> {
         crate::wave::write_vcd::<U>(m, inputs, path).map(|_| ())
+    }
+    fn trace(&self, m: &UnitModel, inputs: &[Vec<i64>], w: Box<dyn std::io::Write>) -> std::io::Result<()> {
+        crate::wave::trace::<U>(m, inputs, w).map(|_| ())
     }
     fn traced(&self, m: &UnitModel, p: &Prepared, path: &Path) -> Result<Vec<Vec<i64>>, String> {
         let got = crate::wave::write_vcd::<U>(m, &p.inputs, path)?;
         Ok(got[p.prologue.min(got.len())..].iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect())
     }
-    fn export(&self, dir: &Path) -> Result<(), String> {
-        synth::export::<U>().write(dir).map(|_| ())
-    }
-    fn verilog(&self) -> String {
-        synth::export::<U>().text
+    fn selfcheck(&self, dir: &Path, ins: &[Vec<u64>], outs: &[Vec<u64>], source: &str) -> Result<Vec<PathBuf>, String> {
+        let mut written = vec![self.export(dir)?];
+        written.extend(synth::selfcheck::write::<U>(dir, ins, outs, source)?);
+        Ok(written)
     }
     fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
         synth::fpga::measure::<U>(dir, parts, say)
+    }
+    fn choose(&self, dir: &Path) -> Result<(Part, Cells, String), String> {
+        synth::fpga::choose::<U>(dir)
+    }
+    fn synth_and_place(&self, dir: &Path, part: Part, freq_mhz: f64, choice: &str) -> Result<SynthReport, String> {
+        synth::fpga::synth_and_place::<U>(dir, part, freq_mhz, choice)
+    }
+    fn synth_and_place_cached(&self, dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
+        synth::fpga::synth_and_place_cached::<U>(dir, part, freq_mhz)
+    }
+    fn synth_tied(
+        &self,
+        dir: &Path,
+        family: Family,
+        tag: &str,
+        ties: &[(&str, u64)],
+        keep: &[&str],
+    ) -> Result<(Cells, Blocks), String> {
+        synth::fpga::synth_tied::<U>(dir, family, tag, ties, keep)
     }
 }

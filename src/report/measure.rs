@@ -17,24 +17,21 @@ fn knob_delta(k: Knobs, dir: &Path) -> Result<[i64; 5], String> {
     let diff = |a: [i64; 5], b: [i64; 5], div: i64| -> [i64; 5] { std::array::from_fn(|i| (a[i] - b[i]) / div) };
     let mut total = [0i64; 5];
     if (k.table_bits, k.newton) != (UNIT_KNOBS.table_bits, UNIT_KNOBS.newton) {
-        let f = crate::widths::normalise_block(k.table_bits, k.newton)
-            .ok_or(format!("no Normalise<{}, {}>", k.table_bits, k.newton))?;
-        let own =
-            crate::widths::normalise_block(UNIT_KNOBS.table_bits, UNIT_KNOBS.newton).ok_or("no Normalise<10, 0>")?;
+        let f = crate::units::block("normalise", (k.table_bits, k.newton))?;
+        let own = crate::units::block("normalise", (UNIT_KNOBS.table_bits, UNIT_KNOBS.newton))?;
         let d = diff(
-            cells(f(&dir.join(format!("normalise_t{}n{}", k.table_bits, k.newton)), fam)?),
-            cells(own(&dir.join("normalise_t10n0"), fam)?),
+            cells(f.synth_unit(&dir.join(format!("normalise_t{}n{}", k.table_bits, k.newton)), fam)?),
+            cells(own.synth_unit(&dir.join("normalise_t10n0"), fam)?),
             1,
         );
         total = std::array::from_fn(|i| total[i] + d[i]);
     }
     if (k.blend_bits, k.drop) != (UNIT_KNOBS.blend_bits, UNIT_KNOBS.drop) {
-        let f = crate::widths::bilinear_block(k.blend_bits, k.drop)
-            .ok_or(format!("no Bilinear<{}, {}>", k.blend_bits, k.drop))?;
-        let own = crate::widths::bilinear_block(UNIT_KNOBS.blend_bits, UNIT_KNOBS.drop).ok_or("no Bilinear<8, 0>")?;
+        let f = crate::units::block("bilinear", (k.blend_bits, k.drop))?;
+        let own = crate::units::block("bilinear", (UNIT_KNOBS.blend_bits, UNIT_KNOBS.drop))?;
         let d = diff(
-            cells(f(&dir.join(format!("bilinear_f{}d{}", k.blend_bits, k.drop)), fam)?),
-            cells(own(&dir.join("bilinear_f8d0"), fam)?),
+            cells(f.synth_unit(&dir.join(format!("bilinear_f{}d{}", k.blend_bits, k.drop)), fam)?),
+            cells(own.synth_unit(&dir.join("bilinear_f8d0"), fam)?),
             2,
         );
         total = std::array::from_fn(|i| total[i] + d[i]);
@@ -120,17 +117,11 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<PointFigures, Str
     let [mut lut4, mut ff, mut dsp, mut bram, mut soft] = [c.lut4, c.ff, c.dsp, c.bram, c.soft].map(|x| x as i64);
     if p.lut != OWN_LUT {
         // the pipeline's SinCos<8, 8> against SinCos<lut, 8>
-        let f = |tb: u32| {
-            crate::blocks::SINCOS_BLOCKS
-                .iter()
-                .find(|b| (b.0, b.1) == (tb, 8))
-                .map(|b| b.2)
-                .ok_or(format!("no SinCos<{tb}, 8>"))
-        };
+        let f = |tb: u32| crate::units::block("sincos", (tb, 8));
         let kd = dir.join("synth").join("knobs");
         let (a, b) = (
-            f(p.lut)?(&kd.join(format!("sincos_t{}w8", p.lut)), synth::fpga::Family::Ice40)?,
-            f(OWN_LUT)?(&kd.join("sincos_t8w8"), synth::fpga::Family::Ice40)?,
+            f(p.lut)?.synth_unit(&kd.join(format!("sincos_t{}w8", p.lut)), synth::fpga::Family::Ice40)?,
+            f(OWN_LUT)?.synth_unit(&kd.join("sincos_t8w8"), synth::fpga::Family::Ice40)?,
         );
         (lut4, ff, dsp, bram) = (
             lut4 + a.lut4 as i64 - b.lut4 as i64,

@@ -12,7 +12,7 @@ pub struct Habit {
 }
 
 /// rust-hdl's habits. A warning is waived only when the Verilog line it points at shows the habit; anything else is
-/// the design's, and fails the lint unless the unit's own table entry (`vectors::unit_table!`) waives that signal.
+/// the design's, and fails the lint unless the unit's own row in the table of units (`sim::units::UNITS`) waives that signal.
 pub const HABITS: &[Habit] = &[
     Habit {
         name: "WIDTH/literal",

@@ -166,7 +166,9 @@ pub fn lint<U: StreamUnit>() -> Vec<String> {
     let dir = work_dir("lint", U::NAME);
     let v = synth::export::<U>();
     let f = v.write(&dir).unwrap_or_else(|e| panic!("{e}"));
-    synth::lint::lint(&dir, &f, U::NAME, vectors::unit::lint_waivers(U::NAME)).unwrap_or_else(|e| panic!("{e}")).design
+    let waivers =
+        sim::units::find(U::NAME).unwrap_or_else(|| panic!("{} is not in sim::units::UNITS", U::NAME)).waivers;
+    synth::lint::lint(&dir, &f, U::NAME, waivers).unwrap_or_else(|e| panic!("{e}")).design
 }
 
 /// The standard tests every unit gets: golden vectors, three-way identity, bubbles, lint; and, for a unit whose

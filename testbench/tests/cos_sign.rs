@@ -33,7 +33,7 @@ fn every_d_three_ways_in_two_sizes() {
 
 #[test]
 fn rtl_entries_are_the_models_for_every_size_of_the_lut_table() {
-    for &(tb, w) in vectors::cos_sign::LUT_SIZES {
+    for (tb, w) in sim::units::settings("cos_sign").map(|s| s.params) {
         let r = rtl::tables::cos_sign(false, tb as usize, w as usize);
         for (i, e) in r.iter().enumerate() {
             let d = (i as i64) << (8 - tb);

@@ -80,7 +80,7 @@ fn other_table_sizes_three_ways() {
 
 #[test]
 fn rtl_entries_are_the_models_for_every_size_of_the_lut_table() {
-    for &(tb, w) in vectors::sincos::LUT_SIZES {
+    for (tb, w) in sim::units::settings("sincos").map(|s| s.params) {
         let m = vectors::sincos::elevation_table(Scale::Seed, tb, w);
         let r = rtl::tables::elevation(false, tb as usize, w as usize);
         assert_eq!(r.len(), m.len());

@@ -72,4 +72,4 @@ pub use height::{
 pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
-pub use unit::{Port, UnitModel, UNITS};
+pub use unit::{Port, UnitModel};

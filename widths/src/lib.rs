@@ -425,6 +425,70 @@ pub fn mismatches(m: &UnitModel, inputs: &[Vec<i64>], outputs: &[Vec<u64>]) -> u
     differ + want.len().abs_diff(outputs.len())
 }
 
+/// What the width analysis reads of a block without simulating it: every signal's declared format, and the proof of
+/// the range each takes over every input sequence (the model's ports at their full ranges).
+pub struct Analysis {
+    pub formats: Formats,
+    pub proof: bounds::Proof,
+}
+
+impl Analysis {
+    /// Every step of the block that may leave its target's declared range.
+    pub fn sites(&self) -> Vec<Site> {
+        sites(&self.formats, &self.proof)
+    }
+}
+
+/// The block `U` analysed over the ranges of `m`'s input ports.
+pub fn analyse<U: StreamUnit>(m: &UnitModel) -> Analysis {
+    let formats = Formats::of::<U>();
+    let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
+    let signed = |n: &str| formats.format(n).is_some_and(|x| x.signed);
+    let proof = bounds::prove(&U::build(), &ports, &signed);
+    Analysis { formats, proof }
+}
+
+/// The simulation against the analysis: every probed signal but the clocks must have a declared format as wide as
+/// the simulator's signal, take only values that format holds, and stay inside the range the proof gives (the proof
+/// is sound, or this names the signal). One line per failure.
+pub fn audit(ranges: &Ranges, a: &Analysis) -> Vec<String> {
+    let mut bad = vec![];
+    for s in &ranges.signals {
+        if s.name.ends_with("clock") {
+            continue;
+        }
+        let Some(fmt) = a.formats.format(&s.name) else {
+            bad.push(format!("{}: no declared format", s.name));
+            continue;
+        };
+        if fmt.bits != s.bits {
+            bad.push(format!("{}: declared {} ({} bits), simulated {} bits", s.name, fmt.name, fmt.bits, s.bits));
+            continue;
+        }
+        let (lo, hi) = if fmt.signed { (s.smin as i128, s.smax as i128) } else { (s.umin as i128, s.umax as i128) };
+        match a.proof.values.get(&s.name) {
+            Some(p) => {
+                let pieces = if fmt.signed { p.signed() } else { p.unsigned() };
+                for x in [lo, hi] {
+                    if !pieces.iter().any(|&(a, b)| a <= x && x <= b) {
+                        bad.push(format!("{}: seen {x} outside the proven {pieces:?}", s.name));
+                    }
+                }
+            }
+            None => bad.push(format!("{}: no proven range", s.name)),
+        }
+        let fits = if fmt.signed {
+            s.smin >= -(1i64 << (s.bits - 1)) && s.smax < 1i64 << (s.bits - 1)
+        } else {
+            s.bits >= 64 || s.umax < 1u64 << s.bits
+        };
+        if !fits {
+            bad.push(format!("{}: seen outside {}", s.name, fmt.q()));
+        }
+    }
+    bad
+}
+
 /// A step the proof finds may leave its target's declared range: the signal it writes (VCD name), the block that
 /// owns the step and the signal's name there, what the step computes, and its entry in `wraps` if it is listed.
 pub struct Site {

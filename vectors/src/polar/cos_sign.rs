@@ -8,17 +8,6 @@ use std::f64::consts::TAU;
 
 pub const TABLE_BITS: u32 = 8;
 pub const WIDTH: u32 = 8;
-/// The (table bits, width) pairs of the LUT-size table, 16, 64 and 256 entries of 8 and 12 bits, written once (as
-/// `sincos_lut_sizes!`).
-#[macro_export]
-macro_rules! cos_sign_lut_sizes {
-    ($then:ident) => {
-        $then! { (4, 8), (6, 8), (8, 8), (4, 12), (6, 12), (8, 12) }
-    };
-}
-
-use crate::lut_size_slice;
-pub const LUT_SIZES: &[(u32, u32)] = crate::cos_sign_lut_sizes!(lut_size_slice);
 
 crate::ports! {
     inputs: [

@@ -114,26 +114,6 @@ pub static MODEL: UnitModel = UnitModel::new("sincos", (INPUTS, OUTPUTS), exact_
     .with_exhaustive(exhaustive)
     .with_accuracy(accuracy);
 
-/// The (table bits, width) pairs of the LUT-size table, 64, 256 and 1,024 entries of 8, 10 and 12 bits, written once:
-/// `sincos_lut_sizes!(callback)` expands to `callback! { (6, 8), (8, 8), ... }`, so that the rtl blocks of each
-/// size (`bumprtl accuracy --lut-cost`) come from the same list as `LUT_SIZES`.
-#[macro_export]
-macro_rules! sincos_lut_sizes {
-    ($then:ident) => {
-        $then! { (6, 8), (8, 8), (10, 8), (6, 10), (8, 10), (10, 10), (6, 12), (8, 12), (10, 12) }
-    };
-}
-
-/// A list of (table bits, width) pairs as a slice.
-#[macro_export]
-macro_rules! lut_size_slice {
-    ($(($tb:literal, $w:literal)),* $(,)?) => {
-        &[$(($tb, $w)),*]
-    };
-}
-
-pub const LUT_SIZES: &[(u32, u32)] = crate::sincos_lut_sizes!(lut_size_slice);
-
 /// One row of the LUT-size table: max and mean |error| of sin and cos over every 10-bit angle, in LSBs of an
 /// 8-bit output (so widths compare), for a table of 2^tb entries of w bits.
 #[derive(Clone, Debug)]

@@ -73,16 +73,6 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
 pub static MODEL: UnitModel =
     UnitModel::new("bilinear", (INPUTS, OUTPUTS), exact_ports, random_inputs, hard_cases).with_accuracy(accuracy);
 
-/// The width sweep's settings (blend bits F, bits D dropped between the stages), the unit's own (8, 0) first; the
-/// rtl `Bilinear<F, D>` of each comes from the same list (`bilinear_sizes!(callback)` expands to
-/// `callback! { (8, 0), (7, 0), ... }`).
-#[macro_export]
-macro_rules! bilinear_sizes {
-    ($then:ident) => {
-        $then! { (8, 0), (7, 0), (6, 0), (5, 0), (4, 0), (8, 2), (8, 4), (6, 2) }
-    };
-}
-
 /// The unit with `f` blend bits and `d` dropped: each 8-bit position keeps its top `f` bits (floor), every channel
 /// `exact_channel_with`. At (8, 0) this is the unit's own `exact`.
 pub fn exact_sized(i: &[i64], f: u32, d: u32) -> Vec<i64> {

@@ -1,0 +1,125 @@
+//! The table of units (`sim::units`) against what it stands for: each row's model and rtl block carry its name, its
+//! golden vector file is committed and every committed one has its row, its testbench runs the standard tests,
+//! every waiver it lists names a signal its Verilog really has, and every swept setting builds its own unit inside
+//! the range its model's tests cover.
+use sim::units::{SETTINGS, SOFTWARE_ONLY, UNITS};
+use std::collections::BTreeSet;
+
+fn root() -> std::path::PathBuf {
+    std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+#[test]
+fn every_row_names_its_model_and_its_block_alike_and_no_name_twice() {
+    let mut names = BTreeSet::new();
+    for u in UNITS {
+        assert_eq!(u.rtl.name(), u.model.name, "the rtl block of `{}`", u.model.name);
+        assert!(names.insert(u.name()), "`{}` twice", u.name());
+    }
+    for s in SOFTWARE_ONLY {
+        assert!(!names.contains(s), "`{s}` is software only and has a row");
+    }
+}
+
+#[test]
+fn every_row_has_its_golden_file_and_its_standard_tests_and_every_golden_file_its_row() {
+    let tests: String = std::fs::read_dir(root().join("testbench/tests"))
+        .expect("testbench/tests")
+        .filter_map(|e| std::fs::read_to_string(e.ok()?.path()).ok())
+        .collect();
+    for u in UNITS {
+        let name = u.name();
+        assert!(
+            root().join("vectors/data").join(format!("{name}.csv")).is_file(),
+            "no vectors/data/{name}.csv: `bumprtl vectors {name}` writes it"
+        );
+        assert!(tests.contains(&format!("unit_tests!({name},")), "no `unit_tests!({name}, ...)` in testbench/tests");
+    }
+    for e in std::fs::read_dir(root().join("vectors/data")).expect("vectors/data") {
+        let p = e.expect("an entry").path();
+        if p.extension().is_some_and(|x| x == "csv") {
+            let stem = p.file_stem().unwrap().to_string_lossy().into_owned();
+            assert!(sim::units::find(&stem).is_some(), "vectors/data/{stem}.csv has no row in sim::units::UNITS");
+        }
+    }
+}
+
+#[test]
+fn every_waiver_names_a_signal_of_its_unit_and_says_why() {
+    for u in UNITS.iter().filter(|u| !u.waivers.is_empty()) {
+        let verilog = u.rtl.verilog();
+        for (sig, why) in u.waivers {
+            let (inst, port) = sig.split_once('$').expect("instance$port");
+            assert!(
+                verilog.contains(&format!("{inst}${port}")),
+                "`{}` waives `{sig}`, which its Verilog does not have",
+                u.name()
+            );
+            assert!(!why.trim().is_empty(), "`{}` waives `{sig}` without a reason", u.name());
+        }
+    }
+}
+
+#[test]
+fn software_only_units_have_no_vectors() {
+    for name in SOFTWARE_ONLY {
+        assert!(sim::units::unit(name).is_err(), "{name}");
+        assert!(!root().join("vectors/data").join(format!("{name}.csv")).exists(), "{name}");
+    }
+}
+
+#[test]
+fn every_unit_but_a_pipeline_measures_its_own_accuracy() {
+    // a pipeline's error is measured on a scene (the demo, `sim::pipeline`), and may be measured here too; every
+    // other unit states its own
+    for u in UNITS {
+        let m = u.model;
+        let pipeline = m.name.contains("pipeline");
+        assert!(m.accuracy.is_some() || pipeline, "`{}`: UnitModel::with_accuracy", m.name);
+        if let Some(f) = m.accuracy {
+            let rows = f(1_000, 1);
+            assert!(!rows.is_empty() && rows.iter().all(|r| r.stats.count > 0), "`{}` measures something", m.name);
+        }
+    }
+}
+
+#[test]
+fn every_swept_setting_builds_its_own_unit_once_and_the_units_own_setting_first() {
+    // the unit's own parameters, as its model states them
+    let own = |unit: &str| match unit {
+        "normalise" => (vectors::normalise::TABLE_BITS, vectors::normalise::NEWTON),
+        "sincos" => (vectors::sincos::TABLE_BITS, vectors::sincos::WIDTH),
+        "cos_sign" => (vectors::cos_sign::TABLE_BITS, vectors::cos_sign::WIDTH),
+        "bilinear" => (vectors::bilinear::F, 0),
+        "power" => (vectors::power::LOG_FRAC, vectors::power::EXP_BITS),
+        other => panic!("a swept setting of `{other}`, whose own parameters this test does not know"),
+    };
+    let mut seen = BTreeSet::new();
+    for s in SETTINGS {
+        assert!(sim::units::find(s.unit).is_some(), "a setting of `{}`, which has no row", s.unit);
+        assert_eq!(s.rtl.name(), s.unit, "the block of {} {:?}", s.unit, s.params);
+        assert!(seen.insert((s.unit, s.params)), "{} {:?} twice", s.unit, s.params);
+    }
+    for unit in ["normalise", "bilinear", "power"] {
+        assert_eq!(sim::units::settings(unit).next().map(|s| s.params), Some(own(unit)), "{unit}: its own first");
+    }
+    for unit in ["sincos", "cos_sign"] {
+        // the LUT-size tables go by size; the unit's own is among them
+        assert!(sim::units::setting(unit, own(unit)).is_some(), "{unit}");
+    }
+}
+
+#[test]
+fn the_models_tests_of_every_size_cover_every_swept_setting() {
+    // vectors::normalise's Newton-step widths are tested for tables of 6 to 12 bits, vectors::power's ends and
+    // widths for L of 8 to LOG_FRAC fraction bits and E of 6 to 9 index bits: a setting outside them is untested
+    for s in SETTINGS {
+        let (a, b) = s.params;
+        let covered = match s.unit {
+            "normalise" => (6..=12).contains(&a) && b <= 1,
+            "power" => (8..=vectors::power::LOG_FRAC).contains(&a) && (6..=9).contains(&b),
+            _ => true,
+        };
+        assert!(covered, "{} {:?}", s.unit, s.params);
+    }
+}
