@@ -149,6 +149,7 @@ pub static UNITS: &[Unit] = &[
     )]),
     Unit::new(&vectors::polar_pipeline::MODEL_DC, &Rtl::<rtl::polar_pipeline::PolarPipelineDc>::PATHS)
         .waiving(&[("shader$sum", "as in polar_pipeline")]),
+    Unit::new(&vectors::lod::MODEL, &Rtl::<rtl::lod::Lod>::PATHS),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

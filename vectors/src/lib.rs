@@ -59,6 +59,11 @@ pub mod palette {
     pub mod tables;
 }
 
+/// The texture unit in front of every family: level of detail.
+pub mod texture {
+    pub mod lod;
+}
+
 pub mod csv;
 pub mod stats;
 pub mod unit;
@@ -72,4 +77,5 @@ pub use height::{
 pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
+pub use texture::lod;
 pub use unit::{Port, UnitModel};

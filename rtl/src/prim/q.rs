@@ -40,6 +40,8 @@ q_types! {
     Sq7_2 = Bits<10>;
     /// The light interpolator's accumulator: l0·256 + Σ d·w, eight fraction bits.
     Sq11_8 = Bits<20>;
+    /// A screen derivative of a texture coordinate, texels of level 0 a pixel (the level of detail's input).
+    Sq8_8 = Bits<17>;
     /// A unit vector's components, 1024 = 1.0.
     Sq1_10 = Bits<12>;
     /// A product of two `Sq1_10`, or the sum of three (|Σ| < 3·2^20 < 2^22, with room).
@@ -50,6 +52,10 @@ q_types! {
     Uq6_3 = Bits<9>;
     /// The normaliser's table entries, 2^12/√m ∈ 2049..4096.
     Uq1_12 = Bits<13>;
+    /// log2 of a mantissa, the level of detail's table.
+    Uq0_9 = Bits<9>;
+    /// A level of detail λ, ten fraction bits.
+    Uq4_10 = Bits<14>;
 }
 
 /// A two's complement integer of a width a block takes as a parameter (`SmMul<N>`'s operand).

@@ -1,0 +1,269 @@
+//! `lod`: the texture unit's level of detail, OpenGL's isotropic rule: from the four screen derivatives of u and v
+//! (Sq8.8, texels of level 0 a pixel) and the map's side 2^n, the level ⌊λ⌋, frac(λ) in 8 bits and the nearest
+//! level ⌊λ + ½⌋, λ = log2 ρ clamped to [0, n]; see `vectors::lod` for the exact recipe. ρ² comes from four
+//! squarers, log2 from the leading one of ρ² and a 256-entry table of its next 8 bits. Latency 10: magnitudes
+//! (saturated to U16); the squarers' operand register; the squares; the two sums; the larger; the leading one;
+//! the normalising shift; the table (its read register); λ; the clamps.
+
+use crate::prim::delay::Delay;
+use crate::prim::q::{Sq8_8, Uq0_9, Uq4_10, U16, U8};
+use rust_hdl::prelude::*;
+use rust_hdl::widgets::prelude::ROM;
+
+/// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
+pub const LATENCY: usize = 10;
+
+/// The table: entry f = round(log2(1 + (f + ½)/256)·2^9), the log of the midpoint of the mantissa's bin. The
+/// model's `vectors::lod::table_entry` is the same formula written apart; a test compares the two entry by entry.
+pub fn table() -> Vec<u64> {
+    (0..256u64).map(|f| ((1.0 + (f as f64 + 0.5) / 256.0).log2() * 512.0).round() as u64).collect()
+}
+
+crate::block! {
+    /// The log table as a block of its own (a ROM, the block RAM's read register after it in the unit).
+    pub struct LogMantissa {
+        pub address: Signal<In, U8>,
+        pub data: Signal<Out, Uq0_9>,
+        rom: ROM<Uq0_9, 8>,
+    }
+}
+
+impl Default for LogMantissa {
+    fn default() -> Self {
+        let rom = ROM::from(table().into_iter().map(Uq0_9::from));
+        Self { address: Default::default(), data: Default::default(), rom }
+    }
+}
+
+impl Logic for LogMantissa {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.rom.address.next = self.address.val();
+        self.data.next = self.rom.data.val();
+    }
+}
+
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct Lod: unit("lod", LATENCY) {
+        in {
+            du_dx: Sq8_8,
+            dv_dx: Sq8_8,
+            du_dy: Sq8_8,
+            dv_dy: Sq8_8,
+            log_side: Bits<4>,
+        }
+        out {
+            level: Bits<4>,
+            frac: U8,
+            nearest: Bits<4>,
+        }
+        log2: LogMantissa,
+        // stage 1: |d| saturated to U16 (Uq8.8)
+        s1_a: [DFF<U16>; 4],
+        // stage 1b: the squarers' operands again (they feed nothing else: the placer can put them by the DSPs)
+        s1b_a: [DFF<U16>; 4],
+        // stage 2: the squares, Uq16.16
+        s2_q: [DFF<Bits<32>>; 4],
+        // stage 3: L_x and L_y, Uq17.16
+        s3_lx: DFF<Bits<33>>,
+        s3_ly: DFF<Bits<33>>,
+        // stage 4: m = max(L_x, L_y) = ρ²·2^16
+        s4_m: DFF<Bits<33>>,
+        // stage 5: the shift that puts m's leading one at bit 32 (0..16), p − 16 = 16 − shift (the integer part
+        // of 2λ), and whether m ≥ 2^16 (λ ≥ 0)
+        s5_sh: DFF<Bits<5>>,
+        s5_e: DFF<Bits<5>>,
+        s5_m: DFF<Bits<33>>,
+        s5_big: DFF<Bit>,
+        // stage 6: the table's address (the 8 bits below the leading one) and p − 16
+        s6_addr: DFF<U8>,
+        s6_e: DFF<Bits<5>>,
+        s6_big: DFF<Bit>,
+        // stage 7: the table entry (log2 of the mantissa, Uq0.9)
+        s7_t: DFF<Uq0_9>,
+        s7_e: DFF<Bits<5>>,
+        s7_big: DFF<Bit>,
+        // stage 8: λ·2^10 = (e << 9) + T (Uq4.10)
+        s8_l: DFF<Uq4_10>,
+        s8_big: DFF<Bit>,
+        // stage 9: the clamped outputs
+        s9_level: DFF<Bits<4>>,
+        s9_frac: DFF<U8>,
+        s9_near: DFF<Bits<4>>,
+        n_dly: Delay<Bits<4>, 9>, // log_side beside stages 1 to 8
+        valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
+        w_mag: [Signal<Local, Bits<17>>; 4],
+        w_sq: [Signal<Local, Bits<32>>; 4],
+        w_norm: Signal<Local, Bits<33>>,
+        w_e14: Signal<Local, Uq4_10>,
+        w_es: Signal<Local, Uq4_10>,
+        w_t14: Signal<Local, Uq4_10>,
+        w_int: Signal<Local, Bits<4>>,
+        w_frac: Signal<Local, U8>,
+        w_round: Signal<Local, Uq4_10>,
+        w_near: Signal<Local, Bits<4>>,
+    }
+}
+
+impl Logic for Lod {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, s3_lx, s3_ly, s4_m, s5_sh, s5_e, s5_m, s5_big, s6_addr, s6_e, s6_big, s7_t, s7_e, s7_big,
+            s8_l, s8_big, s9_level, s9_frac, s9_near
+        );
+        clock!(self, clock, n_dly, valid);
+        self.valid.d.next = self.valid_in.val();
+        self.n_dly.d.next = self.log_side.val();
+        for i in 0..4 {
+            self.s1_a[i].clock.next = self.clock.val();
+            self.s1b_a[i].clock.next = self.clock.val();
+            self.s2_q[i].clock.next = self.clock.val();
+        }
+        // stage 1: the magnitudes, −d = !d + 1 on 17 bits (−(−256) = 2^16 is still right there, read unsigned)
+        self.w_mag[0].next = self.du_dx.val();
+        if self.du_dx.val().get_bit(16) {
+            self.w_mag[0].next = !self.du_dx.val() + 1; // U17: |d| ≤ 2^16, no wrap read unsigned
+        }
+        self.w_mag[1].next = self.dv_dx.val();
+        if self.dv_dx.val().get_bit(16) {
+            self.w_mag[1].next = !self.dv_dx.val() + 1; // U17, as above
+        }
+        self.w_mag[2].next = self.du_dy.val();
+        if self.du_dy.val().get_bit(16) {
+            self.w_mag[2].next = !self.du_dy.val() + 1; // U17, as above
+        }
+        self.w_mag[3].next = self.dv_dy.val();
+        if self.dv_dy.val().get_bit(16) {
+            self.w_mag[3].next = !self.dv_dy.val() + 1; // U17, as above
+        }
+        for i in 0..4 {
+            // U17 → U16, saturated: only 2^16 (d = −256) is above 2^16 − 1
+            if self.w_mag[i].val().get_bit(16) {
+                self.s1_a[i].d.next = 0xffff.into();
+            } else {
+                self.s1_a[i].d.next = self.w_mag[i].val().get_bits::<16>(0);
+            }
+            // stage 1b: carried
+            self.s1b_a[i].d.next = self.s1_a[i].q.val();
+            // stage 2: a², 16 × 16 → 32 bits, exact
+            self.w_sq[i].next = self.s1b_a[i].q.val() * self.s1b_a[i].q.val();
+            self.s2_q[i].d.next = self.w_sq[i].val();
+        }
+        // stage 3: L_x = q(u_x) + q(v_x), L_y = q(u_y) + q(v_y): U32 + U32 → U33, exact
+        self.s3_lx.d.next = bit_cast::<33, 32>(self.s2_q[0].q.val()) + bit_cast::<33, 32>(self.s2_q[1].q.val());
+        self.s3_ly.d.next = bit_cast::<33, 32>(self.s2_q[2].q.val()) + bit_cast::<33, 32>(self.s2_q[3].q.val());
+        // stage 4: the larger edge, U33
+        if self.s3_lx.q.val() > self.s3_ly.q.val() {
+            self.s4_m.d.next = self.s3_lx.q.val();
+        } else {
+            self.s4_m.d.next = self.s3_ly.q.val();
+        }
+        // stage 5: the leading one of m among bits 32 ..= 16 (below 2^16, ρ < 1: no level above 0 to find); each
+        // branch writes the shift and p − 16 as constants
+        self.s5_m.d.next = self.s4_m.q.val();
+        self.s5_big.d.next = true;
+        if self.s4_m.q.val().get_bit(32) {
+            self.s5_sh.d.next = 0.into();
+            self.s5_e.d.next = 16.into();
+        } else if self.s4_m.q.val().get_bit(31) {
+            self.s5_sh.d.next = 1.into();
+            self.s5_e.d.next = 15.into();
+        } else if self.s4_m.q.val().get_bit(30) {
+            self.s5_sh.d.next = 2.into();
+            self.s5_e.d.next = 14.into();
+        } else if self.s4_m.q.val().get_bit(29) {
+            self.s5_sh.d.next = 3.into();
+            self.s5_e.d.next = 13.into();
+        } else if self.s4_m.q.val().get_bit(28) {
+            self.s5_sh.d.next = 4.into();
+            self.s5_e.d.next = 12.into();
+        } else if self.s4_m.q.val().get_bit(27) {
+            self.s5_sh.d.next = 5.into();
+            self.s5_e.d.next = 11.into();
+        } else if self.s4_m.q.val().get_bit(26) {
+            self.s5_sh.d.next = 6.into();
+            self.s5_e.d.next = 10.into();
+        } else if self.s4_m.q.val().get_bit(25) {
+            self.s5_sh.d.next = 7.into();
+            self.s5_e.d.next = 9.into();
+        } else if self.s4_m.q.val().get_bit(24) {
+            self.s5_sh.d.next = 8.into();
+            self.s5_e.d.next = 8.into();
+        } else if self.s4_m.q.val().get_bit(23) {
+            self.s5_sh.d.next = 9.into();
+            self.s5_e.d.next = 7.into();
+        } else if self.s4_m.q.val().get_bit(22) {
+            self.s5_sh.d.next = 10.into();
+            self.s5_e.d.next = 6.into();
+        } else if self.s4_m.q.val().get_bit(21) {
+            self.s5_sh.d.next = 11.into();
+            self.s5_e.d.next = 5.into();
+        } else if self.s4_m.q.val().get_bit(20) {
+            self.s5_sh.d.next = 12.into();
+            self.s5_e.d.next = 4.into();
+        } else if self.s4_m.q.val().get_bit(19) {
+            self.s5_sh.d.next = 13.into();
+            self.s5_e.d.next = 3.into();
+        } else if self.s4_m.q.val().get_bit(18) {
+            self.s5_sh.d.next = 14.into();
+            self.s5_e.d.next = 2.into();
+        } else if self.s4_m.q.val().get_bit(17) {
+            self.s5_sh.d.next = 15.into();
+            self.s5_e.d.next = 1.into();
+        } else if self.s4_m.q.val().get_bit(16) {
+            self.s5_sh.d.next = 16.into();
+            self.s5_e.d.next = 0.into();
+        } else {
+            self.s5_sh.d.next = 0.into();
+            self.s5_e.d.next = 0.into();
+            self.s5_big.d.next = false;
+        }
+        // stage 6: m << shift puts the leading one at bit 32 (U33, the bits shifted out are zeros above it); the
+        // table address is the 8 bits below it (truncating the rest)
+        self.w_norm.next = self.s5_m.q.val() << self.s5_sh.q.val();
+        self.s6_addr.d.next = self.w_norm.val().get_bits::<8>(24); // bits 31..24: the mantissa, truncated to 8 bits
+        self.s6_e.d.next = self.s5_e.q.val();
+        self.s6_big.d.next = self.s5_big.q.val();
+        // stage 7: the table
+        self.log2.address.next = self.s6_addr.q.val();
+        self.s7_t.d.next = self.log2.data.val();
+        self.s7_e.d.next = self.s6_e.q.val();
+        self.s7_big.d.next = self.s6_big.q.val();
+        // stage 8: λ·2^10 = (e << 9) + T ≤ 16·512 + 511 (U14, exact)
+        self.w_e14.next = bit_cast::<14, 5>(self.s7_e.q.val()); // U5 widened to U14, exact (≤ 16)
+        self.w_es.next = self.w_e14.val() << 9; // U14, e ≤ 16: ≤ 8,192
+        self.w_t14.next = bit_cast::<14, 9>(self.s7_t.q.val()); // U9 widened to U14, exact
+        self.s8_l.d.next = self.w_es.val() + self.w_t14.val(); // U14, ≤ 8,703
+        self.s8_big.d.next = self.s7_big.q.val();
+        // stage 9: ⌊λ⌋ (bits 13..10, ≤ 8), frac(λ) to 8 bits (bits 9..2, truncated), ⌊λ + ½⌋ (rounded half up: U14,
+        // ≤ 9,215), each clamped to the last level n; λ < 0 reads level 0
+        self.w_int.next = self.s8_l.q.val().get_bits::<4>(10); // λ >> 10: the integer part, ≤ 8
+        self.w_frac.next = self.s8_l.q.val().get_bits::<8>(2); // (λ mod 2^10) >> 2: truncated to 8 bits
+        self.w_round.next = self.s8_l.q.val() + 512; // U14, ≤ 9,215: no wrap
+        self.w_near.next = self.w_round.val().get_bits::<4>(10); // (λ + 2^9) >> 10, ≤ 9
+        if !self.s8_big.q.val() {
+            self.s9_level.d.next = 0.into();
+            self.s9_frac.d.next = 0.into();
+            self.s9_near.d.next = 0.into();
+        } else {
+            if self.w_int.val() >= self.n_dly.q.val() {
+                self.s9_level.d.next = self.n_dly.q.val();
+                self.s9_frac.d.next = 0.into();
+            } else {
+                self.s9_level.d.next = self.w_int.val();
+                self.s9_frac.d.next = self.w_frac.val();
+            }
+            if self.w_near.val() > self.n_dly.q.val() {
+                self.s9_near.d.next = self.n_dly.q.val();
+            } else {
+                self.s9_near.d.next = self.w_near.val();
+            }
+        }
+        self.level.next = self.s9_level.q.val();
+        self.frac.next = self.s9_frac.q.val();
+        self.nearest.next = self.s9_near.q.val();
+        self.valid_out.next = self.valid.q.val();
+    }
+}

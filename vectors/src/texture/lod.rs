@@ -1,0 +1,254 @@
+//! `lod`: the texture unit's level of detail, OpenGL's isotropic rule (the level the MIP filters of US 2004/0207631
+//! ¶76 and ¶81 read). From the screen derivatives of u and v, in texels of level 0 per pixel,
+//! ρ = max(√(u_x² + v_x²), √(u_y² + v_y²)) and λ = log2 ρ, clamped to [0, n] for a map of side 2^n (levels 0 ..= n).
+//! Outputs: `level` = ⌊λ⌋ and `frac`, frac(λ) in 8 bits, for trilinear (frac is 0 below level 0 and at or past the
+//! last level, where there is no second level to blend); `nearest` = ⌊λ + ½⌋ for the nearest texel of the nearest
+//! level and for bilinear on one level.
+//!
+//! The exact recipe:
+//! - a = min(|d|, 2^16 − 1) for each derivative d (Sq8.8): its magnitude in Uq8.8 (U16), saturated (only d = −256
+//!   exceeds it, and λ clamps there anyway: ρ ≥ 256 is past every level);
+//! - q = a² (Uq16.16, U32); L_x = q(u_x) + q(v_x), L_y = q(u_y) + q(v_y) (Uq17.16, U33); m = max(L_x, L_y) = ρ²·2^16;
+//! - m < 2^16 (ρ < 1, λ < 0, magnification): level 0, frac 0, nearest 0;
+//! - else p, the bit of m's leading one (16 ..= 32), and f, the 8 bits below it (truncated); a 256-entry table
+//!   T(f) = round(log2(1 + (f + ½)/256)·2^9) (U9, the bin's midpoint); then λ·2^10 = ((p − 16) << 9) + T(f) (Uq4.10,
+//!   U14): log2 m − 16 = 2λ, so λ has one fraction bit more than the table;
+//! - level = min(λ >> 10, n); frac = (λ mod 2^10) >> 2 (truncated to 8 bits) when λ >> 10 < n, else 0;
+//!   nearest = min((λ + 2^9) >> 10, n) (rounded half up).
+//!
+//! Its error against the f64 rule is measured in levels (`bumprtl accuracy`): at most the table's bin (half a bin of
+//! log2(1 + f), 2^-9.5 of a level), its rounding and the 8-bit truncation of frac.
+
+use crate::unit::UnitModel;
+use std::sync::OnceLock;
+
+crate::ports! {
+    inputs: [
+        du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, log_side: u 4,
+    ],
+    outputs: [
+        level: u 4, frac: u 8, nearest: u 4,
+    ],
+}
+
+/// Fraction bits of the derivatives (Sq8.8) and of the table's entries (log2 m, which is 2λ).
+pub const D_FRAC: u32 = 8;
+pub const T_FRAC: u32 = 9;
+/// The mantissa bits below m's leading one that address the table.
+pub const TABLE_BITS: u32 = 8;
+/// The largest map this unit is written for: side 2^8, levels 0 ..= 8.
+pub const MAX_LOG_SIDE: i64 = 8;
+
+/// T(f): log2 of the midpoint of the mantissa's bin, 9 fraction bits, rounded (≤ 511: U9).
+pub fn table_entry(f: u64) -> i64 {
+    ((1.0 + (f as f64 + 0.5) / 256.0).log2() * (1u64 << T_FRAC) as f64).round() as i64
+}
+
+pub fn table() -> &'static [i64] {
+    static T: OnceLock<Vec<i64>> = OnceLock::new();
+    T.get_or_init(|| (0..1 << TABLE_BITS).map(table_entry).collect())
+}
+
+/// m = ρ²·2^16 (Uq17.16, U33): the larger squared footprint edge, each magnitude saturated to U16.
+pub fn footprint(d: [i64; 4]) -> i64 {
+    let a = d.map(|x| x.abs().min((1 << 16) - 1)); // |S17| ≤ 65,536, saturated to U16 (Uq8.8)
+    let (lx, ly) = (a[0] * a[0] + a[1] * a[1], a[2] * a[2] + a[3] * a[3]); // U32 + U32: U33 each
+    lx.max(ly)
+}
+
+/// λ·2^10 (Uq4.10) for m ≥ 2^16; None below (λ < 0).
+pub fn lambda_q(m: i64) -> Option<i64> {
+    if m < 1 << 16 {
+        return None;
+    }
+    let p = 63 - m.leading_zeros() as i64; // 16 ..= 32
+    let f = (m >> (p - TABLE_BITS as i64)) & 0xff; // the 8 bits below the leading one (truncated)
+    Some(((p - 16) << T_FRAC) + table()[f as usize]) // U5 << 9 + U9: ≤ 16·512 + 511, U14
+}
+
+/// (level, frac, nearest) for the four derivatives (Sq8.8) and a map of side 2^n.
+pub fn exact(d: [i64; 4], n: i64) -> [i64; 3] {
+    let Some(l) = lambda_q(footprint(d)) else { return [0, 0, 0] };
+    let int = l >> 10; // ⌊λ⌋, 0 ..= 8
+    let near = ((l + (1 << 9)) >> 10).min(n); // ⌊λ + ½⌋, clamped to the last level
+    if int >= n {
+        [n, 0, near]
+    } else {
+        [int, (l & 1023) >> 2, near] // frac(λ) to 8 bits, truncated
+    }
+}
+
+/// λ = log2 ρ in reals (unclamped; −∞ for a zero footprint).
+pub fn ideal_lambda(d: [i64; 4]) -> f64 {
+    let r = d.map(|x| x as f64 / (1u64 << D_FRAC) as f64);
+    let rho = (r[0] * r[0] + r[1] * r[1]).sqrt().max((r[2] * r[2] + r[3] * r[3]).sqrt());
+    rho.log2()
+}
+
+/// The trilinear position the rule gives, clamp(λ, 0, n), in levels.
+pub fn ideal(d: [i64; 4], n: i64) -> f64 {
+    ideal_lambda(d).clamp(0.0, n as f64)
+}
+
+fn exact_ports(i: &[i64]) -> Vec<i64> {
+    exact([i[0], i[1], i[2], i[3]], i[4]).to_vec()
+}
+
+/// One derivative: its magnitude log-uniform from 2^-9 to 2^8.5 texels a pixel (so λ covers every level and both
+/// clamps), a random sign; an end of the range one draw in eight.
+fn random_derivative(rng: &mut dyn rand::RngCore) -> i64 {
+    use rand::Rng;
+    if rng.gen_range(0..8) == 0 {
+        return crate::unit::draw(rng, &INPUTS[0]);
+    }
+    let mag = (rng.gen_range(-9.0f64..8.5).exp2() * 256.0).round().min(65_536.0) as i64;
+    if rng.gen_bool(0.5) {
+        -mag
+    } else {
+        mag.min(65_535)
+    }
+}
+
+fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    use rand::Rng;
+    let mut v: Vec<i64> = (0..4).map(|_| random_derivative(rng)).collect();
+    // the map sizes the unit is written for, and one draw in sixteen past them (λ never reaches them: no clamp)
+    v.push(if rng.gen_range(0..16) == 0 { rng.gen_range(9..16) } else { rng.gen_range(0..=MAX_LOG_SIDE) });
+    v
+}
+
+pub fn hard_cases() -> Vec<Vec<i64>> {
+    let one = 1i64 << D_FRAC; // one texel a pixel
+    let mut v = vec![];
+    for n in [0, 1, 3, 8] {
+        // a zero footprint (log2 0), and the largest and most negative derivatives (the saturation)
+        v.push(vec![0, 0, 0, 0, n]);
+        v.push(vec![65_535, 65_535, 65_535, 65_535, n]);
+        v.push(vec![-65_536, -65_536, -65_536, -65_536, n]);
+        v.push(vec![-65_536, 0, 0, 0, n]);
+        // ρ exactly 2^k (λ exactly at a level), just below and just above it, on either axis pair
+        for k in 0..8 {
+            let d = one << k;
+            v.push(vec![d, 0, 0, 0, n]);
+            v.push(vec![0, 0, 0, -d, n]);
+            v.push(vec![d - 1, 0, 0, 0, n]);
+            v.push(vec![0, 0, d + 1, 0, n]);
+        }
+        // ρ just below 1 (the largest footprint with λ < 0), and λ = −1, ½, 1½ (nearest rounds up there)
+        v.push(vec![one - 1, 0, 0, 0, n]);
+        v.push(vec![one / 2, 0, 0, one / 2, n]);
+        v.push(vec![362, 0, 0, 0, n]); // ρ ≈ 1.414: λ ≈ 0.5
+        v.push(vec![724, 0, 0, 0, n]); // ρ ≈ 2.83: λ ≈ 1.5
+                                       // a footprint whose two edges are equal, and one whose edge is the diagonal of both derivatives
+        v.push(vec![3 * one, 4 * one, 4 * one, 3 * one, n]);
+        v.push(vec![one, one, 0, 0, n]);
+    }
+    // log_side past the largest map: λ (at most 8.5) never reaches it
+    v.push(vec![65_535, 65_535, 0, 0, 15]);
+    v.push(vec![one << 7, 0, 0, 0, 9]);
+    v
+}
+
+pub static MODEL: UnitModel =
+    UnitModel::new("lod", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_accuracy(accuracy);
+
+/// The trilinear position (level + frac/256) against clamp(log2 ρ, 0, n), in levels, and the nearest level
+/// against ⌊clamp(λ, 0, n) + ½⌋, over random footprints and map sizes.
+fn accuracy(samples: usize, seed: u64) -> Vec<crate::unit::Accuracy> {
+    let at = |i: &[i64]| -> ([i64; 3], f64) {
+        let d = [i[0], i[1], i[2], i[3]];
+        (exact(d, i[4]), ideal(d, i[4]))
+    };
+    vec![
+        crate::unit::Accuracy::over_random(
+            "levels, level + frac/256 vs clamp(log2 ρ, 0, n)",
+            samples,
+            seed,
+            random,
+            |i| {
+                let (e, want) = at(i);
+                vec![(e[0] as f64 + e[1] as f64 / 256.0 - want).abs()]
+            },
+        ),
+        crate::unit::Accuracy::over_random(
+            "levels, nearest vs ⌊clamp(log2 ρ, 0, n) + ½⌋",
+            samples,
+            seed,
+            random,
+            |i| {
+                let (e, want) = at(i);
+                vec![(e[2] as f64 - (want + 0.5).floor().min(i[4] as f64)).abs()]
+            },
+        ),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_table_entry_fits_u9_and_rises() {
+        let t = table();
+        assert!(t.iter().all(|&e| (0..512).contains(&e)), "{t:?}");
+        assert!(t.windows(2).all(|w| w[0] <= w[1]));
+        assert_eq!(t[0], 1, "log2(1 + 1/512)·512 = 1.44, rounded");
+        assert_eq!(t[255], 511);
+    }
+
+    #[test]
+    fn a_power_of_two_footprint_is_exactly_its_level() {
+        for k in 0..8 {
+            for n in 0..=8 {
+                let d = 256i64 << k;
+                let want = if k < n { [k, 0, k] } else { [n, 0, n] };
+                // the table's first bin is a little above 0 (its midpoint): frac truncates it to 0
+                assert_eq!(exact([d, 0, 0, 0], n), want, "ρ = 2^{k}, n = {n}");
+                assert_eq!(exact([0, 0, 0, -d], n), want, "ρ = 2^{k} on the y pair, n = {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn magnification_and_a_zero_footprint_read_level_zero() {
+        for n in 0..=8 {
+            assert_eq!(exact([0, 0, 0, 0], n), [0, 0, 0]);
+            assert_eq!(exact([255, 0, 0, 0], n), [0, 0, 0], "ρ just below 1");
+            assert_eq!(exact([128, 128, -100, 3], n), [0, 0, 0]);
+        }
+    }
+
+    #[test]
+    fn the_last_level_clamps_and_has_no_fraction() {
+        for n in 0..8 {
+            // ρ = 2^n·1.5: λ past the last level
+            let d = 384i64 << n;
+            assert_eq!(exact([d, 0, 0, 0], n), [n, 0, n]);
+        }
+        // the largest footprint, every map size: λ = ½·log2 2 + log2(65,535/256) = 8.49998, so past a map of 2^8 it
+        // reads level 8 and frac 0.49998·256 = 127.99, truncated to 127
+        for n in 0..16 {
+            let e = exact([-65_536, -65_536, -65_536, -65_536], n);
+            assert_eq!((e[0], e[1]), if n <= 8 { (n, 0) } else { (8, 127) }, "n = {n}");
+        }
+    }
+
+    #[test]
+    fn lambda_is_within_a_hundredth_of_a_level_of_the_rule_and_near_rounds_it() {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(5);
+        let mut worst = 0.0f64;
+        for _ in 0..200_000 {
+            let i = random(&mut rng);
+            let (d, n) = ([i[0], i[1], i[2], i[3]], i[4]);
+            let e = exact(d, n);
+            let pos = e[0] as f64 + e[1] as f64 / 256.0;
+            worst = worst.max((pos - ideal(d, n)).abs());
+            assert!(e[0] <= n && e[2] <= n && (e[1] == 0 || e[0] < n), "{i:?}: {e:?}");
+            // nearest is the level above exactly where frac is at least one half
+            assert_eq!(e[2] - e[0], (e[1] >= 128) as i64, "nearest beside level: {i:?} {e:?}");
+        }
+        // the table's half bin (2^-9.5 of log2 m, so of λ: 0.0014), its rounding and frac's truncation (< 2^-8)
+        assert!(worst < 0.0065, "{worst}");
+    }
+}
