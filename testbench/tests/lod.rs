@@ -17,14 +17,14 @@ fn lod_random_vs_model() {
 fn lod_hard_cases_back_to_back_and_worked_by_hand() {
     let inputs = (MODEL.hard_cases)();
     rust_hdl::<Lod>(&MODEL, &inputs, Bubbles::BackToBack).assert_clean("hard cases");
-    // worked by hand: u_x = 3, v_x = 4 texels a pixel: ρ = 5, λ = log2 5 = 2.3219; m = 25·2^16, leading one at
-    // bit 20 (p − 16 = 4 = 2·2), the 8 bits below it 0b1001_0000 = 144: T = round(log2(1 + 144.5/256)·512) = 331;
+    // worked by hand: u_x = 3, v_x = 4 texels a pixel: ρ = 5, λ = log2 5 = 2.3219; m = 25·2^8, leading one at
+    // bit 12 (p − 8 = 4 = 2·2), the 8 bits below it 0b1001_0000 = 144: T = round(log2(1 + 144.5/256)·512) = 331;
     // λ·2^10 = 4·512 + 331 = 2,379: level 2, frac (2,379 − 2,048) >> 2 = 82 (0.3203 of a level), nearest 2
     assert_eq!((MODEL.exact)(&[3 * 256, 4 * 256, 0, 0, 8]), vec![2, 82, 2]);
     // the same footprint on a 2 × 2 map (n = 1): the last level, no fraction; on a 1 × 1 map: level 0
     assert_eq!((MODEL.exact)(&[3 * 256, 4 * 256, 0, 0, 1]), vec![1, 0, 1]);
     assert_eq!((MODEL.exact)(&[3 * 256, 4 * 256, 0, 0, 0]), vec![0, 0, 0]);
-    // ρ = 1.5 (λ = 0.585): m = 2.25·2^16, p = 17, f = 0b0010_0000 = 32: T = round(log2(1 + 32.5/256)·512) = 88;
+    // ρ = 1.5 (λ = 0.585): m = 2.25·2^8, p = 9, f = 0b0010_0000 = 32: T = round(log2(1 + 32.5/256)·512) = 88;
     // λ·2^10 = 512 + 88 = 600: level 0, frac 600 >> 2 = 150 (0.586 of a level), nearest (600 + 512) >> 10 = 1
     assert_eq!((MODEL.exact)(&[0, 0, 384, 0, 8]), vec![0, 150, 1]);
 }

@@ -82,8 +82,8 @@ pub const WAIVED: &[Waived] = &[
     w("Blend", "w_sum", Bound, "α·s + (255 − α)·d ≤ 255·255 = 65,025: the two products share α"),
     w("Blend", "s3_t.d", Bound, "w_sum + 128 ≤ 65,153"),
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),
-    w("Lod", "s6_addr.d", Split, "the table's address: the 8 bits below m's leading one once the shift has put it at bit 32; \
-        the leading one itself is dropped on purpose, the bits below bit 24 truncated"),
+    w("Lod", "s6_addr.d", Split, "the table's address: the 8 bits below m's leading one once the shift has put it at bit 24; \
+        the leading one itself is dropped on purpose, the bits below bit 16 truncated"),
     w("Lod", "w_frac", Split, "frac(λ) in 8 bits: λ's bits 9..2 (Uq4.10), the integer part above them read apart (w_int), \
         the two lowest bits truncated"),
     w("CartSurface", "dot.l_x", Split, "a 12-bit field of the light word (x, y, z packed in one RAM word), read back as the Sq1.10 it was"),

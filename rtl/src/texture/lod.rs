@@ -1,9 +1,10 @@
 //! `lod`: the texture unit's level of detail, OpenGL's isotropic rule: from the four screen derivatives of u and v
 //! (Sq8.8, texels of level 0 a pixel) and the map's side 2^n, the level ⌊λ⌋, frac(λ) in 8 bits and the nearest
 //! level ⌊λ + ½⌋, λ = log2 ρ clamped to [0, n]; see `vectors::lod` for the exact recipe. ρ² comes from four
-//! squarers, log2 from the leading one of ρ² and a 256-entry table of its next 8 bits. Latency 10: magnitudes
-//! (saturated to U16); the squarers' operand register; the squares; the two sums; the larger; the leading one;
-//! the normalising shift; the table (its read register); λ; the clamps.
+//! squarers, log2 from the leading one of ρ² and a 256-entry table of its next 8 bits. Latency 11: magnitudes
+//! (saturated to U16); the squarers' operand register; the squares; the two sums; their comparison; the larger;
+//! the leading one; the normalising shift; the table (its read register); λ; the clamps. (With the comparison and
+//! the choice in one stage on 33-bit sums, the UP5K placed the unit at 41.5 MHz, that path the critical one.)
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{Sq8_8, Uq0_9, Uq4_10, U16, U8};
@@ -11,7 +12,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 10;
+pub const LATENCY: usize = 11;
 
 /// The table: entry f = round(log2(1 + (f + ½)/256)·2^9), the log of the midpoint of the mantissa's bin. The
 /// model's `vectors::lod::table_entry` is the same formula written apart; a test compares the two entry by entry.
@@ -63,20 +64,24 @@ crate::stream_block! {
         s1_a: [DFF<U16>; 4],
         // stage 1b: the squarers' operands again (they feed nothing else: the placer can put them by the DSPs)
         s1b_a: [DFF<U16>; 4],
-        // stage 2: the squares, Uq16.16
-        s2_q: [DFF<Bits<32>>; 4],
-        // stage 3: L_x and L_y, Uq17.16
-        s3_lx: DFF<Bits<33>>,
-        s3_ly: DFF<Bits<33>>,
-        // stage 4: m = max(L_x, L_y) = ρ²·2^16
-        s4_m: DFF<Bits<33>>,
-        // stage 5: the shift that puts m's leading one at bit 32 (0..16), p − 16 = 16 − shift (the integer part
-        // of 2λ), and whether m ≥ 2^16 (λ ≥ 0)
+        // stage 2: the squares, Uq16.8 (truncated)
+        s2_q: [DFF<Bits<24>>; 4],
+        // stage 3: L_x and L_y, Uq17.8
+        s3_lx: DFF<Bits<25>>,
+        s3_ly: DFF<Bits<25>>,
+        // stage 4: whether L_x is the larger, and both
+        s4_gt: DFF<Bit>,
+        s4_lx: DFF<Bits<25>>,
+        s4_ly: DFF<Bits<25>>,
+        // stage 4b: m = max(L_x, L_y) ≈ ρ²·2^8
+        s4b_m: DFF<Bits<25>>,
+        // stage 5: the shift that puts m's leading one at bit 24 (0..16), p − 8 = 16 − shift (the integer part
+        // of 2λ), and whether m ≥ 2^8 (λ ≥ 0)
         s5_sh: DFF<Bits<5>>,
         s5_e: DFF<Bits<5>>,
-        s5_m: DFF<Bits<33>>,
+        s5_m: DFF<Bits<25>>,
         s5_big: DFF<Bit>,
-        // stage 6: the table's address (the 8 bits below the leading one) and p − 16
+        // stage 6: the table's address (the 8 bits below the leading one) and p − 8
         s6_addr: DFF<U8>,
         s6_e: DFF<Bits<5>>,
         s6_big: DFF<Bit>,
@@ -91,11 +96,11 @@ crate::stream_block! {
         s9_level: DFF<Bits<4>>,
         s9_frac: DFF<U8>,
         s9_near: DFF<Bits<4>>,
-        n_dly: Delay<Bits<4>, 9>, // log_side beside stages 1 to 8
+        n_dly: Delay<Bits<4>, 10>, // log_side beside the stages up to λ
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
         w_mag: [Signal<Local, Bits<17>>; 4],
         w_sq: [Signal<Local, Bits<32>>; 4],
-        w_norm: Signal<Local, Bits<33>>,
+        w_norm: Signal<Local, Bits<25>>,
         w_e14: Signal<Local, Uq4_10>,
         w_es: Signal<Local, Uq4_10>,
         w_t14: Signal<Local, Uq4_10>,
@@ -110,8 +115,8 @@ impl Logic for Lod {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s3_lx, s3_ly, s4_m, s5_sh, s5_e, s5_m, s5_big, s6_addr, s6_e, s6_big, s7_t, s7_e, s7_big,
-            s8_l, s8_big, s9_level, s9_frac, s9_near
+            self, clock, s3_lx, s3_ly, s4_gt, s4_lx, s4_ly, s4b_m, s5_sh, s5_e, s5_m, s5_big, s6_addr, s6_e, s6_big,
+            s7_t, s7_e, s7_big, s8_l, s8_big, s9_level, s9_frac, s9_near
         );
         clock!(self, clock, n_dly, valid);
         self.valid.d.next = self.valid_in.val();
@@ -147,72 +152,76 @@ impl Logic for Lod {
             }
             // stage 1b: carried
             self.s1b_a[i].d.next = self.s1_a[i].q.val();
-            // stage 2: a², 16 × 16 → 32 bits, exact
+            // stage 2: a², 16 × 16 → 32 bits, exact, then >> 8 (floor): Uq16.8
             self.w_sq[i].next = self.s1b_a[i].q.val() * self.s1b_a[i].q.val();
-            self.s2_q[i].d.next = self.w_sq[i].val();
+            self.s2_q[i].d.next = self.w_sq[i].val().get_bits::<24>(8); // U32 >> 8: U24, truncated
         }
-        // stage 3: L_x = q(u_x) + q(v_x), L_y = q(u_y) + q(v_y): U32 + U32 → U33, exact
-        self.s3_lx.d.next = bit_cast::<33, 32>(self.s2_q[0].q.val()) + bit_cast::<33, 32>(self.s2_q[1].q.val());
-        self.s3_ly.d.next = bit_cast::<33, 32>(self.s2_q[2].q.val()) + bit_cast::<33, 32>(self.s2_q[3].q.val());
-        // stage 4: the larger edge, U33
-        if self.s3_lx.q.val() > self.s3_ly.q.val() {
-            self.s4_m.d.next = self.s3_lx.q.val();
+        // stage 3: L_x = q(u_x) + q(v_x), L_y = q(u_y) + q(v_y): U24 + U24 → U25, exact
+        self.s3_lx.d.next = bit_cast::<25, 24>(self.s2_q[0].q.val()) + bit_cast::<25, 24>(self.s2_q[1].q.val());
+        self.s3_ly.d.next = bit_cast::<25, 24>(self.s2_q[2].q.val()) + bit_cast::<25, 24>(self.s2_q[3].q.val());
+        // stage 4: which edge is the longer
+        self.s4_gt.d.next = self.s3_lx.q.val() > self.s3_ly.q.val();
+        self.s4_lx.d.next = self.s3_lx.q.val();
+        self.s4_ly.d.next = self.s3_ly.q.val();
+        // stage 4b: the larger, U25
+        if self.s4_gt.q.val() {
+            self.s4b_m.d.next = self.s4_lx.q.val();
         } else {
-            self.s4_m.d.next = self.s3_ly.q.val();
+            self.s4b_m.d.next = self.s4_ly.q.val();
         }
-        // stage 5: the leading one of m among bits 32 ..= 16 (below 2^16, ρ < 1: no level above 0 to find); each
-        // branch writes the shift and p − 16 as constants
-        self.s5_m.d.next = self.s4_m.q.val();
+        // stage 5: the leading one of m among bits 24 ..= 8 (below 2^8, ρ < 1: no level above 0 to find); each
+        // branch writes the shift and p − 8 as constants
+        self.s5_m.d.next = self.s4b_m.q.val();
         self.s5_big.d.next = true;
-        if self.s4_m.q.val().get_bit(32) {
+        if self.s4b_m.q.val().get_bit(24) {
             self.s5_sh.d.next = 0.into();
             self.s5_e.d.next = 16.into();
-        } else if self.s4_m.q.val().get_bit(31) {
+        } else if self.s4b_m.q.val().get_bit(23) {
             self.s5_sh.d.next = 1.into();
             self.s5_e.d.next = 15.into();
-        } else if self.s4_m.q.val().get_bit(30) {
+        } else if self.s4b_m.q.val().get_bit(22) {
             self.s5_sh.d.next = 2.into();
             self.s5_e.d.next = 14.into();
-        } else if self.s4_m.q.val().get_bit(29) {
+        } else if self.s4b_m.q.val().get_bit(21) {
             self.s5_sh.d.next = 3.into();
             self.s5_e.d.next = 13.into();
-        } else if self.s4_m.q.val().get_bit(28) {
+        } else if self.s4b_m.q.val().get_bit(20) {
             self.s5_sh.d.next = 4.into();
             self.s5_e.d.next = 12.into();
-        } else if self.s4_m.q.val().get_bit(27) {
+        } else if self.s4b_m.q.val().get_bit(19) {
             self.s5_sh.d.next = 5.into();
             self.s5_e.d.next = 11.into();
-        } else if self.s4_m.q.val().get_bit(26) {
+        } else if self.s4b_m.q.val().get_bit(18) {
             self.s5_sh.d.next = 6.into();
             self.s5_e.d.next = 10.into();
-        } else if self.s4_m.q.val().get_bit(25) {
+        } else if self.s4b_m.q.val().get_bit(17) {
             self.s5_sh.d.next = 7.into();
             self.s5_e.d.next = 9.into();
-        } else if self.s4_m.q.val().get_bit(24) {
+        } else if self.s4b_m.q.val().get_bit(16) {
             self.s5_sh.d.next = 8.into();
             self.s5_e.d.next = 8.into();
-        } else if self.s4_m.q.val().get_bit(23) {
+        } else if self.s4b_m.q.val().get_bit(15) {
             self.s5_sh.d.next = 9.into();
             self.s5_e.d.next = 7.into();
-        } else if self.s4_m.q.val().get_bit(22) {
+        } else if self.s4b_m.q.val().get_bit(14) {
             self.s5_sh.d.next = 10.into();
             self.s5_e.d.next = 6.into();
-        } else if self.s4_m.q.val().get_bit(21) {
+        } else if self.s4b_m.q.val().get_bit(13) {
             self.s5_sh.d.next = 11.into();
             self.s5_e.d.next = 5.into();
-        } else if self.s4_m.q.val().get_bit(20) {
+        } else if self.s4b_m.q.val().get_bit(12) {
             self.s5_sh.d.next = 12.into();
             self.s5_e.d.next = 4.into();
-        } else if self.s4_m.q.val().get_bit(19) {
+        } else if self.s4b_m.q.val().get_bit(11) {
             self.s5_sh.d.next = 13.into();
             self.s5_e.d.next = 3.into();
-        } else if self.s4_m.q.val().get_bit(18) {
+        } else if self.s4b_m.q.val().get_bit(10) {
             self.s5_sh.d.next = 14.into();
             self.s5_e.d.next = 2.into();
-        } else if self.s4_m.q.val().get_bit(17) {
+        } else if self.s4b_m.q.val().get_bit(9) {
             self.s5_sh.d.next = 15.into();
             self.s5_e.d.next = 1.into();
-        } else if self.s4_m.q.val().get_bit(16) {
+        } else if self.s4b_m.q.val().get_bit(8) {
             self.s5_sh.d.next = 16.into();
             self.s5_e.d.next = 0.into();
         } else {
@@ -220,10 +229,10 @@ impl Logic for Lod {
             self.s5_e.d.next = 0.into();
             self.s5_big.d.next = false;
         }
-        // stage 6: m << shift puts the leading one at bit 32 (U33, the bits shifted out are zeros above it); the
+        // stage 6: m << shift puts the leading one at bit 24 (U25, the bits shifted out are zeros above it); the
         // table address is the 8 bits below it (truncating the rest)
         self.w_norm.next = self.s5_m.q.val() << self.s5_sh.q.val();
-        self.s6_addr.d.next = self.w_norm.val().get_bits::<8>(24); // bits 31..24: the mantissa, truncated to 8 bits
+        self.s6_addr.d.next = self.w_norm.val().get_bits::<8>(16); // bits 23..16: the mantissa, truncated to 8 bits
         self.s6_e.d.next = self.s5_e.q.val();
         self.s6_big.d.next = self.s5_big.q.val();
         // stage 7: the table
@@ -242,7 +251,7 @@ impl Logic for Lod {
         self.w_int.next = self.s8_l.q.val().get_bits::<4>(10); // λ >> 10: the integer part, ≤ 8
         self.w_frac.next = self.s8_l.q.val().get_bits::<8>(2); // (λ mod 2^10) >> 2: truncated to 8 bits
         self.w_round.next = self.s8_l.q.val() + 512; // U14, ≤ 9,215: no wrap
-        self.w_near.next = self.w_round.val().get_bits::<4>(10); // (λ + 2^9) >> 10, ≤ 9
+        self.w_near.next = self.w_round.val().get_bits::<4>(10); // (λ + 2^9) >> 10, ≤ 8
         if !self.s8_big.q.val() {
             self.s9_level.d.next = 0.into();
             self.s9_frac.d.next = 0.into();

@@ -32,8 +32,9 @@ crate::ports! {
 pub const LOG_FRAC: u32 = 12;
 pub const EXP_BITS: u32 = 8;
 
-/// L fits its U15 for lf ≤ 12, and rounding g needs eb < 2 + lf: the width sweep's settings (`sim::units::SETTINGS`)
-/// stay inside both.
+// L fits its U15 for lf ≤ 12, and rounding g needs eb < 2 + lf: the width sweep's settings (`sim::units::SETTINGS`)
+// stay inside both.
+
 /// L(x) with `lf` fraction bits, entry 0 unused (0).
 pub fn log_entry(x: u64, lf: u32) -> i64 {
     if x == 0 {
