@@ -1,10 +1,11 @@
 //! `lod`: the texture unit's level of detail, OpenGL's isotropic rule: from the four screen derivatives of u and v
 //! (Sq8.8, texels of level 0 a pixel) and the map's side 2^n, the level ⌊λ⌋, frac(λ) in 8 bits and the nearest
 //! level ⌊λ + ½⌋, λ = log2 ρ clamped to [0, n]; see `vectors::lod` for the exact recipe. ρ² comes from four
-//! squarers, log2 from the leading one of ρ² and a 256-entry table of its next 8 bits. Latency 11: magnitudes
-//! (saturated to U16); the squarers' operand register; the squares; the two sums; their comparison; the larger;
-//! the leading one; the normalising shift; the table (its read register); λ; the clamps. (With the comparison and
-//! the choice in one stage on 33-bit sums, the UP5K placed the unit at 41.5 MHz, that path the critical one.)
+//! squarers, log2 from the leading one of ρ² and a 256-entry table of its next 8 bits. Latency 12: magnitudes; their
+//! saturation to U16; the squarers' operand register; the squares; the two sums; their comparison; the larger; the
+//! leading one; the normalising shift; the table (its read register); λ; the clamps. (With the comparison and the
+//! choice in one stage on 33-bit sums, the UP5K placed the unit at 41.5 MHz, that path the critical one; with the
+//! negation and the saturation in one stage, 44.6 MHz.)
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{Sq8_8, Uq0_9, Uq4_10, U16, U8};
@@ -12,7 +13,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 11;
+pub const LATENCY: usize = 12;
 
 /// The table: entry f = round(log2(1 + (f + ½)/256)·2^9), the log of the midpoint of the mantissa's bin. The
 /// model's `vectors::lod::table_entry` is the same formula written apart; a test compares the two entry by entry.
@@ -60,7 +61,9 @@ crate::stream_block! {
             nearest: Bits<4>,
         }
         log2: LogMantissa,
-        // stage 1: |d| saturated to U16 (Uq8.8)
+        // stage 1: |d| ≤ 2^16 (U17)
+        s1_m: [DFF<Bits<17>>; 4],
+        // stage 1s: |d| saturated to U16 (Uq8.8)
         s1_a: [DFF<U16>; 4],
         // stage 1b: the squarers' operands again (they feed nothing else: the placer can put them by the DSPs)
         s1b_a: [DFF<U16>; 4],
@@ -96,7 +99,7 @@ crate::stream_block! {
         s9_level: DFF<Bits<4>>,
         s9_frac: DFF<U8>,
         s9_near: DFF<Bits<4>>,
-        n_dly: Delay<Bits<4>, 10>, // log_side beside the stages up to λ
+        n_dly: Delay<Bits<4>, 11>, // log_side beside the stages up to λ
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
         w_mag: [Signal<Local, Bits<17>>; 4],
         w_sq: [Signal<Local, Bits<32>>; 4],
@@ -122,6 +125,7 @@ impl Logic for Lod {
         self.valid.d.next = self.valid_in.val();
         self.n_dly.d.next = self.log_side.val();
         for i in 0..4 {
+            self.s1_m[i].clock.next = self.clock.val();
             self.s1_a[i].clock.next = self.clock.val();
             self.s1b_a[i].clock.next = self.clock.val();
             self.s2_q[i].clock.next = self.clock.val();
@@ -144,11 +148,12 @@ impl Logic for Lod {
             self.w_mag[3].next = !self.dv_dy.val() + 1; // U17, as above
         }
         for i in 0..4 {
-            // U17 → U16, saturated: only 2^16 (d = −256) is above 2^16 − 1
-            if self.w_mag[i].val().get_bit(16) {
+            self.s1_m[i].d.next = self.w_mag[i].val();
+            // stage 1s: U17 → U16, saturated: only 2^16 (d = −256) is above 2^16 − 1
+            if self.s1_m[i].q.val().get_bit(16) {
                 self.s1_a[i].d.next = 0xffff.into();
             } else {
-                self.s1_a[i].d.next = self.w_mag[i].val().get_bits::<16>(0);
+                self.s1_a[i].d.next = self.s1_m[i].q.val().get_bits::<16>(0);
             }
             // stage 1b: carried
             self.s1b_a[i].d.next = self.s1_a[i].q.val();
