@@ -5,7 +5,7 @@
 //! flat arrays of fixed-size records, so that a frame runs near the simulator's own speed; Icarus's bench reads
 //! `valid v0 v1 ...` per line (hex) and writes `cycle o0 o1 ...`.
 
-use crate::export::{export, write_atomic};
+use crate::export::{export, write_atomic, FolderLock};
 use crate::tools;
 use rtl::StreamUnit;
 use std::fmt::Write as _;
@@ -233,7 +233,8 @@ fn icarus_bench<U: StreamUnit>() -> String {
     s
 }
 
-/// Builds in one process are serialised: tests run in threads and may share a unit's build folder.
+/// Builds in one process are serialised: tests run in threads and may share a unit's build folder. Builds by
+/// several processes in one folder take turns on the folder's lock (`FolderLock`) as well.
 static BUILD_LOCK: std::sync::Mutex<()> = std::sync::Mutex::new(());
 /// Each run gets its own slot and output files, so that concurrent runs in one folder do not collide.
 static RUN_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
@@ -241,7 +242,8 @@ static RUN_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(
 /// Export the unit and build it under the simulator in `dir` (created; reused if the sources did not change).
 pub fn build<U: StreamUnit>(sim: Simulator, dir: &Path) -> Result<Built, String> {
     let _guard = BUILD_LOCK.lock().unwrap_or_else(|e| e.into_inner());
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    // held until the library is loaded: another process may not rebuild it under this one meanwhile
+    let _folder = FolderLock::take(dir)?;
     let dir = &std::fs::canonicalize(dir).map_err(|e| format!("cannot resolve {}: {e}", dir.display()))?;
     let v = export::<U>();
     let vfile = v.write(dir)?;

@@ -29,9 +29,13 @@ impl Exported {
     }
 }
 
-/// Write a file whole or not at all.
+/// Write a file whole or not at all. The temporary file's name is the process's and the call's own, so that two
+/// processes writing the same file (test processes sharing a build folder) never write into one temporary file.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), String> {
-    let tmp = path.with_extension("partial");
+    static CALL: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+    let n = CALL.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let name = path.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{name}.{}.{n}.partial", std::process::id()));
     std::fs::write(&tmp, bytes).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
@@ -51,4 +55,67 @@ pub fn bus_slices(ports: &[(&str, usize)], bus: &str, from: usize) -> Vec<String
             c
         })
         .collect()
+}
+
+/// An exclusive lock on a folder, held by this process until it is dropped: `flock` on `<dir>/.lock`, so that
+/// builds in one folder by several processes (the test runner runs each test in a process of its own) take turns.
+/// The operating system releases it if the process dies.
+pub struct FolderLock {
+    _file: std::fs::File,
+}
+
+impl FolderLock {
+    pub fn take(dir: &Path) -> Result<FolderLock, String> {
+        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        let path = dir.join(".lock");
+        let file = std::fs::OpenOptions::new()
+            .create(true)
+            .truncate(false)
+            .write(true)
+            .open(&path)
+            .map_err(|e| format!("cannot open {}: {e}", path.display()))?;
+        file.lock().map_err(|e| format!("cannot lock {}: {e}", path.display()))?;
+        Ok(FolderLock { _file: file })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whether another process (util-linux's `flock -n`) can take the folder's lock now.
+    fn free_to_another_process(dir: &Path) -> bool {
+        let status = std::process::Command::new("flock")
+            .args(["-n", "-E", "3"])
+            .arg(dir.join(".lock"))
+            .arg("true")
+            .status()
+            .expect("util-linux's flock");
+        match status.code() {
+            Some(0) => true,
+            Some(3) => false,
+            c => panic!("flock exited with {c:?}"),
+        }
+    }
+
+    #[test]
+    fn a_folder_lock_keeps_other_processes_out_until_it_is_dropped() {
+        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/test-files/folder-lock");
+        let lock = FolderLock::take(&dir).unwrap();
+        assert!(!free_to_another_process(&dir), "another process took the lock while it was held");
+        drop(lock);
+        assert!(free_to_another_process(&dir), "the lock was not released when dropped");
+    }
+
+    #[test]
+    fn an_atomic_write_leaves_no_temporary_file() {
+        let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/test-files/write-atomic");
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        write_atomic(&dir.join("a.v"), b"one").unwrap();
+        write_atomic(&dir.join("a.v"), b"two").unwrap();
+        assert_eq!(std::fs::read(dir.join("a.v")).unwrap(), b"two");
+        let names: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, ["a.v"]);
+    }
 }
