@@ -74,9 +74,11 @@ pub mod palette {
     pub mod table_builder_shared;
 }
 
-/// The texture unit in front of every family: level of detail.
+/// The texture unit in front of every family: level of detail, address, the map memory and its fetch.
 pub mod texture {
     pub mod lod;
+    pub mod tex_addr;
+    pub mod tex_fetch;
 }
 
 pub mod stream;
@@ -91,4 +93,4 @@ pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, tab
 pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delayed_blend, div255, dot3, gloss, normalise};
 pub use stream::StreamUnit;
-pub use texture::lod;
+pub use texture::{lod, tex_addr, tex_fetch};

@@ -150,6 +150,8 @@ pub static UNITS: &[Unit] = &[
     Unit::new(&vectors::polar_pipeline::MODEL_DC, &Rtl::<rtl::polar_pipeline::PolarPipelineDc>::PATHS)
         .waiving(&[("shader$sum", "as in polar_pipeline")]),
     Unit::new(&vectors::lod::MODEL, &Rtl::<rtl::lod::Lod>::PATHS),
+    Unit::new(&vectors::tex_addr::MODEL, &Rtl::<rtl::tex_addr::TexAddr>::PATHS),
+    Unit::new(&vectors::tex_fetch::MODEL, &Rtl::<rtl::tex_fetch::TexFetch>::PATHS),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -59,9 +59,11 @@ pub mod palette {
     pub mod tables;
 }
 
-/// The texture unit in front of every family: level of detail.
+/// The texture unit in front of every family: level of detail, address, the map memory and its fetch.
 pub mod texture {
     pub mod lod;
+    pub mod tex_addr;
+    pub mod tex_fetch;
 }
 
 pub mod csv;
@@ -77,5 +79,5 @@ pub use height::{
 pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
-pub use texture::lod;
+pub use texture::{lod, tex_addr, tex_fetch};
 pub use unit::{Port, UnitModel};

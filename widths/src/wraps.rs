@@ -195,4 +195,22 @@ pub const WAIVED: &[Waived] = &[
     w("Power", "s6_w.d", Bound, "E >> (n + 6) with E ≤ 32,640 (the exp table's largest) and n + 6 ≥ 6: ≤ 510; only the \
         shift register's reset zero, seen by bubbles, gives more"),
     w("Power", "w_w1", Bound, "(E >> (n + 6)) + 1 ≤ 511 (s6_w)"),
+    // the texture unit
+    w("TexAddr", "s1_m.d", Bound, "s − n' with n' = min(level, s): 0..8"),
+    w("TexAddr", "w_ua22", Split, "bits 0..21 of u sign-extended to 30 bits and shifted right by n' ≤ 8: floor(u / 2^n') in two's \
+        complement (S20 in 22), the bits above it the sign's copies and the shift's zeros"),
+    w("TexAddr", "w_va22", Split, "as w_ua22, for v"),
+    w("TexAddr", "s2_cu.d", Bound, "floor(u / 2^n') − 128 with floor(u / 2^n') in S20: −2^19 − 128 .. 2^19 − 1, inside S21"),
+    w("TexAddr", "s2_cv.d", Bound, "as s2_cu, for v"),
+    w("TexAddr", "w_span", Bound, "2^m · 256 with m = s − n' ≤ 8 (s1_m): at most 2^16"),
+    w("TexAddr", "s2_mask.d", Bound, "256·2^m − 1 with m ≤ 8: 255 .. 65,535"),
+    w("TexAddr", "s2_top.d", Bound, "256·2^m − 256 or − 1 with m ≤ 8: 0 .. 65,535"),
+    w("TexAddr", "s2_last.d", Bound, "2^m − 1 with m ≤ 8: the level's last texel, 0..255"),
+    w("TexAddr", "s3_ru.d", Bound, "c AND (256·2^m − 1) (repeat) or c clamped to 0..top (clamp), both ≤ 65,535 for m ≤ 8"),
+    w("TexAddr", "s3_rv.d", Bound, "as s3_ru, for v"),
+    w("TexAddr", "s4_ub.d", Split, "the blend factor: r's low byte, the texel above it read apart (w_tu)"),
+    w("TexAddr", "s4_vb.d", Split, "as s4_ub, for v"),
+    w("TexAddr", "w_tu1", Modular, "t0 + 1 modulo 256: only t0 = 255 wraps, the last texel of a 256-texel level, where repeat wants \
+        0 (the AND with 255) and clamp keeps t0"),
+    w("TexAddr", "w_tv1", Modular, "as w_tu1, for v"),
 ];

@@ -1,0 +1,339 @@
+//! `tex_fetch`: the texture unit's map memory and fetch: 16-bit texels with the whole MIP chain (levels up to
+//! 128 × 128) in four 2×2-interleaved banks, one bilinear footprint read a clock, written texel by texel through
+//! the same stream (`we`). See `vectors::tex_fetch` for the layout and the ports.
+//!
+//! Latency 6: the level's side and the coordinates taken modulo it (and the write's); each bank's column and its
+//! row shifted to the level's row length, with the level's base; the bank addresses (and the write's address and
+//! bank); the banks' read (their own register); the four words registered (a block RAM's output straight into a
+//! select is slow: `height_fetch` measured it); each texel picked from the four words.
+
+use crate::prim::delay::Delay;
+use crate::prim::q::{U16, U8};
+use rust_hdl::prelude::*;
+
+pub const LATENCY: usize = 6;
+/// A bank's address bits: 8,192 words, of which a 128 × 128 map's chain takes 5,462 (`vectors::tex_fetch`).
+pub const ADDR_BITS: usize = 13;
+
+crate::stream_block! {
+    #[derive(Default)]
+    pub struct TexFetch: unit("tex_fetch", LATENCY) {
+        in {
+            level_log2: Bits<4>,
+            x0: U8,
+            x1: U8,
+            y0: U8,
+            y1: U8,
+            we: Bits<1>,
+            w_log2: Bits<4>,
+            wx: U8,
+            wy: U8,
+            wdata: U16,
+        }
+        out {
+            t00: U16,
+            t10: U16,
+            t01: U16,
+            t11: U16,
+        }
+        /// the four banks, (x mod 2) + 2·(y mod 2)
+        pub bank: [RAM<U16, 13>; 4],
+        // stage 1: the level's side log2 (saturated to 7), the coordinates modulo its side; the write's likewise
+        s1_m: DFF<Bits<4>>,
+        s1_x: [DFF<U8>; 2],
+        s1_y: [DFF<U8>; 2],
+        s1_rd: DFF<Bit>,
+        s1_we: DFF<Bit>,
+        s1_wm: DFF<Bits<4>>,
+        s1_wx: DFF<U8>,
+        s1_wy: DFF<U8>,
+        s1_wdata: DFF<U16>,
+        // stage 2: per parity p the column that bank column p reads, halved (U7 in 13), and the row likewise,
+        // shifted to its place (row·2^(m−1), U13); the level's base (U13); the parities for the select
+        s2_col: [DFF<Bits<13>>; 2],
+        s2_row: [DFF<Bits<13>>; 2],
+        s2_base: DFF<Bits<13>>,
+        s2_px: [DFF<Bit>; 2],
+        s2_py: [DFF<Bit>; 2],
+        s2_rd: DFF<Bit>,
+        s2_we: DFF<Bit>,
+        s2_wpx: DFF<Bit>,
+        s2_wpy: DFF<Bit>,
+        s2_wcol: DFF<Bits<13>>,
+        s2_wrow: DFF<Bits<13>>,
+        s2_wbase: DFF<Bits<13>>,
+        s2_wdata: DFF<U16>,
+        // stage 3: the four bank addresses and the write's (registered: the banks read and write them)
+        s3_addr: [DFF<Bits<13>>; 4],
+        s3_px: [DFF<Bit>; 2],
+        s3_py: [DFF<Bit>; 2],
+        s3_rd: DFF<Bit>,
+        wr_en: [DFF<Bit>; 4],
+        wr_addr: DFF<Bits<13>>,
+        wr_data: DFF<U16>,
+        // stage 4 is the banks' read; stage 5: the four words; stage 6: the four texels
+        s4_px: [DFF<Bit>; 2],
+        s4_py: [DFF<Bit>; 2],
+        s4_rd: DFF<Bit>,
+        s5_word: [DFF<U16>; 4],
+        s5_px: [DFF<Bit>; 2],
+        s5_py: [DFF<Bit>; 2],
+        s5_rd: DFF<Bit>,
+        s6_t: [DFF<U16>; 4],
+        valid: Delay<Bit, LATENCY>,
+        w_m: Signal<Local, Bits<4>>,
+        w_wm: Signal<Local, Bits<4>>,
+        w_one: Signal<Local, U8>,
+        w_side: Signal<Local, U8>,
+        w_mask: Signal<Local, U8>,
+        w_wside: Signal<Local, U8>,
+        w_wmask: Signal<Local, U8>,
+        w_cx: [Signal<Local, U8>; 2],
+        w_ry: [Signal<Local, U8>; 2],
+        w_c13: [Signal<Local, Bits<13>>; 2],
+        w_r13: [Signal<Local, Bits<13>>; 2],
+        w_rm: [Signal<Local, Bits<13>>; 2],
+        w_wc13: Signal<Local, Bits<13>>,
+        w_wr13: Signal<Local, Bits<13>>,
+        w_wrm: Signal<Local, Bits<13>>,
+        w_base: Signal<Local, Bits<13>>,
+        w_wbase: Signal<Local, Bits<13>>,
+        w_sum: [Signal<Local, Bits<13>>; 4],
+        w_kx: [Signal<Local, Bit>; 4],
+        w_ky: [Signal<Local, Bit>; 4],
+        w_wsum: Signal<Local, Bits<13>>,
+    }
+}
+
+impl Logic for TexFetch {
+    #[hdl_gen]
+    fn update(&mut self) {
+        dff_setup!(
+            self, clock, s1_m, s1_rd, s1_we, s1_wm, s1_wx, s1_wy, s1_wdata, s2_base, s2_rd, s2_we, s2_wpx, s2_wpy,
+            s2_wcol, s2_wrow, s2_wbase, s2_wdata, s3_rd, wr_addr, wr_data, s4_rd, s5_rd
+        );
+        clock!(self, clock, valid);
+        for n in 0..2 {
+            self.s1_x[n].clock.next = self.clock.val();
+            self.s1_y[n].clock.next = self.clock.val();
+            self.s2_col[n].clock.next = self.clock.val();
+            self.s2_row[n].clock.next = self.clock.val();
+            self.s2_px[n].clock.next = self.clock.val();
+            self.s2_py[n].clock.next = self.clock.val();
+            self.s3_px[n].clock.next = self.clock.val();
+            self.s3_py[n].clock.next = self.clock.val();
+            self.s4_px[n].clock.next = self.clock.val();
+            self.s4_py[n].clock.next = self.clock.val();
+            self.s5_px[n].clock.next = self.clock.val();
+            self.s5_py[n].clock.next = self.clock.val();
+        }
+        for n in 0..4 {
+            self.s3_addr[n].clock.next = self.clock.val();
+            self.wr_en[n].clock.next = self.clock.val();
+            self.s5_word[n].clock.next = self.clock.val();
+            self.s6_t[n].clock.next = self.clock.val();
+            self.bank[n].read_clock.next = self.clock.val();
+            self.bank[n].write_clock.next = self.clock.val();
+        }
+        self.valid.d.next = self.valid_in.val();
+
+        // stage 1: m = min(level_log2, 7) (saturate), the side's mask 2^m − 1, each coordinate modulo the side
+        if self.level_log2.val().get_bit(3) {
+            self.w_m.next = 7.into();
+        } else {
+            self.w_m.next = self.level_log2.val();
+        }
+        if self.w_log2.val().get_bit(3) {
+            self.w_wm.next = 7.into();
+        } else {
+            self.w_wm.next = self.w_log2.val();
+        }
+        self.w_one.next = 1.into();
+        self.w_side.next = self.w_one.val() << self.w_m.val(); // 2^m ≤ 128: U8, exact
+        self.w_mask.next = self.w_side.val() - 1; // U7, exact
+        self.w_wside.next = self.w_one.val() << self.w_wm.val(); // U8, exact
+        self.w_wmask.next = self.w_wside.val() - 1; // U7, exact
+        self.s1_m.d.next = self.w_m.val();
+        self.s1_x[0].d.next = self.x0.val() & self.w_mask.val(); // modulo 2^m
+        self.s1_x[1].d.next = self.x1.val() & self.w_mask.val();
+        self.s1_y[0].d.next = self.y0.val() & self.w_mask.val();
+        self.s1_y[1].d.next = self.y1.val() & self.w_mask.val();
+        self.s1_rd.d.next = !self.we.val().any();
+        self.s1_we.d.next = self.we.val().any() & self.valid_in.val();
+        self.s1_wm.d.next = self.w_wm.val();
+        self.s1_wx.d.next = self.wx.val() & self.w_wmask.val(); // modulo 2^m
+        self.s1_wy.d.next = self.wy.val() & self.w_wmask.val();
+        self.s1_wdata.d.next = self.wdata.val();
+
+        // stage 2: bank column p reads x0 if x0 has parity p, else x1; bank row q likewise
+        if self.s1_x[0].q.val().get_bit(0) {
+            self.w_cx[0].next = self.s1_x[1].q.val();
+            self.w_cx[1].next = self.s1_x[0].q.val();
+        } else {
+            self.w_cx[0].next = self.s1_x[0].q.val();
+            self.w_cx[1].next = self.s1_x[1].q.val();
+        }
+        if self.s1_y[0].q.val().get_bit(0) {
+            self.w_ry[0].next = self.s1_y[1].q.val();
+            self.w_ry[1].next = self.s1_y[0].q.val();
+        } else {
+            self.w_ry[0].next = self.s1_y[0].q.val();
+            self.w_ry[1].next = self.s1_y[1].q.val();
+        }
+        // the word column x >> 1 and row y >> 1 (U7 in 13, a slice widened; written out: the loop index does not
+        // reach into a function's argument under #[hdl_gen])
+        self.w_c13[0].next = bit_cast::<13, 7>(self.w_cx[0].val().get_bits::<7>(1));
+        self.w_c13[1].next = bit_cast::<13, 7>(self.w_cx[1].val().get_bits::<7>(1));
+        self.w_r13[0].next = bit_cast::<13, 7>(self.w_ry[0].val().get_bits::<7>(1));
+        self.w_r13[1].next = bit_cast::<13, 7>(self.w_ry[1].val().get_bits::<7>(1));
+        for n in 0..2 {
+            self.s2_col[n].d.next = self.w_c13[n].val();
+            // (y >> 1)·2^(m−1) as ((y >> 1) << m) >> 1, which is 0 for m = 0 with no case of its own: y >> 1 < 2^m−1
+            // so (y >> 1) << m < 2^(2m−1) ≤ 2^13, U13, exact, and the last shift drops a zero
+            self.w_rm[n].next = self.w_r13[n].val() << self.s1_m.q.val();
+            self.s2_row[n].d.next = self.w_rm[n].val() >> 1; // U12, exact
+        }
+        self.s2_px[0].d.next = self.s1_x[0].q.val().get_bit(0);
+        self.s2_px[1].d.next = self.s1_x[1].q.val().get_bit(0);
+        self.s2_py[0].d.next = self.s1_y[0].q.val().get_bit(0);
+        self.s2_py[1].d.next = self.s1_y[1].q.val().get_bit(0);
+        // base(m) = 1 + (4^(m−1) − 1)/3: where the level starts in every bank
+        self.w_base.next = 0.into();
+        if self.s1_m.q.val() == 1 {
+            self.w_base.next = 1.into();
+        }
+        if self.s1_m.q.val() == 2 {
+            self.w_base.next = 2.into();
+        }
+        if self.s1_m.q.val() == 3 {
+            self.w_base.next = 6.into();
+        }
+        if self.s1_m.q.val() == 4 {
+            self.w_base.next = 22.into();
+        }
+        if self.s1_m.q.val() == 5 {
+            self.w_base.next = 86.into();
+        }
+        if self.s1_m.q.val() == 6 {
+            self.w_base.next = 342.into();
+        }
+        if self.s1_m.q.val() == 7 {
+            self.w_base.next = 1366.into();
+        }
+        self.s2_base.d.next = self.w_base.val();
+        self.s2_rd.d.next = self.s1_rd.q.val();
+        // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
+        self.w_wc13.next = bit_cast::<13, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 13
+        self.w_wr13.next = bit_cast::<13, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 13
+        self.s2_wcol.d.next = self.w_wc13.val();
+        self.w_wrm.next = self.w_wr13.val() << self.s1_wm.q.val(); // U13, exact, as the read's
+        self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U12, exact
+        self.w_wbase.next = 0.into();
+        if self.s1_wm.q.val() == 1 {
+            self.w_wbase.next = 1.into();
+        }
+        if self.s1_wm.q.val() == 2 {
+            self.w_wbase.next = 2.into();
+        }
+        if self.s1_wm.q.val() == 3 {
+            self.w_wbase.next = 6.into();
+        }
+        if self.s1_wm.q.val() == 4 {
+            self.w_wbase.next = 22.into();
+        }
+        if self.s1_wm.q.val() == 5 {
+            self.w_wbase.next = 86.into();
+        }
+        if self.s1_wm.q.val() == 6 {
+            self.w_wbase.next = 342.into();
+        }
+        if self.s1_wm.q.val() == 7 {
+            self.w_wbase.next = 1366.into();
+        }
+        self.s2_wbase.d.next = self.w_wbase.val();
+        self.s2_wpx.d.next = self.s1_wx.q.val().get_bit(0);
+        self.s2_wpy.d.next = self.s1_wy.q.val().get_bit(0);
+        self.s2_we.d.next = self.s1_we.q.val();
+        self.s2_wdata.d.next = self.s1_wdata.q.val();
+
+        // stage 3: bank (p, q) = p + 2q at base + row q + column p (< 5,462: U13, exact)
+        self.w_sum[0].next = self.s2_base.q.val() + self.s2_row[0].q.val() + self.s2_col[0].q.val();
+        self.w_sum[1].next = self.s2_base.q.val() + self.s2_row[0].q.val() + self.s2_col[1].q.val();
+        self.w_sum[2].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[0].q.val();
+        self.w_sum[3].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[1].q.val();
+        self.w_wsum.next = self.s2_wbase.q.val() + self.s2_wrow.q.val() + self.s2_wcol.q.val(); // U13, exact
+        for n in 0..4 {
+            self.s3_addr[n].d.next = self.w_sum[n].val();
+        }
+        // the write's bank (x mod 2) + 2·(y mod 2)
+        self.wr_en[0].d.next = self.s2_we.q.val() & !self.s2_wpx.q.val() & !self.s2_wpy.q.val();
+        self.wr_en[1].d.next = self.s2_we.q.val() & self.s2_wpx.q.val() & !self.s2_wpy.q.val();
+        self.wr_en[2].d.next = self.s2_we.q.val() & !self.s2_wpx.q.val() & self.s2_wpy.q.val();
+        self.wr_en[3].d.next = self.s2_we.q.val() & self.s2_wpx.q.val() & self.s2_wpy.q.val();
+        self.wr_addr.d.next = self.w_wsum.val();
+        self.wr_data.d.next = self.s2_wdata.q.val();
+        for n in 0..2 {
+            self.s3_px[n].d.next = self.s2_px[n].q.val();
+            self.s3_py[n].d.next = self.s2_py[n].q.val();
+        }
+        self.s3_rd.d.next = self.s2_rd.q.val();
+
+        // stage 4: the banks read the addresses and write the write (a read sees the writes of the clocks before)
+        for n in 0..4 {
+            self.bank[n].read_address.next = self.s3_addr[n].q.val();
+            self.bank[n].write_address.next = self.wr_addr.q.val();
+            self.bank[n].write_data.next = self.wr_data.q.val();
+            self.bank[n].write_enable.next = self.wr_en[n].q.val();
+        }
+        for n in 0..2 {
+            self.s4_px[n].d.next = self.s3_px[n].q.val();
+            self.s4_py[n].d.next = self.s3_py[n].q.val();
+        }
+        self.s4_rd.d.next = self.s3_rd.q.val();
+
+        // stage 5: the four words registered
+        for n in 0..4 {
+            self.s5_word[n].d.next = self.bank[n].read_data.val();
+        }
+        for n in 0..2 {
+            self.s5_px[n].d.next = self.s4_px[n].q.val();
+            self.s5_py[n].d.next = self.s4_py[n].q.val();
+        }
+        self.s5_rd.d.next = self.s4_rd.q.val();
+
+        // stage 6: texel (x_a, y_b) is the word of bank (x_a mod 2) + 2·(y_b mod 2); a write reads nothing
+        // t00 = (x0, y0), t10 = (x1, y0), t01 = (x0, y1), t11 = (x1, y1): output k = a + 2b
+        for k in 0..4 {
+            self.s6_t[k].d.next = 0.into();
+        }
+        // each output's column parity, x_(k mod 2), and row parity, y_(k / 2)
+        self.w_kx[0].next = self.s5_px[0].q.val();
+        self.w_kx[1].next = self.s5_px[1].q.val();
+        self.w_kx[2].next = self.s5_px[0].q.val();
+        self.w_kx[3].next = self.s5_px[1].q.val();
+        self.w_ky[0].next = self.s5_py[0].q.val();
+        self.w_ky[1].next = self.s5_py[0].q.val();
+        self.w_ky[2].next = self.s5_py[1].q.val();
+        self.w_ky[3].next = self.s5_py[1].q.val();
+        if self.s5_rd.q.val() {
+            for k in 0..4 {
+                if self.w_ky[k].val() {
+                    if self.w_kx[k].val() {
+                        self.s6_t[k].d.next = self.s5_word[3].q.val();
+                    } else {
+                        self.s6_t[k].d.next = self.s5_word[2].q.val();
+                    }
+                } else if self.w_kx[k].val() {
+                    self.s6_t[k].d.next = self.s5_word[1].q.val();
+                } else {
+                    self.s6_t[k].d.next = self.s5_word[0].q.val();
+                }
+            }
+        }
+        self.t00.next = self.s6_t[0].q.val();
+        self.t10.next = self.s6_t[1].q.val();
+        self.t01.next = self.s6_t[2].q.val();
+        self.t11.next = self.s6_t[3].q.val();
+        self.valid_out.next = self.valid.q.val();
+    }
+}
