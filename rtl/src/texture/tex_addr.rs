@@ -3,14 +3,15 @@
 //! two blend factors, each axis repeating or clamping on its own; `linear` = 0 gives the nearest texel instead. See
 //! `vectors::tex_addr` for the exact recipe.
 //!
-//! Latency 4: the level read and its side; the position shifted to the level (and half a texel back) beside the
-//! level's span; the repeat or the clamp; the footprint's second texel.
+//! Latency 5: the level read and its side; the position shifted to the level; half a texel back, beside the
+//! level's span; the repeat or the clamp; the footprint's second texel. (With the shift and the subtraction in one
+//! stage the ECP5-45F placed the unit at 116.2 MHz, that path the critical one.)
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{SBits, Sq11_8, U16, U8};
 use rust_hdl::prelude::*;
 
-pub const LATENCY: usize = 4;
+pub const LATENCY: usize = 5;
 
 crate::stream_block! {
     #[derive(Default)]
@@ -42,6 +43,13 @@ crate::stream_block! {
         s1_uwrap: DFF<Bit>,
         s1_vwrap: DFF<Bit>,
         s1_lin: DFF<Bit>,
+        // stage 1b: a = floor(u / 2^n') per axis (S20 in 22), the level's side and the modes beside it
+        s1b_au: DFF<SBits<22>>,
+        s1b_av: DFF<SBits<22>>,
+        s1b_m: DFF<Bits<4>>,
+        s1b_lin: DFF<Bit>,
+        s1b_uwrap: DFF<Bit>,
+        s1b_vwrap: DFF<Bit>,
         // stage 2: c per axis (S21 in 22: the position at the level, half a texel back for bilinear), the level's
         // last coordinate 256·2^m − 1 (the repeat's mask, U16 in 22), the clamp's top (U16 in 22), its last texel
         s2_cu: DFF<SBits<22>>,
@@ -97,9 +105,9 @@ impl Logic for TexAddr {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s1_n, s1_m, s1_u, s1_v, s1_uwrap, s1_vwrap, s1_lin, s2_cu, s2_cv, s2_mask, s2_top, s2_last,
-            s2_m, s2_uwrap, s2_vwrap, s2_lin, s3_ru, s3_rv, s3_last, s3_m, s3_uwrap, s3_vwrap, s3_lin, s4_m, s4_x0,
-            s4_x1, s4_y0, s4_y1, s4_ub, s4_vb
+            self, clock, s1_n, s1_m, s1_u, s1_v, s1_uwrap, s1_vwrap, s1_lin, s1b_au, s1b_av, s1b_m, s1b_lin, s1b_uwrap,
+            s1b_vwrap, s2_cu, s2_cv, s2_mask, s2_top, s2_last, s2_m, s2_uwrap, s2_vwrap, s2_lin, s3_ru, s3_rv, s3_last,
+            s3_m, s3_uwrap, s3_vwrap, s3_lin, s4_m, s4_x0, s4_x1, s4_y0, s4_y1, s4_ub, s4_vb
         );
         clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
@@ -123,47 +131,55 @@ impl Logic for TexAddr {
         self.s1_vwrap.d.next = self.vwrap.val().any();
         self.s1_lin.d.next = self.linear.val().any();
 
-        // stage 2: a = u >> n' (an arithmetic shift, the floor: u sign-extended to 30 bits by hand, shifted
+        // stage 1b: a = u >> n' (an arithmetic shift, the floor: u sign-extended to 30 bits by hand, shifted
         // logically by at most 8, so bits 0..21 of the result are the shifted value's, sign included)
         self.w_sign.next = 0x3ff0_0000.into(); // bits 20..29
         self.w_ux.next = bit_cast::<30, 20>(self.s1_u.q.val()); // U20 in 30, widening
         if self.s1_u.q.val().get_bit(19) {
+            // the sign extended into bits 20..29
             self.w_ux.next = bit_cast::<30, 20>(self.s1_u.q.val()) | self.w_sign.val();
-            // the sign extended
         }
         self.w_vx.next = bit_cast::<30, 20>(self.s1_v.q.val()); // U20 in 30, widening
         if self.s1_v.q.val().get_bit(19) {
+            // the sign extended into bits 20..29
             self.w_vx.next = bit_cast::<30, 20>(self.s1_v.q.val()) | self.w_sign.val();
-            // the sign extended
         }
         self.w_ua.next = self.w_ux.val() >> self.s1_n.q.val(); // floor(u / 2^n'), in bits 0..21 (S20)
         self.w_va.next = self.w_vx.val() >> self.s1_n.q.val(); // floor(v / 2^n'), in bits 0..21 (S20)
         self.w_ua22.next = self.w_ua.val().get_bits::<22>(0); // S20 in 22, a slice of a sign-extended value
         self.w_va22.next = self.w_va.val().get_bits::<22>(0); // S20 in 22, a slice of a sign-extended value
-        if self.s1_lin.q.val() {
-            self.s2_cu.d.next = self.w_ua22.val() - 128; // half a texel back: S21 in 22, two's complement, exact
-            self.s2_cv.d.next = self.w_va22.val() - 128; // S21 in 22, exact
+        self.s1b_au.d.next = self.w_ua22.val();
+        self.s1b_av.d.next = self.w_va22.val();
+        self.s1b_m.d.next = self.s1_m.q.val();
+        self.s1b_lin.d.next = self.s1_lin.q.val();
+        self.s1b_uwrap.d.next = self.s1_uwrap.q.val();
+        self.s1b_vwrap.d.next = self.s1_vwrap.q.val();
+
+        // stage 2: c = a − 128 (bilinear) or a (nearest)
+        if self.s1b_lin.q.val() {
+            self.s2_cu.d.next = self.s1b_au.q.val() - 128; // half a texel back: S21 in 22, two's complement, exact
+            self.s2_cv.d.next = self.s1b_av.q.val() - 128; // S21 in 22, exact
         } else {
-            self.s2_cu.d.next = self.w_ua22.val(); // nearest: the position itself
-            self.s2_cv.d.next = self.w_va22.val();
+            self.s2_cu.d.next = self.s1b_au.q.val(); // nearest: the position itself
+            self.s2_cv.d.next = self.s1b_av.q.val();
         }
         // the level's side 2^m (U9 in 22), its span 256·2^m (U17 in 22), the last coordinate and texel
-        self.w_m22.next = bit_cast::<22, 4>(self.s1_m.q.val()); // U4 in 22, widening
+        self.w_m22.next = bit_cast::<22, 4>(self.s1b_m.q.val()); // U4 in 22, widening
         self.w_one.next = 1.into();
         self.w_side.next = self.w_one.val() << self.w_m22.val(); // m ≤ 8: exact
         self.w_span.next = self.w_side.val() << 8; // ≤ 2^16: exact
         self.w_side_m1.next = self.w_side.val() - 1; // the last texel, U8 in 22, exact
         self.s2_mask.d.next = self.w_span.val() - 1; // the last coordinate, U16, exact
-        if self.s1_lin.q.val() {
+        if self.s1b_lin.q.val() {
             self.s2_top.d.next = self.w_span.val() - 256; // bilinear: up to the last texel's centre, exact
         } else {
             self.s2_top.d.next = self.w_span.val() - 1; // nearest: up to the last texel's end, exact
         }
         self.s2_last.d.next = self.w_side_m1.val().get_bits::<8>(0); // U8, a slice of a U8 value
-        self.s2_m.d.next = self.s1_m.q.val();
-        self.s2_uwrap.d.next = self.s1_uwrap.q.val();
-        self.s2_vwrap.d.next = self.s1_vwrap.q.val();
-        self.s2_lin.d.next = self.s1_lin.q.val();
+        self.s2_m.d.next = self.s1b_m.q.val();
+        self.s2_uwrap.d.next = self.s1b_uwrap.q.val();
+        self.s2_vwrap.d.next = self.s1b_vwrap.q.val();
+        self.s2_lin.d.next = self.s1b_lin.q.val();
 
         // stage 3: repeat (modulo the span: the AND of the two's complement value) or clamp (saturate to 0..top)
         if self.s2_uwrap.q.val() {

@@ -63,13 +63,13 @@ crate::stream_block! {
         s2_wrow: DFF<Bits<13>>,
         s2_wbase: DFF<Bits<13>>,
         s2_wdata: DFF<U16>,
-        // stage 3: the four bank addresses and the write's (registered: the banks read and write them)
+        // stage 3: the four bank addresses, the write's in the bank it writes (registered: the banks read and write
+        // them)
         s3_addr: [DFF<Bits<13>>; 4],
         s3_px: [DFF<Bit>; 2],
         s3_py: [DFF<Bit>; 2],
         s3_rd: DFF<Bit>,
         wr_en: [DFF<Bit>; 4],
-        wr_addr: DFF<Bits<13>>,
         wr_data: DFF<U16>,
         // stage 4 is the banks' read; stage 5: the four words; stage 6: the four texels
         s4_px: [DFF<Bit>; 2],
@@ -110,7 +110,7 @@ impl Logic for TexFetch {
     fn update(&mut self) {
         dff_setup!(
             self, clock, s1_m, s1_rd, s1_we, s1_wm, s1_wx, s1_wy, s1_wdata, s2_base, s2_rd, s2_we, s2_wpx, s2_wpy,
-            s2_wcol, s2_wrow, s2_wbase, s2_wdata, s3_rd, wr_addr, wr_data, s4_rd, s5_rd
+            s2_wcol, s2_wrow, s2_wbase, s2_wdata, s3_rd, wr_data, s4_rd, s5_rd
         );
         clock!(self, clock, valid);
         for n in 0..2 {
@@ -262,15 +262,29 @@ impl Logic for TexFetch {
         self.w_sum[2].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[0].q.val();
         self.w_sum[3].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[1].q.val();
         self.w_wsum.next = self.s2_wbase.q.val() + self.s2_wrow.q.val() + self.s2_wcol.q.val(); // U13, exact
+                                                                                                // one address a bank a clock: the write's in the bank it writes, else the read's (a vector either reads
+                                                                                                // or writes, so nothing is lost), as a single-port RAM (the UP5K's SPRAM) needs it
         for n in 0..4 {
             self.s3_addr[n].d.next = self.w_sum[n].val();
+        }
+        if self.s2_we.q.val() {
+            if self.s2_wpy.q.val() {
+                if self.s2_wpx.q.val() {
+                    self.s3_addr[3].d.next = self.w_wsum.val();
+                } else {
+                    self.s3_addr[2].d.next = self.w_wsum.val();
+                }
+            } else if self.s2_wpx.q.val() {
+                self.s3_addr[1].d.next = self.w_wsum.val();
+            } else {
+                self.s3_addr[0].d.next = self.w_wsum.val();
+            }
         }
         // the write's bank (x mod 2) + 2·(y mod 2)
         self.wr_en[0].d.next = self.s2_we.q.val() & !self.s2_wpx.q.val() & !self.s2_wpy.q.val();
         self.wr_en[1].d.next = self.s2_we.q.val() & self.s2_wpx.q.val() & !self.s2_wpy.q.val();
         self.wr_en[2].d.next = self.s2_we.q.val() & !self.s2_wpx.q.val() & self.s2_wpy.q.val();
         self.wr_en[3].d.next = self.s2_we.q.val() & self.s2_wpx.q.val() & self.s2_wpy.q.val();
-        self.wr_addr.d.next = self.w_wsum.val();
         self.wr_data.d.next = self.s2_wdata.q.val();
         for n in 0..2 {
             self.s3_px[n].d.next = self.s2_px[n].q.val();
@@ -281,7 +295,7 @@ impl Logic for TexFetch {
         // stage 4: the banks read the addresses and write the write (a read sees the writes of the clocks before)
         for n in 0..4 {
             self.bank[n].read_address.next = self.s3_addr[n].q.val();
-            self.bank[n].write_address.next = self.wr_addr.q.val();
+            self.bank[n].write_address.next = self.s3_addr[n].q.val();
             self.bank[n].write_data.next = self.wr_data.q.val();
             self.bank[n].write_enable.next = self.wr_en[n].q.val();
         }
