@@ -65,7 +65,7 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     });
 
     // the window's pixels, refused before any simulation when the surface covers none of them
-    let wprep = win.of(&prep);
+    let wprep = pipe.trim(win.of(&prep));
     if wprep.ideal.is_empty() {
         return Err(format!("--window {},{},{},{}: the surface covers no pixel of it", win.x, win.y, win.w, win.h));
     }

@@ -132,8 +132,8 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
         "palette_pipeline_12.vcd",
         "verilog/palette_pipeline_12.v",
         "torus_model.png",
-        "cart_pipeline_matte.vcd",
-        "verilog/cart_pipeline_matte.v",
+        "cart_tex_bilinear_matte.vcd",
+        "verilog/cart_tex_bilinear_matte.v",
     ] {
         assert!(d.join(f).is_file(), "{f} missing");
     }
@@ -718,11 +718,16 @@ fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
     let (_, module, _) = bumprtl(&["verilog", "cart_surface", "--out", "-"]);
     assert_eq!(std::fs::read_to_string(d.join("cart_surface.v")).unwrap(), module);
     assert!(!module.contains("l0_x") && !module.contains("$light_norm") && module.contains("module cart_surface("));
-    // the demo's torus: lights per vertex (so the light interpolator and its normaliser) and C = 0 (so no gloss unit)
+    // the demo's torus: on the texture unit (its memory's write port, the bilinear front), lights per vertex (so the
+    // light interpolator and its normaliser) and C = 0 (so no gloss unit)
     let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("demo.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0);
     assert!(
-        text.contains("module cart_pipeline_matte(") && text.contains("l0_x") && text.contains("$light_norm"),
+        text.contains("module cart_tex_bilinear_matte(")
+            && text.contains("wdata")
+            && text.contains("module cart_tex_bilinear_matte$texture$fetch(")
+            && text.contains("l0_x")
+            && text.contains("$light_norm"),
         "{}",
         &text[..text.len().min(200)]
     );

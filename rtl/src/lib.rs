@@ -37,6 +37,7 @@ pub mod cartesian {
     pub mod cart_decode_hemi_oct;
     pub mod cart_pipeline;
     pub mod cart_surface;
+    pub mod cart_tex;
     pub mod light_iter;
     pub mod wiring;
 }
@@ -76,6 +77,7 @@ pub mod palette {
 
 /// The texture unit in front of every family: level of detail, address, the map memory and its fetch.
 pub mod texture {
+    pub mod front;
     pub mod lod;
     pub mod tex_addr;
     pub mod tex_fetch;
@@ -84,7 +86,7 @@ pub mod texture {
 pub mod stream;
 
 // every unit also at the crate root, by its own name, whatever its family
-pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, cart_surface, light_iter};
+pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, cart_surface, cart_tex, light_iter};
 pub use height::{
     blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent,
     tangent_to_normal, texture_filter,

@@ -59,6 +59,11 @@ pub trait Pipeline: Sync {
     fn waveform(&self, p: &Prepared) -> Vec<Vec<i64>> {
         p.inputs.iter().take(p.prologue + 64).cloned().collect()
     }
+    /// A share of a frame (a window's) with its prologue cut to what its pixels need: the texture unit's
+    /// pipelines keep the writes of the texels their pixels read; the others keep it whole.
+    fn trim(&self, p: Prepared) -> Prepared {
+        p
+    }
     /// Bits of texture memory per texel of the bump source.
     fn bits_per_texel(&self) -> u32 {
         16
@@ -255,6 +260,149 @@ impl Pipeline for CartSurface {
     }
     fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
         Some(cart_surface::exact_trace(self.variant, input).normal.map(|c| c as f64))
+    }
+}
+
+/// A Cartesian pipeline on the texture unit: the host-fed pipeline it is built on prepares the frame (its lights,
+/// material and ideals); each pixel's texels and blend factors give way to what a rasteriser gives, the sample's
+/// position (Sq11.8, texels of level 0) and its screen derivatives (Sq8.8), and the frame begins with a prologue
+/// that loads the map and its MIP chain into the unit's memory, one texel a clock. The levels: each texel of a
+/// level the four texels under it of the level above averaged as unit vectors and made unit length again, then
+/// encoded as the host's texels are.
+pub struct CartTex {
+    row: &'static Row,
+    host: Box<dyn Pipeline>,
+    filter: pipelines::Filter,
+}
+
+impl CartTex {
+    pub fn new(row: &'static Row, host: &'static Row, filter: pipelines::Filter) -> CartTex {
+        CartTex { row, host: build(host, &Scene::default(), &Settings::default()), filter }
+    }
+}
+
+/// The map's MIP chain as unit normals, level 0 (side t) first, down to 1 × 1: each texel the normalised mean of
+/// the four under it.
+pub fn mip_chain(normals: &[[f64; 3]], t: usize) -> Vec<Vec<[f64; 3]>> {
+    let mut chain = vec![normals.to_vec()];
+    let mut side = t;
+    while side > 1 {
+        let (up, half) = (chain.last().unwrap(), side / 2);
+        let mut level = Vec::with_capacity(half * half);
+        for y in 0..half {
+            for x in 0..half {
+                let mut m = [0.0; 3];
+                for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                    let n = up[(2 * y + dy) * side + 2 * x + dx];
+                    for c in 0..3 {
+                        m[c] += n[c];
+                    }
+                }
+                level.push(crate::surface::unit(m));
+            }
+        }
+        chain.push(level);
+        side = half;
+    }
+    chain
+}
+
+/// A value in texels (or texels a pixel) as a signed fixed-point code with 8 fraction bits, rounded and saturated
+/// to `bits`.
+fn fixed8(x: f64, bits: u32) -> i64 {
+    let lim = 1i64 << (bits - 1);
+    ((x * 256.0).round() as i64).clamp(-lim, lim - 1)
+}
+
+impl Pipeline for CartTex {
+    fn row(&self) -> &'static Row {
+        self.row
+    }
+    fn describe(&self, scene: &Scene) -> String {
+        let f = match self.filter {
+            pipelines::Filter::Bilinear => "bilinear on level 0",
+            pipelines::Filter::Nearest => "the nearest texel of level 0",
+            pipelines::Filter::NearestMip => "the nearest texel of the nearest MIP level (the LOD unit's)",
+        };
+        format!(
+            "the texture unit ({f}, the map and its chain in its memory) in front of: {}",
+            self.host.describe(scene)
+        )
+    }
+    fn prepare(&self, scene: &Scene) -> Prepared {
+        use vectors::texture::front::{self, At};
+        let host = self.host.prepare(scene);
+        let model = self.model();
+        let at = At::of(model.inputs, self.filter == pipelines::Filter::NearestMip);
+        let t = scene.tex;
+        assert!(self.row.renders(scene), "{}: a map of side {t}, not a power of two up to 128", self.row.name);
+        let log_side = t.trailing_zeros() as i64;
+        let host_ports = self.host.model().inputs;
+        let from_host = |h: &[i64]| -> Vec<i64> {
+            model.inputs.iter().map(|p| host_ports.iter().position(|q| q.name == p.name).map_or(0, |k| h[k])).collect()
+        };
+        // the prologue: every level of the chain, the smallest first, encoded as the host encodes its texels
+        let encoder = match self.host.row().family {
+            Family::Cartesian(Decode::HemiOct) => Encoder::HemiOct,
+            Family::CartSurface(v) if v.decode == Decode::HemiOct => Encoder::HemiOct,
+            _ => Encoder::Seed,
+        };
+        let chain = mip_chain(&scene.normals(), t);
+        let blank = vec![0; model.inputs.len()];
+        let mut inputs = vec![];
+        for (k, level) in chain.iter().enumerate().rev() {
+            let (m, side) = (log_side - k as i64, t >> k);
+            for (i, &n) in level.iter().enumerate() {
+                let (x, z) = cart_encode::encode(encoder, n);
+                let mut v = blank.clone();
+                front::put_write(&mut v, &at, m, (i % side) as i64, (i / side) as i64, x as i64 | ((z as i64) << 8));
+                inputs.push(v);
+            }
+        }
+        let prologue = inputs.len();
+        let frame = raster::frame(scene, &scene.normals());
+        assert_eq!(frame.pixels.len(), host.pixels().len(), "the host's frame and the rasteriser's");
+        for (px, h) in frame.pixels.iter().zip(host.pixels()) {
+            let mut v = from_host(h);
+            let uv = [fixed8(px.pos[0], 20), fixed8(px.pos[1], 20)];
+            front::put_read(&mut v, &at, uv, log_side, px.wrap, px.deriv.map(|d| fixed8(d, 17)));
+            inputs.push(v);
+        }
+        Prepared { size: host.size, inputs, prologue, ideal: host.ideal, at: host.at }
+    }
+    fn trim(&self, mut p: Prepared) -> Prepared {
+        use vectors::texture::front::{At, Front};
+        let at = At::of(self.model().inputs, self.filter == pipelines::Filter::NearestMip);
+        let front = Front::new(self.filter.front());
+        let read: std::collections::HashSet<_> = p.pixels().iter().flat_map(|v| front.reads(v, &at)).collect();
+        let keep: Vec<Vec<i64>> = p.inputs[..p.prologue]
+            .iter()
+            .filter(|v| Front::writes(v, &at).is_some_and(|t| read.contains(&t)))
+            .cloned()
+            .collect();
+        let n = keep.len();
+        p.inputs.splice(..p.prologue, keep);
+        p.prologue = n;
+        p
+    }
+    fn waveform(&self, p: &Prepared) -> Vec<Vec<i64>> {
+        let first = Prepared {
+            size: p.size,
+            inputs: p.inputs.iter().take(p.prologue + 64).cloned().collect(),
+            prologue: p.prologue,
+            ideal: p.ideal.iter().take(64).copied().collect(),
+            at: p.at.iter().take(64).copied().collect(),
+        };
+        self.trim(first).inputs
+    }
+    fn shade(&self, out: &[i64]) -> f64 {
+        self.host.shade(out)
+    }
+    fn shade_name(&self) -> &'static str {
+        self.host.shade_name()
+    }
+    fn colour(&self, out: &[i64]) -> [u8; 3] {
+        self.host.colour(out)
     }
 }
 
@@ -652,6 +800,9 @@ pub fn build(row: &'static Row, scene: &Scene, s: &Settings) -> Box<dyn Pipeline
     match row.family {
         Family::Cartesian(decode) => Box::new(Cartesian { decode, gloss: row.serves.gloss, row }),
         Family::CartSurface(variant) => Box::new(CartSurface { variant, row }),
+        Family::CartTex { host, filter } => {
+            Box::new(CartTex::new(row, pipelines::named(host).expect("a host row"), filter))
+        }
         Family::Polar(scale) => Box::new(Polar { scale, pw: s.pw, h: s.h, row }),
         Family::Height => Box::new(Height { row, ..Height::with_bits(scene, s.height_bits) }),
         Family::Palette => {

@@ -38,8 +38,42 @@ pub enum Encoding {
 pub enum Filter {
     #[default]
     Bilinear,
-    /// the texel nearest the sample, no filter (the Cartesian pipelines with one light per surface)
+    /// the texel nearest the sample, no filter (the Cartesian pipelines with one light per surface, and on the
+    /// texture unit)
     Nearest,
+    /// the nearest texel of the nearest MIP level (the texture unit's LOD unit picks it)
+    NearestMip,
+}
+
+impl Filter {
+    /// Its name in a scene file.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Filter::Bilinear => "bilinear",
+            Filter::Nearest => "nearest",
+            Filter::NearestMip => "nearest_mip",
+        }
+    }
+
+    /// The texture unit's front for this filter.
+    pub const fn front(self) -> vectors::texture::front::Filter {
+        use vectors::texture::front::Filter as F;
+        match self {
+            Filter::Bilinear => F::Bilinear,
+            Filter::Nearest => F::Nearest,
+            Filter::NearestMip => F::NearestMip,
+        }
+    }
+}
+
+/// Who fetches the texels: the texture unit from its memory (u, v and their derivatives in), or the host (texels
+/// and blend factors in).
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum Fetch {
+    #[default]
+    Unit,
+    Host,
 }
 
 /// Where the light is taken.
@@ -64,6 +98,24 @@ pub struct Choices {
     pub gloss: bool,
     pub filter: Filter,
     pub index_bits: u32,
+    pub fetch: Fetch,
+}
+
+impl Choices {
+    /// The choices in a scene file's words.
+    pub fn describe(&self) -> String {
+        let enc = match self.encoding {
+            Encoding::Seed => "seed",
+            Encoding::HemiOct => "hemi_oct",
+            Encoding::Polar => "polar",
+            Encoding::PolarDc255 => "polar_dc255",
+            Encoding::Heights => "heights",
+            Encoding::Palette => "palette",
+        };
+        let per = if self.per == Per::Vertex { "vertex" } else { "surface" };
+        let gloss = if self.gloss { "a gloss" } else { "gloss = 0" };
+        format!("encoding {enc}, per = \"{per}\", {gloss}, filter = \"{}\"", self.filter.name())
+    }
 }
 
 /// A pipeline family: the rows that share one `Pipeline` implementation, with the family's own parameter.
@@ -73,6 +125,8 @@ pub enum Family {
     Cartesian(Decode),
     /// seed 000's Cartesian path with one light per surface
     CartSurface(Variant),
+    /// a Cartesian pipeline (the host-fed row named `host`) on the texture unit, with this filter
+    CartTex { host: &'static str, filter: Filter },
     /// seed 000's first embodiment (FIG. 3)
     Polar(Scale),
     /// seed 001's height map
@@ -128,6 +182,12 @@ impl Row {
     pub fn renders(&self, scene: &Scene) -> bool {
         match self.family {
             Family::Cartesian(_) | Family::CartSurface(_) => self.serves.gloss || scene.conc == 0,
+            // the memory holds a map of side 2^0 … 2^7 and its chain
+            Family::CartTex { .. } => {
+                (self.serves.gloss || scene.conc == 0)
+                    && scene.tex.is_power_of_two()
+                    && scene.tex <= 1 << vectors::tex_fetch::MAX_LOG_SIDE
+            }
             Family::Polar(_) => true,
             Family::Height | Family::Palette => scene.curved.is_none(),
         }
@@ -150,7 +210,7 @@ pub const fn cartesian(decode: Decode, per: Per, gloss: bool, filter: Filter) ->
         Decode::Seed => Encoding::Seed,
         Decode::HemiOct => Encoding::HemiOct,
     };
-    Choices { encoding, per, gloss, filter, index_bits: 0 }
+    Choices { encoding, per, gloss, filter, index_bits: 0, fetch: Fetch::Host }
 }
 
 /// A Cartesian pipeline with one light per surface: its variant's choices.
@@ -159,7 +219,7 @@ pub const fn surface(v: Variant) -> Choices {
 }
 
 const fn one_light(encoding: Encoding, gloss: bool, index_bits: u32) -> Choices {
-    Choices { encoding, per: Per::Surface, gloss, filter: Filter::Bilinear, index_bits }
+    Choices { encoding, per: Per::Surface, gloss, filter: Filter::Bilinear, index_bits, fetch: Fetch::Host }
 }
 
 /// The polar pipeline's choices at this angle scale.
@@ -194,6 +254,19 @@ const fn cart(
 
 const fn surf(name: &'static str, label: &'static str, v: Variant, units: &'static [&'static str]) -> Row {
     Row { name, family: Family::CartSurface(v), label, units, serves: surface(v) }
+}
+
+/// A Cartesian pipeline on the texture unit: its host-fed row's choices, fetched by the unit with this filter.
+const fn tex(
+    name: &'static str,
+    label: &'static str,
+    host: &'static str,
+    host_serves: Choices,
+    filter: Filter,
+    units: &'static [&'static str],
+) -> Row {
+    let serves = Choices { filter, fetch: Fetch::Unit, ..host_serves };
+    Row { name, family: Family::CartTex { host, filter }, label, units, serves }
 }
 
 const S: Decode = Decode::Seed;
@@ -279,6 +352,38 @@ pub static PIPELINES: &[Row] = &[
         "hemi-oct, nearest, one light, matte",
         v(H, true, false),
         &["cart_decode_hemi_oct", "normalise", "dot3", "blend"],
+    ),
+    tex(
+        "cart_tex_bilinear",
+        "Cartesian, texture unit, bilinear",
+        "cart_pipeline",
+        cartesian(S, Per::Vertex, true, Filter::Bilinear),
+        Filter::Bilinear,
+        &["tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
+    ),
+    tex(
+        "cart_tex_bilinear_matte",
+        "Cartesian, matte, texture unit, bilinear",
+        "cart_pipeline_matte",
+        cartesian(S, Per::Vertex, false, Filter::Bilinear),
+        Filter::Bilinear,
+        &["tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
+    ),
+    tex(
+        "cart_tex_nearest_matte",
+        "Cartesian, matte, texture unit, nearest",
+        "cart_pipeline_matte",
+        cartesian(S, Per::Vertex, false, Filter::Bilinear),
+        Filter::Nearest,
+        &["tex_addr", "tex_fetch", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
+    ),
+    tex(
+        "cart_tex_nearest_mip_matte",
+        "Cartesian, matte, texture unit, nearest MIP level",
+        "cart_pipeline_matte",
+        cartesian(S, Per::Vertex, false, Filter::Bilinear),
+        Filter::NearestMip,
+        &["lod", "tex_addr", "tex_fetch", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
     ),
     Row {
         name: "polar_pipeline",

@@ -25,6 +25,12 @@ pub struct Pixel {
     pub light: [f64; 3],
     /// The pixel's place in the frame (row by row).
     pub at: usize,
+    /// The sample's position in texels of level 0 (texel i spans [i, i + 1), its centre at i + ½), unwrapped, and
+    /// its screen derivatives du/dx, dv/dx, du/dy, dv/dy (texels a pixel): what a rasteriser gives the texture unit.
+    pub pos: [f64; 2],
+    pub deriv: [f64; 4],
+    /// Whether the map repeats along u and along v (else it is clamped at its edges).
+    pub wrap: [bool; 2],
     /// The one light of the pixel's surface, in its tangent frame: the quad's centre's; a curved surface's
     /// triangle's, at its centre.
     pub surface: [f64; 3],
@@ -92,7 +98,22 @@ fn quad(scene: &Scene, normals: &[[f64; 3]]) -> Frame {
             let corners = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
             let normal = filtered(normals, t, corners, ub, vb);
             let light = interpolated(tri.map(|k| lights[k]), w1, w2);
-            out.push(Pixel { corners, ub, vb, tri, w1, w2, normal, light, at: py * n + px, surface: surface_light });
+            let (pos, d) = ([u * t as f64, v * t as f64], t as f64 / n as f64);
+            out.push(Pixel {
+                corners,
+                ub,
+                vb,
+                tri,
+                w1,
+                w2,
+                normal,
+                light,
+                at: py * n + px,
+                surface: surface_light,
+                pos,
+                deriv: [d, 0.0, 0.0, d],
+                wrap: [false, false],
+            });
         }
     }
     Frame { pixels: out, lights }
@@ -141,6 +162,10 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
     for cv in surface::rasterise(&mesh, c.view, scene.size) {
         let tri = mesh.tris[cv.tri];
         let uv: [f64; 2] = std::array::from_fn(|k| (0..3).map(|i| cv.bary[i] * mesh.uv[tri[i]][k]).sum());
+        // texels of level 0 along each axis per unit of (u, v), and the position's screen derivatives
+        let scale = [c.repeat[0] as f64 * t as f64, c.repeat[1] as f64 * t as f64];
+        let d = |axis: usize, k: usize| (0..3).map(|i| cv.dbary[axis][i] * mesh.uv[tri[i]][k]).sum::<f64>() * scale[k];
+        let (pos, deriv) = ([uv[0] * scale[0], uv[1] * scale[1]], [d(0, 0), d(0, 1), d(1, 0), d(1, 1)]);
         let (i0, i1, ub) = axis(uv[0] * c.repeat[0] as f64, true);
         let (j0, j1, vb) = axis(uv[1] * c.repeat[1] as f64, wrap_v);
         let corners = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
@@ -159,6 +184,9 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
             light,
             at: cv.at,
             surface: centre[cv.tri],
+            pos,
+            deriv,
+            wrap: [true, wrap_v],
         });
     }
     Frame { pixels: out, lights }

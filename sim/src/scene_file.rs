@@ -41,7 +41,7 @@
 //! ```
 
 use crate::pipelines::{Choices, Row, Settings};
-pub use crate::pipelines::{Encoding, Filter, Per};
+pub use crate::pipelines::{Encoding, Fetch, Filter, Per};
 use crate::scene::Scene;
 use serde::Deserialize;
 use std::ops::Range;
@@ -286,6 +286,7 @@ pub struct BumpSpec {
     pub encoding: Option<Spanned<Encoding>>,
     pub palette: Option<Spanned<PaletteSize>>,
     pub filter: Option<Spanned<Filter>>,
+    pub fetch: Option<Spanned<Fetch>>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -568,12 +569,24 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     };
     let gloss = mat.gloss.as_ref().map(|g| g.span());
     let (power, weight) = (mat.power.as_ref().map(|p| p.span()), mat.weight.as_ref().map(|w| w.span()));
-    let nearest = bump.filter.as_ref().is_some_and(|f| *f.get_ref() == Filter::Nearest);
+    let filter = bump.filter.as_ref().map_or(Filter::Bilinear, |f| *f.get_ref());
+    let nearest = filter == Filter::Nearest;
     let filter_span = bump.filter.as_ref().map(|f| f.span());
-    if nearest && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
+    let fetch = bump.fetch.as_ref().map(|f| *f.get_ref());
+    let fetch_span = bump.fetch.as_ref().map(|f| f.span());
+    if filter != Filter::Bilinear && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
         return Err(at.err(
             filter_span.clone().unwrap_or(bump_span.clone()),
-            "[bump] filter = \"nearest\": only the Cartesian encodings (seed, hemi_oct) have a nearest-texel pipeline",
+            format!(
+                "[bump] filter = \"{}\": only the Cartesian encodings (seed, hemi_oct) have that filter",
+                filter.name()
+            ),
+        ));
+    }
+    if fetch.is_some() && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
+        return Err(at.err(
+            fetch_span.clone().unwrap_or(bump_span.clone()),
+            "[bump] fetch: only the Cartesian encodings (seed, hemi_oct) have pipelines on the texture unit yet",
         ));
     }
     // the choices that pick the pipeline, as the pipeline holds them (`Choices`)
@@ -584,6 +597,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
         gloss,
         filter: Filter::Bilinear,
         index_bits,
+        fetch: Fetch::Host,
     };
     let choices = match encoding {
         Encoding::Seed | Encoding::HemiOct => {
@@ -592,11 +606,32 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             // a gloss unit only where the material has gloss (C = 0 gives P = X)
             let gloss = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0) != 0;
             let per = per.unwrap_or(Per::Vertex);
-            if per == Per::Vertex && nearest {
-                return Err(at.err(filter_span.unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": the nearest-texel pipelines light a surface with one light (per = \"surface\" under [light])"));
+            let host = Choices { encoding, per, gloss, filter, index_bits: 0, fetch: Fetch::Host };
+            let unit = Choices { fetch: Fetch::Unit, ..host };
+            // the texture unit's memory holds a map of side 2^0 … 2^7 and its chain
+            let side = scene.tex;
+            let fits = side.is_power_of_two() && side <= 1 << vectors::tex_fetch::MAX_LOG_SIDE;
+            let on_unit = crate::pipelines::choose(&unit).is_some();
+            match fetch {
+                Some(Fetch::Unit) if !on_unit => {
+                    return Err(at.err(
+                        fetch_span.unwrap_or(bump_span.clone()),
+                        format!("[bump] fetch = \"unit\": no pipeline on the texture unit serves {}", unit.describe()),
+                    ));
+                }
+                Some(Fetch::Unit) if !fits => {
+                    return Err(at.err(fetch_span.unwrap_or(bump_span.clone()), format!("[bump] fetch = \"unit\": the texture unit's memory holds maps of side 1, 2, 4 … 128; this map's side is {side}")));
+                }
+                Some(Fetch::Unit) => unit,
+                None if on_unit && fits => unit,
+                _ if filter == Filter::NearestMip => {
+                    return Err(at.err(filter_span.unwrap_or(bump_span.clone()), format!("[bump] filter = \"nearest_mip\": only the texture unit has MIP levels, and none of its pipelines serves {}{}", unit.describe(), if fits { "" } else { " (or the map's side is not a power of two up to 128)" })));
+                }
+                _ if per == Per::Vertex && nearest => {
+                    return Err(at.err(filter_span.unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": the host-fed nearest-texel pipelines light a surface with one light (per = \"surface\" under [light])"));
+                }
+                _ => host,
             }
-            let filter = if nearest { Filter::Nearest } else { Filter::Bilinear };
-            Choices { encoding, per, gloss, filter, index_bits: 0 }
         }
         Encoding::Polar | Encoding::PolarDc255 => {
             one_light("polar")?;

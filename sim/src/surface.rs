@@ -147,6 +147,8 @@ pub struct Cover {
     pub at: usize,
     pub tri: usize,
     pub bary: [f64; 3],
+    /// The barycentric weights' screen derivatives, d/dx and d/dy a pixel (constant over the triangle).
+    pub dbary: [[f64; 3]; 2],
 }
 
 /// The pixels the mesh covers at `size` × `size`, each with its nearest triangle, in frame order.
@@ -158,7 +160,7 @@ pub fn rasterise(mesh: &Mesh, view: View, size: usize) -> Vec<Cover> {
     };
     let s: Vec<[f64; 3]> = mesh.p.iter().map(|&p| px(p)).collect();
     let mut depth = vec![f64::NEG_INFINITY; size * size];
-    let mut hit: Vec<Option<(usize, [f64; 3])>> = vec![None; size * size];
+    let mut hit: Vec<Option<(usize, [f64; 3], f64)>> = vec![None; size * size];
     for (k, t) in mesh.tris.iter().enumerate() {
         let [a, b, c] = t.map(|i| s[i]);
         let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
@@ -186,12 +188,22 @@ pub fn rasterise(mesh: &Mesh, view: View, size: usize) -> Vec<Cover> {
                 let at = y * size + x;
                 if z > depth[at] {
                     depth[at] = z;
-                    hit[at] = Some((k, [w0.max(0.0), w1.max(0.0), w2.max(0.0)]));
+                    hit[at] = Some((k, [w0.max(0.0), w1.max(0.0), w2.max(0.0)], area));
                 }
             }
         }
     }
-    hit.iter().enumerate().filter_map(|(at, h)| h.map(|(tri, bary)| Cover { at, tri, bary })).collect()
+    let dbary = |k: usize, area: f64| {
+        let [a, b, c] = mesh.tris[k].map(|i| s[i]);
+        [
+            [(b[1] - c[1]) / area, (c[1] - a[1]) / area, (a[1] - b[1]) / area],
+            [(c[0] - b[0]) / area, (a[0] - c[0]) / area, (b[0] - a[0]) / area],
+        ]
+    };
+    hit.iter()
+        .enumerate()
+        .filter_map(|(at, h)| h.map(|(tri, bary, area)| Cover { at, tri, bary, dbary: dbary(tri, area) }))
+        .collect()
 }
 
 #[cfg(test)]

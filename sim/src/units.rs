@@ -152,6 +152,44 @@ pub static UNITS: &[Unit] = &[
     Unit::new(&vectors::lod::MODEL, &Rtl::<rtl::lod::Lod>::PATHS),
     Unit::new(&vectors::tex_addr::MODEL, &Rtl::<rtl::tex_addr::TexAddr>::PATHS),
     Unit::new(&vectors::tex_fetch::MODEL, &Rtl::<rtl::tex_fetch::TexFetch>::PATHS),
+    Unit::new(&vectors::cart_tex::bilinear::MODEL, &Rtl::<rtl::cart_tex::CartTexBilinear>::PATHS).waiving(&[
+        ("filter$0$wide", "the front's bilinear units, read rounded as in cart_pipeline"),
+        ("filter$1$wide", "as filter$0$wide"),
+        ("light$valid_out", "as in cart_pipeline"),
+        ("light_norm$valid_out", "as in cart_pipeline"),
+    ]),
+    Unit::new(&vectors::cart_tex::bilinear_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexBilinearMatte>::PATHS).waiving(
+        &[
+            ("filter$0$wide", "as in cart_tex_bilinear"),
+            ("filter$1$wide", "as filter$0$wide"),
+            ("light$valid_out", "as in cart_pipeline"),
+            ("light_norm$valid_out", "as in cart_pipeline"),
+        ],
+    ),
+    Unit::new(&vectors::cart_tex::nearest_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexNearestMatte>::PATHS).waiving(&[
+        ("light$valid_out", "as in cart_pipeline"),
+        ("light_norm$valid_out", "as in cart_pipeline"),
+        ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
+        ("addr$vblend", "as addr$ublend"),
+        ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
+        ("fetch$t01", "as fetch$t10"),
+        ("fetch$t11", "as fetch$t10"),
+    ]),
+    Unit::new(&vectors::cart_tex::nearest_mip_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexNearestMipMatte>::PATHS)
+        .waiving(&[
+            ("light$valid_out", "as in cart_pipeline"),
+            ("light_norm$valid_out", "as in cart_pipeline"),
+            (
+                "lod$level",
+                "the nearest level is the LOD unit's `nearest`; the floor of lambda and its fraction are trilinear's",
+            ),
+            ("lod$frac", "as lod$level"),
+            ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
+            ("addr$vblend", "as addr$ublend"),
+            ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
+            ("fetch$t01", "as fetch$t10"),
+            ("fetch$t11", "as fetch$t10"),
+        ]),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

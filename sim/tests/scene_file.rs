@@ -52,11 +52,12 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         (s.size, s.tex, s.light_pos, s.conc, s.src, s.dst, s.relief),
         (d.size, d.tex, d.light_pos, d.conc, d.src, d.dst, d.relief)
     );
-    assert_eq!(quad.pipeline.name, cart(Decode::Seed, true));
+    // on the texture unit: the quad's map is 128 texels, a power of two the unit's memory holds
+    assert_eq!(quad.pipeline.name, "cart_tex_bilinear");
     assert!(!quad.scene.per_surface && quad.scene.curved.is_none());
     let demo = scene_file::load(&scenes_dir().join("demo.toml")).unwrap();
     // C = 0: the per-vertex pipeline without its gloss unit
-    assert_eq!(demo.pipeline.name, cart(Decode::Seed, false));
+    assert_eq!(demo.pipeline.name, "cart_tex_bilinear_matte");
     assert!(matches!(demo.scene.curved.map(|c| c.shape), Some(sim::surface::Shape::Torus { .. })));
     // each pipeline has its scene
     let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline.name;
@@ -118,8 +119,33 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     };
     let kind = |t: String| parse(&t).unwrap_or_else(|e| panic!("{e}")).pipeline.name;
     let v = surface;
-    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 0\n")), cart(Decode::Seed, false));
-    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 1\n")), cart(Decode::Seed, true));
+    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 0\n")), "cart_tex_bilinear_matte");
+    assert_eq!(kind(scene("seed", "", "vertex", "gloss = 1\n")), "cart_tex_bilinear");
+    // the host-fed pipelines where the scene asks for them
+    assert_eq!(kind(scene("seed", "fetch = \"host\"\n", "vertex", "gloss = 0\n")), cart(Decode::Seed, false));
+    assert_eq!(kind(scene("seed", "fetch = \"host\"\n", "vertex", "gloss = 1\n")), cart(Decode::Seed, true));
+    // the texture unit's filters: the nearest texel, of level 0 or of the nearest MIP level (matte)
+    assert_eq!(kind(scene("seed", "filter = \"nearest\"\n", "vertex", "gloss = 0\n")), "cart_tex_nearest_matte");
+    assert_eq!(
+        kind(scene("seed", "filter = \"nearest_mip\"\n", "vertex", "gloss = 0\n")),
+        "cart_tex_nearest_mip_matte"
+    );
+    refused(
+        &scene("seed", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n"),
+        "s.toml:5:10:",
+        &["nearest_mip", "texture unit", "gloss"],
+    );
+    refused(
+        &scene("seed", "filter = \"nearest_mip\"\nfetch = \"host\"\n", "vertex", "gloss = 0\n"),
+        "s.toml:5:10:",
+        &["only the texture unit has MIP levels"],
+    );
+    refused(&scene("hemi_oct", "fetch = \"unit\"\n", "vertex", ""), "s.toml:5:9:", &["fetch = \"unit\"", "hemi_oct"]);
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\ntexels = 256\nfetch = \"unit\"\n[material]\ngloss = 0\n",
+        "s.toml:5:9:",
+        &["1, 2, 4 … 128", "256"],
+    );
     assert_eq!(kind(scene("hemi_oct", "", "vertex", "")), cart(Decode::HemiOct, true), "the default gloss is 96");
     assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), cart(Decode::HemiOct, false));
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), v(Decode::Seed, false, false));

@@ -74,7 +74,7 @@ fn every_unit_but_a_pipeline_measures_its_own_accuracy() {
     // other unit states its own
     for u in UNITS {
         let m = u.model;
-        let pipeline = m.name.contains("pipeline");
+        let pipeline = m.name.contains("pipeline") || sim::pipelines::named(m.name).is_some();
         assert!(m.accuracy.is_some() || pipeline, "`{}`: UnitModel::with_accuracy", m.name);
         if let Some(f) = m.accuracy {
             let rows = f(1_000, 1);

@@ -102,6 +102,8 @@ pub(super) fn three_parts(p: &Point, scene: &Scene, prep: &Prepared, exact_shade
             Some(split(scene, &meaning, prep, exact_shade, &curve, &float))
         }
         Family::Height => Some(height_parts(scene, own.height_bits, prep, exact_shade)),
+        // the texture unit's pipelines: no float run of the front yet (its texel comes out of the memory's stream)
+        Family::CartTex { .. } => None,
         Family::Palette => {
             let s_n = own.palette.unwrap_or(1 << p.row.serves.index_bits);
             // a texel's index means its entry: the S10 code the table builder takes, as a unit vector

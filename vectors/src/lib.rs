@@ -20,6 +20,7 @@ pub mod cartesian {
     pub mod cart_encode;
     pub mod cart_pipeline;
     pub mod cart_surface;
+    pub mod cart_tex;
     pub mod light_iter;
 }
 
@@ -61,6 +62,7 @@ pub mod palette {
 
 /// The texture unit in front of every family: level of detail, address, the map memory and its fetch.
 pub mod texture {
+    pub mod front;
     pub mod lod;
     pub mod tex_addr;
     pub mod tex_fetch;
@@ -71,7 +73,9 @@ pub mod stats;
 pub mod unit;
 
 // every unit also at the crate root, by its own name, whatever its family
-pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, cart_surface, light_iter};
+pub use cartesian::{
+    cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, cart_surface, cart_tex, light_iter,
+};
 pub use height::{
     blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent,
     texture_filter,

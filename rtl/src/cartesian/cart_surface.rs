@@ -22,7 +22,7 @@ cartesian_pipeline! {
     unit: "cart_surface",
     decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
     filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
     gloss: { unit: gloss, c: conc, delay: conc_dly },
 }
 
@@ -32,7 +32,7 @@ cartesian_pipeline! {
     unit: "cart_surface_matte",
     decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
     filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }
 
 cartesian_pipeline! {
@@ -41,7 +41,7 @@ cartesian_pipeline! {
     unit: "cart_surface_hemi_oct",
     decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
     filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
     gloss: { unit: gloss, c: conc, delay: conc_dly },
 }
 
@@ -51,7 +51,7 @@ cartesian_pipeline! {
     unit: "cart_surface_hemi_oct_matte",
     decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
     filter: { units: filter, valid: filter_valid, u: ublend, v: vblend },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }
 
 cartesian_pipeline! {
@@ -60,7 +60,7 @@ cartesian_pipeline! {
     unit: "cart_surface_nearest",
     decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
     nearest: { x: t_x, z: t_z },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
     gloss: { unit: gloss, c: conc, delay: conc_dly },
 }
 
@@ -70,7 +70,7 @@ cartesian_pipeline! {
     unit: "cart_surface_nearest_matte",
     decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
     nearest: { x: t_x, z: t_z },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }
 
 cartesian_pipeline! {
@@ -79,7 +79,7 @@ cartesian_pipeline! {
     unit: "cart_surface_nearest_hemi_oct",
     decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
     nearest: { x: t_x, z: t_z },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
     gloss: { unit: gloss, c: conc, delay: conc_dly },
 }
 
@@ -89,5 +89,5 @@ cartesian_pipeline! {
     unit: "cart_surface_nearest_hemi_oct_matte",
     decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
     nearest: { x: t_x, z: t_z },
-    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }

@@ -24,8 +24,10 @@ macro_rules! cartesian_pipeline {
         decode: { block: $dec:ident, module: $dec_mod:ident, u: $tu:ident, v: $tv:ident }
         $(, filter: { units: $fl:ident, valid: $flv:ident, u: $ub:ident, v: $vb:ident })?
         $(, nearest: { x: $nx:ident, z: $nz:ident })?
+        $(, texture: { block: $txb:ident, module: $txm:ident, u: $pu:ident, v: $pv:ident })?
+        $(, mip: { derivatives: [$($dd:ident),*] })?
         $(, vertex: { iter: $li:ident, norm: $ln:ident, delay: $lvd:ident, w1: $w1:ident, w2: $w2:ident })?
-        $(, surface: { x: $lx:ident, y: $ly:ident, z: $lz:ident, word: $lw:ident, delay: $lsd:ident })?
+        $(, surface: { x: $lx:ident, y: $ly:ident, z: $lz:ident, word: $lw:ident, delay: $lsd:ident, addr_bits: $lab:tt })?
         $(, gloss: { unit: $gl:ident, c: $conc:ident, delay: $cd:ident })?
         $(,)?
     ) => {
@@ -34,11 +36,14 @@ use super::*; // the decode the invocation names
 #[allow(unused_imports)] // each variant holds some of these
 use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
 #[allow(unused_imports)]
-use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq7_2, Sq9_0, U8}, ram_delay::RamDelay}};
+use crate::texture::front::{TexBilinear, TexNearest, TexNearestMip};
+#[allow(unused_imports)]
+use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq11_8, Sq7_2, Sq8_8, Sq9_0, U16, U8}, ram_delay::RamDelay}};
 
 /// Cycles from the pipeline's input to each unit's input.
 // a group's term below is there when the invocation names the group (`0 * stringify!(..).len()` only ties it to it)
-pub const AT_NORMALISE: usize = $(crate::bilinear::LATENCY + 0 * stringify!($fl).len() +)? crate::$dec_mod::LATENCY;
+pub const AT_NORMALISE: usize = $(crate::bilinear::LATENCY + 0 * stringify!($fl).len() +)?
+    $(crate::texture::front::$txm::LATENCY + 0 * stringify!($txb).len() +)? crate::$dec_mod::LATENCY;
 pub const AT_DOT: usize = AT_NORMALISE + crate::normalise::LATENCY;
 pub const AT_GLOSS: usize = AT_DOT + crate::dot3::LATENCY;
 pub const AT_BLEND: usize = AT_GLOSS $(+ crate::gloss::LATENCY + 0 * stringify!($gl).len())?;
@@ -62,6 +67,17 @@ crate::stream_block! {
             $vb: U8,)?
             $($nx: U8,
             $nz: U8,)?
+            $($pu: Sq11_8,
+            $pv: Sq11_8,
+            log_side: Bits<4>,
+            uwrap: Bits<1>,
+            vwrap: Bits<1>,
+            we: Bits<1>,
+            w_log2: Bits<4>,
+            wx: U8,
+            wy: U8,
+            wdata: U16,)?
+            $($($dd: Sq8_8,)*)?
             $(l0_x: S8,
             l0_y: S8,
             l0_z: S8,
@@ -93,6 +109,7 @@ crate::stream_block! {
         }
         $(pub $fl: [BilinearUnit<8, 8>; 2], // TexelX (or U), TexelZ (or V)
         $flv: Delay<Bit, { crate::bilinear::LATENCY }>,)?
+        $(pub texture: $txb,)?
         pub decode: $dec,
         pub bump_norm: Normalise,
         $(pub $li: LightIter,
@@ -101,7 +118,7 @@ crate::stream_block! {
         pub dot: Dot3,
         $(pub $gl: Gloss,
         $cd: RamDelay<8, 6, AT_GLOSS>,)?
-        $($lsd: RamDelay<36, 5, AT_DOT>, // (l_x, l_y, l_z) packed low to high
+        $($lsd: RamDelay<36, $lab, AT_DOT>, // (l_x, l_y, l_z) packed low to high
         $lw: Signal<Local, Bits<36>>,)?
         pub blend: DelayedBlend<6, AT_BLEND>,
         p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
@@ -141,6 +158,23 @@ impl Logic for $t {
         $(self.decode.valid_in.next = self.valid_in.val();
         self.decode.$tu.next = self.$nx.val();
         self.decode.$tv.next = self.$nz.val();)?
+        // or the texture unit's: the position, the map's modes and its write port in; the texel's two bytes out
+        $(self.texture.clock.next = self.clock.val();
+        self.texture.valid_in.next = self.valid_in.val();
+        self.texture.u.next = self.$pu.val();
+        self.texture.v.next = self.$pv.val();
+        self.texture.log_side.next = self.log_side.val();
+        self.texture.uwrap.next = self.uwrap.val();
+        self.texture.vwrap.next = self.vwrap.val();
+        self.texture.we.next = self.we.val();
+        self.texture.w_log2.next = self.w_log2.val();
+        self.texture.wx.next = self.wx.val();
+        self.texture.wy.next = self.wy.val();
+        self.texture.wdata.next = self.wdata.val();
+        self.decode.valid_in.next = self.texture.valid_out.val();
+        self.decode.$tu.next = self.texture.lo.val();
+        self.decode.$tv.next = self.texture.hi.val();)?
+        $($(self.texture.$dd.next = self.$dd.val();)*)?
         // normalise the bump: INT9 → S10 by sign extension, UINT8 → S10 by zero extension
         self.bump_x10.next = bit_cast::<10, 9>(self.decode.bump_x.val());
         if self.decode.bump_x.val().get_bit(8) {

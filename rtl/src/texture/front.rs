@@ -1,0 +1,200 @@
+//! The texture unit's fronts: what sits between a rasteriser's (u, v) and a family's texel, wired once from the unit
+//! blocks so that every family's pipeline holds the same blocks (the polar, height and palette ones next):
+//! [lod →] tex_addr → tex_fetch [→ two bilinear units, one a byte of the 16-bit texel].
+//!
+//! `texture_front!` writes one block. Its optional groups add what a front holds, each naming its fields:
+//! - `lod:` the level-of-detail unit (the derivative ports, and the delay lines that keep the position and the
+//!   write beside it); its `pick` names the output the address unit reads (`nearest` for the nearest level,
+//!   `level` for ⌊λ⌋); without it the front reads level 0;
+//! - `filter:` the two bilinear units (the low byte and the high byte), the blend factors' delay line beside the
+//!   fetch, and their valid chain; without it the address unit takes the nearest texel (`linear` = 0) and the
+//!   texel leaves as it is read.
+//!
+//! Ports (every front): the position u, v (Sq11.8, texels of level 0), the map's side log2 and the two wrap modes
+//! (per frame), and the memory's write port (we, w_log2, wx, wy, wdata: `tex_fetch`'s). Outputs: `lo` and `hi`, the
+//! texel's two bytes (filtered, or the nearest texel's). A write is a vector of its own, in order with the reads:
+//! its delay line keeps it beside the position, so it reaches the fetch with its own vector and a read sees every
+//! write before it (`vectors::front`); it leaves as a texel of zero.
+
+macro_rules! texture_front {
+    (
+        module: $m:ident,
+        block: $t:ident,
+        linear: $lin:tt,
+        write_delay: $wd:ty
+        $(, level: $lv:tt)?
+        $(, lod: { unit: $lod:ident, pick: $pick:ident, position: $pd:ident })?
+        $(, filter: { units: $fl:ident, blend: $bd:ident, valid: $flv:ident })?
+        $(, unfiltered: { texel: $tx:ident })?
+        $(,)?
+    ) => {
+pub mod $m {
+#[allow(unused_imports)] // each front holds some of these
+use crate::prim::{delay::Delay, q::{Sq11_8, Sq8_8, U16, U8}, ram_delay::RamDelay};
+#[allow(unused_imports)]
+use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr, tex_fetch::TexFetch};
+use rust_hdl::prelude::*;
+
+/// Cycles from the front's input to the address unit's, to the fetch's, and to its output.
+// a group's term below is there when the invocation names the group (`0 * stringify!(..).len()` only ties it to it)
+pub const AT_ADDR: usize = 0 $(+ crate::lod::LATENCY + 0 * stringify!($lod).len())?;
+pub const AT_FETCH: usize = AT_ADDR + crate::tex_addr::LATENCY;
+pub const AT_FILTER: usize = AT_FETCH + crate::tex_fetch::LATENCY;
+pub const LATENCY: usize = AT_FILTER $(+ crate::bilinear::LATENCY + 0 * stringify!($fl).len())?;
+
+crate::block! {
+    #[derive(Default)]
+    pub struct $t {
+        pub clock: Signal<In, Clock>,
+        pub valid_in: Signal<In, Bit>,
+        pub u: Signal<In, Sq11_8>,
+        pub v: Signal<In, Sq11_8>,
+        $(pub du_dx: Signal<In, Sq8_8>,
+        pub dv_dx: Signal<In, Sq8_8>,
+        pub du_dy: Signal<In, Sq8_8>,
+        pub dv_dy: Signal<In, Sq8_8>,
+        $pd: RamDelay<46, 4, { crate::lod::LATENCY }>, // (u, v, log_side, uwrap, vwrap) packed low to high
+        pos_word: Signal<Local, Bits<46>>,
+        pub $lod: Lod,)?
+        pub log_side: Signal<In, Bits<4>>,
+        pub uwrap: Signal<In, Bits<1>>,
+        pub vwrap: Signal<In, Bits<1>>,
+        pub we: Signal<In, Bits<1>>,
+        pub w_log2: Signal<In, Bits<4>>,
+        pub wx: Signal<In, U8>,
+        pub wy: Signal<In, U8>,
+        pub wdata: Signal<In, U16>,
+        pub valid_out: Signal<Out, Bit>,
+        pub lo: Signal<Out, U8>,
+        pub hi: Signal<Out, U8>,
+        pub addr: TexAddr,
+        pub fetch: TexFetch,
+        $(pub $fl: [BilinearUnit<8, 8>; 2], // the low byte, the high byte
+        $bd: Delay<U16, { crate::tex_fetch::LATENCY }>, // (ublend, vblend) packed low to high
+        $flv: Delay<Bit, { crate::bilinear::LATENCY }>,
+        blend_word: Signal<Local, U16>,)?
+        write_dly: $wd, // (we, w_log2, wx, wy, wdata) packed low to high
+        write_word: Signal<Local, Bits<37>>,
+    }
+}
+
+impl Logic for $t {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.addr.clock.next = self.clock.val();
+        self.fetch.clock.next = self.clock.val();
+        self.write_dly.clock.next = self.clock.val();
+        // the write, packed (bit copies), waits for its vector's address
+        self.write_word.next = bit_cast::<37, 1>(self.we.val());
+        self.write_word.next = self.write_word.val() | (bit_cast::<37, 4>(self.w_log2.val()) << 1);
+        self.write_word.next = self.write_word.val() | (bit_cast::<37, 8>(self.wx.val()) << 5);
+        self.write_word.next = self.write_word.val() | (bit_cast::<37, 8>(self.wy.val()) << 13);
+        self.write_word.next = self.write_word.val() | (bit_cast::<37, 16>(self.wdata.val()) << 21);
+        self.write_dly.d.next = self.write_word.val();
+        // the level: from the derivatives, the position waiting beside the LOD unit (bit copies)
+        $(self.$lod.clock.next = self.clock.val();
+        self.$pd.clock.next = self.clock.val();
+        self.$lod.valid_in.next = self.valid_in.val();
+        self.$lod.du_dx.next = self.du_dx.val();
+        self.$lod.dv_dx.next = self.dv_dx.val();
+        self.$lod.du_dy.next = self.du_dy.val();
+        self.$lod.dv_dy.next = self.dv_dy.val();
+        self.$lod.log_side.next = self.log_side.val();
+        self.pos_word.next = bit_cast::<46, 20>(self.u.val());
+        self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 20>(self.v.val()) << 20);
+        self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 4>(self.log_side.val()) << 40);
+        self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.uwrap.val()) << 44);
+        self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.vwrap.val()) << 45);
+        self.$pd.d.next = self.pos_word.val();
+        self.addr.valid_in.next = self.$lod.valid_out.val();
+        self.addr.level.next = self.$lod.$pick.val();
+        self.addr.u.next = self.$pd.q.val().get_bits::<20>(0);
+        self.addr.v.next = self.$pd.q.val().get_bits::<20>(20);
+        self.addr.log_side.next = self.$pd.q.val().get_bits::<4>(40);
+        self.addr.uwrap.next = self.$pd.q.val().get_bits::<1>(44);
+        self.addr.vwrap.next = self.$pd.q.val().get_bits::<1>(45);
+        )?
+        // or one level, the position as it comes
+        $(self.addr.valid_in.next = self.valid_in.val();
+        self.addr.level.next = $lv.into();
+        self.addr.u.next = self.u.val();
+        self.addr.v.next = self.v.val();
+        self.addr.log_side.next = self.log_side.val();
+        self.addr.uwrap.next = self.uwrap.val();
+        self.addr.vwrap.next = self.vwrap.val();)?
+        self.addr.linear.next = $lin.into(); // 1: the bilinear footprint, 0: the nearest texel
+        // the fetch: the footprint the address unit gives, and the write that waited beside it (bit copies)
+        self.fetch.valid_in.next = self.addr.valid_out.val();
+        self.fetch.level_log2.next = self.addr.level_log2.val();
+        self.fetch.x0.next = self.addr.x0.val();
+        self.fetch.x1.next = self.addr.x1.val();
+        self.fetch.y0.next = self.addr.y0.val();
+        self.fetch.y1.next = self.addr.y1.val();
+        self.fetch.we.next = self.write_dly.q.val().get_bits::<1>(0);
+        self.fetch.w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
+        self.fetch.wx.next = self.write_dly.q.val().get_bits::<8>(5);
+        self.fetch.wy.next = self.write_dly.q.val().get_bits::<8>(13);
+        self.fetch.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
+        // the filter: each byte of the four texels, blended by the factors that waited beside the fetch
+        $(self.$bd.clock.next = self.clock.val();
+        self.$flv.clock.next = self.clock.val();
+        // (ublend, vblend) packed and unpacked: bit copies
+        self.blend_word.next = bit_cast::<16, 8>(self.addr.ublend.val());
+        self.blend_word.next = self.blend_word.val() | (bit_cast::<16, 8>(self.addr.vblend.val()) << 8);
+        self.$bd.d.next = self.blend_word.val();
+        for i in 0..2 {
+            self.$fl[i].clock.next = self.clock.val();
+            self.$fl[i].ublend.next = self.$bd.q.val().get_bits::<8>(0); // bit copies
+            self.$fl[i].vblend.next = self.$bd.q.val().get_bits::<8>(8); // bit copies
+        }
+        // each texel's low byte to the first unit, its high byte to the second: bit copies
+        self.$fl[0].t00.next = self.fetch.t00.val().get_bits::<8>(0);
+        self.$fl[0].t10.next = self.fetch.t10.val().get_bits::<8>(0);
+        self.$fl[0].t01.next = self.fetch.t01.val().get_bits::<8>(0);
+        self.$fl[0].t11.next = self.fetch.t11.val().get_bits::<8>(0);
+        self.$fl[1].t00.next = self.fetch.t00.val().get_bits::<8>(8);
+        self.$fl[1].t10.next = self.fetch.t10.val().get_bits::<8>(8);
+        self.$fl[1].t01.next = self.fetch.t01.val().get_bits::<8>(8);
+        self.$fl[1].t11.next = self.fetch.t11.val().get_bits::<8>(8);
+        self.$flv.d.next = self.fetch.valid_out.val();
+        self.valid_out.next = self.$flv.q.val();
+        self.lo.next = self.$fl[0].out.val();
+        self.hi.next = self.$fl[1].out.val();
+        )?
+        // or the nearest texel as it is read (bit copies)
+        $(self.valid_out.next = self.fetch.valid_out.val();
+        self.lo.next = self.fetch.$tx.val().get_bits::<8>(0);
+        self.hi.next = self.fetch.$tx.val().get_bits::<8>(8);)?
+    }
+}
+}
+pub use $m::$t;
+    };
+}
+
+texture_front! {
+    module: nearest,
+    block: TexNearest,
+    linear: 0,
+    write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
+    level: 0,
+    unfiltered: { texel: t00 },
+}
+
+texture_front! {
+    module: bilinear,
+    block: TexBilinear,
+    linear: 1,
+    write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
+    level: 0,
+    filter: { units: filter, blend: blend_dly, valid: filter_valid },
+}
+
+texture_front! {
+    module: nearest_mip,
+    block: TexNearestMip,
+    linear: 0,
+    write_delay: RamDelay<37, 5, { crate::lod::LATENCY + crate::tex_addr::LATENCY }>,
+    lod: { unit: lod, pick: nearest, position: pos_dly },
+    unfiltered: { texel: t00 },
+}

@@ -1,0 +1,47 @@
+//! cart_tex_*: the Cartesian pipelines on the texture unit, each the front (position → [level →] address → memory
+//! → texel) and the host-fed pipeline's units, against the composed model three ways: golden vectors (the map
+//! loaded first); random streams through rust-hdl, and through Verilator after the hard cases have loaded the chain
+//! they read.
+use rtl::cart_tex::{CartTexBilinear, CartTexBilinearMatte, CartTexNearestMatte, CartTexNearestMipMatte};
+use rtl::StreamUnit;
+use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
+use vectors::cart_tex::{bilinear, bilinear_matte, nearest_matte, nearest_mip_matte};
+use vectors::UnitModel;
+
+unit_tests!(cart_tex_bilinear, CartTexBilinear, bilinear::MODEL);
+unit_tests!(cart_tex_bilinear_matte, CartTexBilinearMatte, bilinear_matte::MODEL);
+unit_tests!(cart_tex_nearest_matte, CartTexNearestMatte, nearest_matte::MODEL);
+unit_tests!(cart_tex_nearest_mip_matte, CartTexNearestMipMatte, nearest_mip_matte::MODEL);
+
+/// Random streams through rust-hdl (from an empty memory, which both read as zero), the hard cases with bubbles,
+/// and a long random stream under Verilator after the hard cases have loaded the chain it reads.
+fn three_streams<U: StreamUnit>(m: &'static UnitModel, seed: u64) {
+    use rand::SeedableRng;
+    random_vs_model::<U>(m, 4, 500);
+    rust_hdl::<U>(m, &(m.hard_cases)(), Bubbles::Random { one_in: 2, seed }).assert_clean("hard cases, bubbles");
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut inputs = (m.hard_cases)();
+    inputs.extend((0..30_000).map(|_| (m.random)(&mut rng)));
+    external::<U>(synth::cosim::Simulator::Verilator, m, &inputs, Bubbles::Random { one_in: 3, seed })
+        .assert_clean("verilator, random after the hard cases");
+}
+
+#[test]
+fn cart_tex_bilinear_streams() {
+    three_streams::<CartTexBilinear>(&bilinear::MODEL, 23);
+}
+
+#[test]
+fn cart_tex_bilinear_matte_streams() {
+    three_streams::<CartTexBilinearMatte>(&bilinear_matte::MODEL, 24);
+}
+
+#[test]
+fn cart_tex_nearest_matte_streams() {
+    three_streams::<CartTexNearestMatte>(&nearest_matte::MODEL, 25);
+}
+
+#[test]
+fn cart_tex_nearest_mip_matte_streams() {
+    three_streams::<CartTexNearestMipMatte>(&nearest_mip_matte::MODEL, 26);
+}

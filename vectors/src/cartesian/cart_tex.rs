@@ -1,0 +1,350 @@
+//! `cart_tex_*`: the Cartesian pipelines on the texture unit. Each is a host-fed Cartesian pipeline (`cart_pipeline`
+//! or `cart_surface` and their variants) with the texture unit's front (`texture::front`) in place of the texels and
+//! blend factors the host fetched: the front's ports first, then the host pipeline's other ports, by name.
+//!
+//! The model is the two wired, vector by vector over the front's memory: the front gives the texel's two bytes
+//! (filtered, or the nearest), which go in at every texel port of the host model with blend factors of zero (the
+//! host's bilinear unit then returns the texel itself, a test checks it), and the host model does the rest.
+
+use crate::texture::front::{self, At, Filter, Front};
+use crate::unit::{Port, UnitModel};
+
+/// Where the host model's input `k` comes from.
+#[derive(Clone, Copy, Debug)]
+enum Source {
+    /// the texel's low byte (TexelX or U) or its high byte (TexelZ or V)
+    Byte(usize),
+    /// a blend factor: zero
+    Zero,
+    /// the textured pipeline's own port
+    Port(usize),
+}
+
+/// Whether a host port carries a texel byte: `t00_x` … `t11_z`, or the nearest texel's `t_x`, `t_z`.
+fn is_texel(name: &str) -> bool {
+    name.len() <= 5 && name.starts_with('t') && name[1..].trim_start_matches(char::is_numeric).starts_with('_')
+}
+
+fn sources(host: &UnitModel, ports: &[Port]) -> Vec<Source> {
+    host.inputs
+        .iter()
+        .map(|p| {
+            let texel = is_texel(p.name);
+            match p.name {
+                "ublend" | "vblend" => Source::Zero,
+                n if texel && n.ends_with("_x") => Source::Byte(0),
+                n if texel && n.ends_with("_z") => Source::Byte(1),
+                n => Source::Port(front::index(ports, n)),
+            }
+        })
+        .collect()
+}
+
+/// The textured pipeline over a stream of vectors, from an empty memory.
+pub fn run(filter: Filter, host: &UnitModel, ports: &[Port], inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+    let at = At::of(ports, filter.mip());
+    let src = sources(host, ports);
+    let mut f = Front::new(filter);
+    inputs
+        .iter()
+        .map(|v| {
+            let t = f.step(v, &at);
+            let h: Vec<i64> = src
+                .iter()
+                .map(|s| match *s {
+                    Source::Byte(c) => t[c],
+                    Source::Zero => 0,
+                    Source::Port(k) => v[k],
+                })
+                .collect();
+            (host.exact)(&h)
+        })
+        .collect()
+}
+
+/// The levels the random vectors read and write: the chain of a 16 × 16 map, which the hard cases load first.
+pub const REGION_LOG2: i64 = 4;
+
+/// A texel of the hard cases' map: distinct along rows and columns and by level, both bytes used.
+pub fn pattern(m: i64, x: i64, y: i64) -> i64 {
+    crate::tex_fetch::pattern(m, x, y)
+}
+
+/// A vector of the textured pipeline from a vector of its host: the host's other ports by name, the front's zero.
+fn from_host(host: &UnitModel, ports: &[Port], h: &[i64]) -> Vec<i64> {
+    ports.iter().map(|p| host.inputs.iter().position(|q| q.name == p.name).map_or(0, |k| h[k])).collect()
+}
+
+/// One random vector: the host's random ports; one in eight a write inside the region's chain, else a read of a
+/// map of side up to 2^REGION_LOG2 at a random position and wrap, with the LOD unit's random derivatives.
+pub fn random(filter: Filter, host: &UnitModel, ports: &[Port], rng: &mut dyn rand::RngCore) -> Vec<i64> {
+    use rand::Rng;
+    let mut v = from_host(host, ports, &(host.random)(rng));
+    let at = At::of(ports, filter.mip());
+    if rng.gen_range(0..8) == 0 {
+        let m = rng.gen_range(0..=REGION_LOG2);
+        let (x, y) = (rng.gen_range(0..1 << m), rng.gen_range(0..1 << m));
+        front::put_write(&mut v, &at, m, x, y, rng.gen_range(0..=0xffff));
+        return v;
+    }
+    let s = rng.gen_range(0..=REGION_LOG2);
+    let uv = [front::random_position(rng, s), front::random_position(rng, s)];
+    let d = (crate::lod::MODEL.random)(rng);
+    front::put_read(&mut v, &at, uv, s, [rng.gen_bool(0.5), rng.gen_bool(0.5)], [d[0], d[1], d[2], d[3]]);
+    v
+}
+
+/// The hard cases: the region's chain loaded; each of the host's hard cases with its texel written into the 1 × 1
+/// map and read from it; then on the loaded chain (its 1 × 1 level written back), for every map side up to
+/// 2^REGION_LOG2, both wraps and both ends of each axis, the positions at the seam and the clamp edge (the first
+/// and last texel's centres and ends, a step either side); with a MIP filter, derivatives that put λ below 0, at
+/// each level, half way and past the last level, zero and the largest.
+pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i64>> {
+    let at = At::of(ports, filter.mip());
+    let hosts = (host.hard_cases)();
+    let base = from_host(host, ports, &hosts[0]);
+    let mut out = vec![];
+    let write = |m: i64, x: i64, y: i64, t: i64| {
+        let mut v = base.clone();
+        front::put_write(&mut v, &at, m, x, y, t);
+        v
+    };
+    for m in (0..=REGION_LOG2).rev() {
+        for y in 0..1 << m {
+            for x in 0..1 << m {
+                out.push(write(m, x, y, pattern(m, x, y)));
+            }
+        }
+    }
+    let (tx, tz) = (
+        host.inputs.iter().position(|p| p.name == "t00_x" || p.name == "t_x").expect("a texel port"),
+        host.inputs.iter().position(|p| p.name == "t00_z" || p.name == "t_z").expect("a texel port"),
+    );
+    for h in &hosts {
+        out.push(write(0, 0, 0, h[tx] | (h[tz] << 8)));
+        let mut v = from_host(host, ports, h);
+        front::put_read(&mut v, &at, [77, -300], 0, [true, false], [256, 0, 0, 256]);
+        out.push(v);
+    }
+    out.push(write(0, 0, 0, pattern(0, 0, 0)));
+    let lambdas: Vec<[i64; 4]> = if filter.mip() {
+        // λ = log2 of the longer edge: 2^-3, exactly 1 (level 0), each level k, k + ½ (a √2 edge), past the last;
+        // zero derivatives; the largest magnitude (−256 texels a pixel) on each
+        let mut d = vec![
+            [32, 0, 0, 32],
+            [0, 0, 0, 0],
+            [-65_536, 0, 0, 0],
+            [0, 0, 0, -65_536],
+            [65_535, 65_535, 65_535, 65_535],
+        ];
+        for k in 0..=REGION_LOG2 + 1 {
+            d.push([256 << k, 0, 0, 256 << k]);
+            d.push([0, -(256 << k), 256 << k, 256 << k]);
+            d.push([(256 << k) * 181 / 128, 0, 0, 0]);
+        }
+        d
+    } else {
+        vec![[0; 4]]
+    };
+    for s in 0..=REGION_LOG2 {
+        let side = 256i64 << s;
+        let ends = [
+            0,
+            1,
+            127,
+            128,
+            129,
+            255,
+            256,
+            -1,
+            -127,
+            -128,
+            -129,
+            side - 129,
+            side - 128,
+            side - 127,
+            side - 1,
+            side,
+            side + 127,
+            side + 128,
+        ];
+        for wrap in [true, false] {
+            for (k, e) in ends.iter().enumerate() {
+                let d = lambdas[k % lambdas.len()];
+                let mut v = base.clone();
+                front::put_read(&mut v, &at, [*e, 3 * 256 / 2], s, [wrap, !wrap], d);
+                out.push(v.clone());
+                front::put_read(&mut v, &at, [side / 2 + 64, *e], s, [!wrap, wrap], d);
+                out.push(v);
+            }
+        }
+        for d in &lambdas {
+            let mut v = base.clone();
+            front::put_read(&mut v, &at, [side / 3, side / 5], s, [true, true], *d);
+            out.push(v);
+        }
+    }
+    // the ends of the position's range, each axis
+    for e in [(1 << 19) - 1, -(1 << 19)] {
+        for wrap in [true, false] {
+            let mut v = base.clone();
+            front::put_read(&mut v, &at, [e, -e - 1], REGION_LOG2, [wrap, wrap], lambdas[0]);
+            out.push(v);
+        }
+    }
+    // a write into the level being read, then at once a read of that texel
+    out.push(write(2, 1, 2, 0x7f7f));
+    let mut v = base.clone();
+    front::put_read(&mut v, &at, [256 + 128, 512 + 128], 2, [true, true], [1024, 0, 0, 1024]);
+    out.push(v);
+    out
+}
+
+/// The front's ports followed by the host's other ports, as the textured pipeline's port list must be.
+pub fn expected_ports(filter: Filter, host: &UnitModel) -> Vec<Port> {
+    let mut v: Vec<Port> = front::PORTS.to_vec();
+    if filter.mip() {
+        v.extend_from_slice(front::DERIVATIVES);
+    }
+    let dropped = |n: &str| matches!(n, "ublend" | "vblend") || is_texel(n);
+    v.extend(host.inputs.iter().filter(|p| !dropped(p.name)).copied());
+    v
+}
+
+macro_rules! textured {
+    ($m:ident, $name:literal, $filter:expr, $host:path, inputs: [$($ports:tt)*]) => {
+        pub mod $m {
+            use super::*;
+            crate::ports! {
+                inputs: [$($ports)*],
+                outputs: [p: u 10, out_r: u 8, out_g: u 8, out_b: u 8],
+            }
+            pub const FILTER: Filter = $filter;
+            pub fn host() -> &'static UnitModel {
+                &$host
+            }
+            fn stream(i: &[Vec<i64>]) -> Vec<Vec<i64>> {
+                run(FILTER, host(), INPUTS, i)
+            }
+            fn exact(v: &[i64]) -> Vec<i64> {
+                stream(&[v.to_vec()]).remove(0)
+            }
+            fn random_vector(rng: &mut dyn rand::RngCore) -> Vec<i64> {
+                random(FILTER, host(), INPUTS, rng)
+            }
+            fn hard() -> Vec<Vec<i64>> {
+                hard_cases(FILTER, host(), INPUTS)
+            }
+            pub static MODEL: UnitModel =
+                UnitModel::new($name, (INPUTS, OUTPUTS), exact, random_vector, hard).with_stream(stream);
+        }
+    };
+}
+
+textured!(bilinear, "cart_tex_bilinear", Filter::Bilinear, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(bilinear_matte, "cart_tex_bilinear_matte", Filter::Bilinear, crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(nearest_matte, "cart_tex_nearest_matte", Filter::Nearest, crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(nearest_mip_matte, "cart_tex_nearest_mip_matte", Filter::NearestMip, crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+/// Every textured pipeline's model, its filter and its host.
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 4] {
+    [
+        (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
+        (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
+        (&nearest_matte::MODEL, nearest_matte::FILTER, nearest_matte::host()),
+        (&nearest_mip_matte::MODEL, nearest_mip_matte::FILTER, nearest_mip_matte::host()),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_pipeline_has_the_fronts_ports_then_its_hosts_others() {
+        for (m, f, h) in all() {
+            let want = expected_ports(f, h);
+            let got: Vec<_> = m.inputs.iter().map(|p| (p.name, p.bits, p.signed)).collect();
+            assert_eq!(got, want.iter().map(|p| (p.name, p.bits, p.signed)).collect::<Vec<_>>(), "{}", m.name);
+        }
+    }
+
+    #[test]
+    fn the_hosts_filter_returns_a_texel_given_four_times_with_blends_of_zero() {
+        for t in 0..256 {
+            assert_eq!(crate::bilinear::exact_channel(t, t, t, t, 0, 0, crate::bilinear::F), t);
+        }
+    }
+
+    /// The texel the front gives is the one the host would be given: a quad of texels written at level 0, read at
+    /// a position inside it, matches the host model fed those four texels and tex_addr's blend factors.
+    #[test]
+    fn the_bilinear_front_gives_the_host_the_texels_and_blends_it_would_have_fetched() {
+        use crate::cart_pipeline::input as h;
+        let ports = bilinear::INPUTS;
+        let at = At::of(ports, false);
+        let host = bilinear::host();
+        let mut base = from_host(host, ports, &(host.hard_cases)()[0]);
+        let mut stream = vec![];
+        for y in 0..4 {
+            for x in 0..4 {
+                front::put_write(&mut base, &at, 2, x, y, pattern(2, x, y));
+                stream.push(base.clone());
+            }
+        }
+        let (u, v) = (256 + 128 + 77, 2 * 256 + 128 + 200); // texels 1..2 × 2..3, blends 77 and 200
+        front::put_read(&mut base, &at, [u, v], 2, [true, true], [0; 4]);
+        stream.push(base.clone());
+        let got = bilinear::MODEL.run(&stream).pop().unwrap();
+        let mut hv = (host.hard_cases)()[0].clone();
+        for (k, (x, y)) in [(1, 2), (2, 2), (1, 3), (2, 3)].into_iter().enumerate() {
+            let t = pattern(2, x, y);
+            (hv[crate::cart_pipeline::TEXELS[k][0]], hv[crate::cart_pipeline::TEXELS[k][1]]) = (t & 0xff, t >> 8);
+        }
+        (hv[h::ublend], hv[h::vblend]) = (77, 200);
+        assert_eq!(got, (host.exact)(&hv));
+    }
+
+    #[test]
+    fn the_vectors_read_only_texels_they_have_written() {
+        use rand::SeedableRng;
+        for (m, _, _) in all() {
+            let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+            let mut v = (m.hard_cases)();
+            v.extend((0..5_000).map(|_| (m.random)(&mut rng)));
+            let at = At::of(m.inputs, m.inputs.iter().any(|p| p.name == "du_dx"));
+            let mut written = std::collections::HashSet::new();
+            for (k, i) in v.iter().enumerate() {
+                if i[at.we] == 1 {
+                    let s = i[at.w_log2].min(crate::tex_fetch::MAX_LOG_SIDE);
+                    written.insert(s);
+                    assert!(i[at.wx] < 1 << s && i[at.wy] < 1 << s, "{}: vector {k}", m.name);
+                    continue;
+                }
+                // a read of a map of side 2^s reads levels 0..=s of its chain, all of which the load wrote
+                assert!(i[at.log_side] <= REGION_LOG2, "{}: vector {k} reads past the loaded chain", m.name);
+            }
+            assert!((0..=REGION_LOG2).all(|s| written.contains(&s)));
+        }
+    }
+}

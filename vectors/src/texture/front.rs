@@ -1,0 +1,202 @@
+//! The texture unit's fronts, the model of `rtl::texture::front`: [lod →] tex_addr → tex_fetch [→ bilinear on each
+//! byte], wired from the units' own `exact`s over one memory (`tex_fetch::Memory`), vector by vector in order.
+//!
+//! A front's ports, by name, in the vector of the pipeline that holds it: `u`, `v` (Sq11.8, texels of level 0),
+//! `log_side`, `uwrap`, `vwrap`, the write port `we`, `w_log2`, `wx`, `wy`, `wdata`, and with a MIP filter the four
+//! derivatives `du_dx`, `dv_dx`, `du_dy`, `dv_dy` (Sq8.8). A write puts `wdata` into its texel and leaves as a
+//! texel of zero; a read sees every write before it.
+
+use crate::texture::{lod, tex_addr, tex_fetch};
+use crate::unit::Port;
+use crate::{bilinear, fixed::saturate};
+
+/// Which texel a front gives (the scene's `[bump] filter`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Filter {
+    /// the texel that holds the sample, on level 0
+    Nearest,
+    /// the texel that holds the sample, on the nearest level ⌊λ + ½⌋
+    NearestMip,
+    /// the four texels round the sample on level 0, filtered
+    Bilinear,
+}
+
+impl Filter {
+    pub fn mip(self) -> bool {
+        self == Filter::NearestMip
+    }
+    pub fn linear(self) -> bool {
+        self == Filter::Bilinear
+    }
+}
+
+/// The front's ports (and the derivatives' with a MIP filter), in the order the pipelines put them first.
+pub const PORTS: &[Port] = &[
+    Port::s("u", 20),
+    Port::s("v", 20),
+    Port::u("log_side", 4),
+    Port::u("uwrap", 1),
+    Port::u("vwrap", 1),
+    Port::u("we", 1),
+    Port::u("w_log2", 4),
+    Port::u("wx", 8),
+    Port::u("wy", 8),
+    Port::u("wdata", 16),
+];
+pub const DERIVATIVES: &[Port] =
+    &[Port::s("du_dx", 17), Port::s("dv_dx", 17), Port::s("du_dy", 17), Port::s("dv_dy", 17)];
+
+/// Where a front's ports sit in a pipeline's vector.
+#[derive(Clone, Copy, Debug)]
+pub struct At {
+    pub u: usize,
+    pub v: usize,
+    pub log_side: usize,
+    pub uwrap: usize,
+    pub vwrap: usize,
+    pub we: usize,
+    pub w_log2: usize,
+    pub wx: usize,
+    pub wy: usize,
+    pub wdata: usize,
+    /// du_dx, dv_dx, du_dy, dv_dy, with a MIP filter
+    pub d: Option<[usize; 4]>,
+}
+
+/// The index of the port called `name`; panics if there is none (a pipeline's port list is fixed at compile time,
+/// and a test runs every pipeline's model).
+pub fn index(ports: &[Port], name: &str) -> usize {
+    ports.iter().position(|p| p.name == name).unwrap_or_else(|| panic!("no port {name}"))
+}
+
+impl At {
+    pub fn of(ports: &[Port], mip: bool) -> At {
+        let i = |n: &str| index(ports, n);
+        At {
+            u: i("u"),
+            v: i("v"),
+            log_side: i("log_side"),
+            uwrap: i("uwrap"),
+            vwrap: i("vwrap"),
+            we: i("we"),
+            w_log2: i("w_log2"),
+            wx: i("wx"),
+            wy: i("wy"),
+            wdata: i("wdata"),
+            d: mip.then(|| [i("du_dx"), i("dv_dx"), i("du_dy"), i("dv_dy")]),
+        }
+    }
+}
+
+/// One front and its memory, from reset (an empty, zero memory).
+#[derive(Clone)]
+pub struct Front {
+    pub filter: Filter,
+    pub mem: tex_fetch::Memory,
+}
+
+impl Front {
+    pub fn new(filter: Filter) -> Front {
+        Front { filter, mem: tex_fetch::Memory::default() }
+    }
+
+    /// The level the address unit reads for this vector: the LOD unit's nearest level, or 0.
+    pub fn level(&self, v: &[i64], at: &At) -> i64 {
+        match at.d {
+            Some(d) if self.filter.mip() => lod::exact(d.map(|k| v[k]), v[at.log_side])[lod::output::nearest],
+            _ => 0,
+        }
+    }
+
+    /// The texels a read vector's footprint reads, as (level side log2, x, y) the memory holds them (the side
+    /// saturated to the memory's, the place modulo the side); none for a write.
+    pub fn reads(&self, v: &[i64], at: &At) -> Vec<(i64, i64, i64)> {
+        if v[at.we] == 1 {
+            return vec![];
+        }
+        let lin = i64::from(self.filter.linear());
+        let a = tex_addr::exact(&[v[at.u], v[at.v], self.level(v, at), v[at.log_side], v[at.uwrap], v[at.vwrap], lin]);
+        use tex_addr::output as o;
+        let m = a[o::level_log2].min(tex_fetch::MAX_LOG_SIDE);
+        let wrap = |c: i64| c & ((1 << m) - 1);
+        let mut t = vec![];
+        for y in [a[o::y0], a[o::y1]] {
+            for x in [a[o::x0], a[o::x1]] {
+                t.push((m, wrap(x), wrap(y)));
+            }
+        }
+        t
+    }
+
+    /// The texel a write vector writes, as `reads` names texels.
+    pub fn writes(v: &[i64], at: &At) -> Option<(i64, i64, i64)> {
+        let m = v[at.w_log2].min(tex_fetch::MAX_LOG_SIDE);
+        let wrap = |c: i64| c & ((1 << m) - 1);
+        (v[at.we] == 1).then(|| (m, wrap(v[at.wx]), wrap(v[at.wy])))
+    }
+
+    /// One vector: (lo, hi), the texel's two bytes, filtered or the nearest one; a write gives (0, 0).
+    pub fn step(&mut self, v: &[i64], at: &At) -> [i64; 2] {
+        if v[at.we] == 1 {
+            self.mem.write(v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
+            return [0, 0];
+        }
+        let level = self.level(v, at);
+        let lin = i64::from(self.filter.linear());
+        let a = tex_addr::exact(&[v[at.u], v[at.v], level, v[at.log_side], v[at.uwrap], v[at.vwrap], lin]);
+        use tex_addr::output as o;
+        let t = self.mem.footprint(a[o::level_log2], [a[o::x0], a[o::x1]], [a[o::y0], a[o::y1]]);
+        let byte = |k: usize, c: u32| (t[k] >> (8 * c)) & 0xff;
+        if self.filter.linear() {
+            [0, 1].map(|c| {
+                bilinear::exact_channel(
+                    byte(0, c),
+                    byte(1, c),
+                    byte(2, c),
+                    byte(3, c),
+                    a[o::ublend],
+                    a[o::vblend],
+                    bilinear::F,
+                )
+            })
+        } else {
+            [byte(0, 0), byte(0, 1)]
+        }
+    }
+}
+
+/// A read vector's front ports for the sample (u, v) (Sq11.8) of a map of side 2^log_side, with the wrap modes
+/// and, for a MIP filter, the derivatives; written into `v` at `at`.
+pub fn put_read(v: &mut [i64], at: &At, uv: [i64; 2], log_side: i64, wrap: [bool; 2], d: [i64; 4]) {
+    (v[at.u], v[at.v], v[at.log_side]) = (uv[0], uv[1], log_side);
+    (v[at.uwrap], v[at.vwrap], v[at.we]) = (i64::from(wrap[0]), i64::from(wrap[1]), 0);
+    (v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]) = (0, 0, 0, 0);
+    if let Some(k) = at.d {
+        for c in 0..4 {
+            v[k[c]] = d[c];
+        }
+    }
+}
+
+/// A write vector's front ports: texel (x, y) of the level of side 2^m.
+pub fn put_write(v: &mut [i64], at: &At, m: i64, x: i64, y: i64, texel: i64) {
+    (v[at.u], v[at.v], v[at.log_side], v[at.uwrap], v[at.vwrap]) = (0, 0, 0, 0, 0);
+    (v[at.we], v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]) = (1, m, x, y, texel);
+    if let Some(k) = at.d {
+        for c in k {
+            v[c] = 0;
+        }
+    }
+}
+
+/// A random sample position: mostly within a few repeats of the map either side of 0, one draw in eight an end
+/// of the range (Sq11.8).
+pub fn random_position(rng: &mut dyn rand::RngCore, log_side: i64) -> i64 {
+    use rand::Rng;
+    let lim = (1i64 << 19) - 1;
+    if rng.gen_range(0..8) == 0 {
+        return [-lim - 1, lim, 0, -1][rng.gen_range(0..4)];
+    }
+    let span = (256i64 << log_side) * 3;
+    saturate(rng.gen_range(-span..=span), -lim - 1, lim)
+}
