@@ -324,10 +324,21 @@ impl Pipeline for CartTex {
             pipelines::Filter::Nearest => "the nearest texel of level 0",
             pipelines::Filter::NearestMip => "the nearest texel of the nearest MIP level (the LOD unit's)",
         };
-        format!(
-            "the texture unit ({f}, the map and its chain in its memory) in front of: {}",
-            self.host.describe(scene)
-        )
+        let texels = match self.host.row().family {
+            Family::Cartesian(Decode::HemiOct) => "hemi-octahedral texels",
+            Family::CartSurface(v) if v.decode == Decode::HemiOct => "hemi-octahedral texels",
+            _ => "seed-encoded texels",
+        };
+        let light = match self.row.serves.per {
+            pipelines::Per::Vertex => "lights interpolated per pixel",
+            pipelines::Per::Surface => "one light per surface",
+        };
+        let gloss = if self.row.serves.gloss {
+            format!("gloss C = {}", scene.conc)
+        } else {
+            "matte (C = 0: no gloss unit)".into()
+        };
+        format!("the texture unit ({f}; the map and its MIP chain in its memory), {texels}, {light}, {gloss}")
     }
     fn prepare(&self, scene: &Scene) -> Prepared {
         use vectors::texture::front::{self, At};

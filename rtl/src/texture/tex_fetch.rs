@@ -262,8 +262,9 @@ impl Logic for TexFetch {
         self.w_sum[2].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[0].q.val();
         self.w_sum[3].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[1].q.val();
         self.w_wsum.next = self.s2_wbase.q.val() + self.s2_wrow.q.val() + self.s2_wcol.q.val(); // U13, exact
-                                                                                                // one address a bank a clock: the write's in the bank it writes, else the read's (a vector either reads
-                                                                                                // or writes, so nothing is lost), as a single-port RAM (the UP5K's SPRAM) needs it
+
+        // one address a bank a clock: the write's in the bank it writes, else the read's (a vector either reads or
+        // writes, so nothing is lost), as a single-port RAM (the UP5K's SPRAM) needs it
         for n in 0..4 {
             self.s3_addr[n].d.next = self.w_sum[n].val();
         }
