@@ -314,6 +314,12 @@ fn fixed8(x: f64, bits: u32) -> i64 {
     ((x * 256.0).round() as i64).clamp(-lim, lim - 1)
 }
 
+/// The same, truncated toward −∞.
+fn floor8(x: f64, bits: u32) -> i64 {
+    let lim = 1i64 << (bits - 1);
+    ((x * 256.0).floor() as i64).clamp(-lim, lim - 1)
+}
+
 impl Pipeline for CartTex {
     fn row(&self) -> &'static Row {
         self.row
@@ -375,7 +381,11 @@ impl Pipeline for CartTex {
         assert_eq!(frame.pixels.len(), host.pixels().len(), "the host's frame and the rasteriser's");
         for (px, h) in frame.pixels.iter().zip(host.pixels()) {
             let mut v = from_host(h);
-            let uv = [fixed8(px.pos[0], 20), fixed8(px.pos[1], 20)];
+            // a repeating axis taken modulo the map's side (as a rasteriser keeps its coordinates small), so that
+            // any repeat count stays inside Sq11.8's ±2,048 texels; a clamped axis lies within the map already
+            let pos = [0, 1].map(|k| if px.wrap[k] { px.pos[k].rem_euclid(t as f64) } else { px.pos[k] });
+            // the position truncated to 1/256 texel, as the host-fed path truncates its blend factors
+            let uv = [floor8(pos[0], 20), floor8(pos[1], 20)];
             front::put_read(&mut v, &at, uv, log_side, px.wrap, px.deriv.map(|d| fixed8(d, 17)));
             inputs.push(v);
         }
@@ -829,6 +839,29 @@ mod tests {
 
     fn all() -> Vec<Box<dyn Pipeline>> {
         pipelines::PIPELINES.iter().map(|r| build(r, &Scene::default(), &Settings::default())).collect()
+    }
+
+    /// On level 0 the texture unit reads what the host-fed pipeline was given: the same frame, pixel for pixel,
+    /// on the quad, on the demo's torus and on a sphere whose map repeats 64 times round it (positions far past
+    /// Sq11.8's range unless reduced modulo the map).
+    #[test]
+    fn the_units_bilinear_frame_is_the_host_fed_frame() {
+        use crate::scene::Curved;
+        let unit = pipelines::named("cart_tex_bilinear_matte").unwrap();
+        let host = pipelines::named("cart_pipeline_matte").unwrap();
+        let demo =
+            crate::scene_file::parse(crate::scene_file::DEMO, "demo.toml", std::path::Path::new(".")).unwrap().scene;
+        let mut sphere = Scene { size: 96, conc: 0, ..demo.clone() };
+        sphere.curved = Some(Curved { shape: crate::surface::Shape::Sphere, repeat: [64, 1], ..demo.curved.unwrap() });
+        let quad = Scene { size: 64, conc: 0, ..Scene::default() };
+        for (what, scene) in [("quad", quad), ("demo", Scene { size: 128, ..demo }), ("sphere", sphere)] {
+            let (u, h) = (build(unit, &scene, &Settings::default()), build(host, &scene, &Settings::default()));
+            let (pu, ph) = (u.prepare(&scene), h.prepare(&scene));
+            let (ou, oh) = (crate::render::model(u.model(), &pu), crate::render::model(h.model(), &ph));
+            assert!(ou.outs.len() > 1000, "{what}: {} pixels", ou.outs.len());
+            let differ = ou.outs.iter().zip(&oh.outs).filter(|(a, b)| a != b).count();
+            assert_eq!((differ, ou.outs.len()), (0, oh.outs.len()), "{what}");
+        }
     }
 
     #[test]
