@@ -279,6 +279,15 @@ impl CartTex {
     pub fn new(row: &'static Row, host: &'static Row, filter: pipelines::Filter) -> CartTex {
         CartTex { row, host: build(host, &Scene::default(), &Settings::default()), filter }
     }
+
+    /// The texel decode of the host-fed pipeline it is built on.
+    fn decode(&self) -> Decode {
+        match self.host.row().family {
+            Family::Cartesian(d) => d,
+            Family::CartSurface(v) => v.decode,
+            _ => unreachable!("a texture-unit pipeline is built on a Cartesian host (the table's rows)"),
+        }
+    }
 }
 
 /// The map's MIP chain as unit normals, level 0 (side t) first, down to 1 × 1: each texel the normalised mean of
@@ -330,10 +339,9 @@ impl Pipeline for CartTex {
             pipelines::Filter::Nearest => "the nearest texel of level 0",
             pipelines::Filter::NearestMip => "the nearest texel of the nearest MIP level (the LOD unit's)",
         };
-        let texels = match self.host.row().family {
-            Family::Cartesian(Decode::HemiOct) => "hemi-octahedral texels",
-            Family::CartSurface(v) if v.decode == Decode::HemiOct => "hemi-octahedral texels",
-            _ => "seed-encoded texels",
+        let texels = match self.decode() {
+            Decode::HemiOct => "hemi-octahedral texels",
+            Decode::Seed => "seed-encoded texels",
         };
         let light = match self.row.serves.per {
             pipelines::Per::Vertex => "lights interpolated per pixel",
@@ -354,15 +362,11 @@ impl Pipeline for CartTex {
         let t = scene.tex;
         assert!(self.row.renders(scene), "{}: a map of side {t}, not a power of two up to 128", self.row.name);
         let log_side = t.trailing_zeros() as i64;
-        let host_ports = self.host.model().inputs;
-        let from_host = |h: &[i64]| -> Vec<i64> {
-            model.inputs.iter().map(|p| host_ports.iter().position(|q| q.name == p.name).map_or(0, |k| h[k])).collect()
-        };
+        let from_host = |h: &[i64]| vectors::cart_tex::from_host(self.host.model(), model.inputs, h);
         // the prologue: every level of the chain, the smallest first, encoded as the host encodes its texels
-        let encoder = match self.host.row().family {
-            Family::Cartesian(Decode::HemiOct) => Encoder::HemiOct,
-            Family::CartSurface(v) if v.decode == Decode::HemiOct => Encoder::HemiOct,
-            _ => Encoder::Seed,
+        let encoder = match self.decode() {
+            Decode::HemiOct => Encoder::HemiOct,
+            Decode::Seed => Encoder::Seed,
         };
         let chain = mip_chain(&scene.normals(), t);
         let blank = vec![0; model.inputs.len()];

@@ -6,6 +6,7 @@
 //! (filtered, or the nearest), which go in at every texel port of the host model with blend factors of zero (the
 //! host's bilinear unit then returns the texel itself, a test checks it), and the host model does the rest.
 
+use crate::tex_fetch::pattern;
 use crate::texture::front::{self, At, Filter, Front};
 use crate::unit::{Port, UnitModel};
 
@@ -65,13 +66,8 @@ pub fn run(filter: Filter, host: &UnitModel, ports: &[Port], inputs: &[Vec<i64>]
 /// The levels the random vectors read and write: the chain of a 16 × 16 map, which the hard cases load first.
 pub const REGION_LOG2: i64 = 4;
 
-/// A texel of the hard cases' map: distinct along rows and columns and by level, both bytes used.
-pub fn pattern(m: i64, x: i64, y: i64) -> i64 {
-    crate::tex_fetch::pattern(m, x, y)
-}
-
 /// A vector of the textured pipeline from a vector of its host: the host's other ports by name, the front's zero.
-fn from_host(host: &UnitModel, ports: &[Port], h: &[i64]) -> Vec<i64> {
+pub fn from_host(host: &UnitModel, ports: &[Port], h: &[i64]) -> Vec<i64> {
     ports.iter().map(|p| host.inputs.iter().position(|q| q.name == p.name).map_or(0, |k| h[k])).collect()
 }
 

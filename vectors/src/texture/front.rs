@@ -117,12 +117,11 @@ impl Front {
         let lin = i64::from(self.filter.linear());
         let a = tex_addr::exact(&[v[at.u], v[at.v], self.level(v, at), v[at.log_side], v[at.uwrap], v[at.vwrap], lin]);
         use tex_addr::output as o;
-        let m = a[o::level_log2].min(tex_fetch::MAX_LOG_SIDE);
-        let wrap = |c: i64| c & ((1 << m) - 1);
+        let m = tex_fetch::level(a[o::level_log2]);
         let mut t = vec![];
         for y in [a[o::y0], a[o::y1]] {
             for x in [a[o::x0], a[o::x1]] {
-                t.push((m, wrap(x), wrap(y)));
+                t.push((m, tex_fetch::wrap(x, m), tex_fetch::wrap(y, m)));
             }
         }
         t
@@ -130,9 +129,8 @@ impl Front {
 
     /// The texel a write vector writes, as `reads` names texels.
     pub fn writes(v: &[i64], at: &At) -> Option<(i64, i64, i64)> {
-        let m = v[at.w_log2].min(tex_fetch::MAX_LOG_SIDE);
-        let wrap = |c: i64| c & ((1 << m) - 1);
-        (v[at.we] == 1).then(|| (m, wrap(v[at.wx]), wrap(v[at.wy])))
+        let m = tex_fetch::level(v[at.w_log2]);
+        (v[at.we] == 1).then(|| (m, tex_fetch::wrap(v[at.wx], m), tex_fetch::wrap(v[at.wy], m)))
     }
 
     /// One vector: (lo, hi), the texel's two bytes, filtered or the nearest one; a write gives (0, 0).

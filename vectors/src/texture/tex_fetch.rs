@@ -54,11 +54,11 @@ pub fn words(m: i64) -> i64 {
 }
 
 /// The level's side log2 as the unit reads it (saturated to 7) and a coordinate modulo the level's side.
-fn level(m: i64) -> i64 {
+pub fn level(m: i64) -> i64 {
     m.min(MAX_LOG_SIDE)
 }
 
-fn wrap(c: i64, m: i64) -> i64 {
+pub fn wrap(c: i64, m: i64) -> i64 {
     c & ((1 << m) - 1)
 }
 
