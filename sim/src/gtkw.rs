@@ -65,7 +65,7 @@ pub fn header_vars(vcd: &str) -> Vec<Var> {
 }
 
 /// The name GTKWave gives a VCD variable: a bus without a range in its reference gets `[bits−1:0]`.
-fn facility(v: &Var) -> String {
+pub fn facility(v: &Var) -> String {
     if v.bits > 1 {
         format!("{}[{}:0]", v.name(), v.bits - 1)
     } else {
@@ -74,7 +74,7 @@ fn facility(v: &Var) -> String {
 }
 
 /// The stage of a register field name: `s7_p$0` → 7, `s6b_c$1` → 6.
-fn stage_of(field: &str) -> Option<u32> {
+pub fn stage_of(field: &str) -> Option<u32> {
     let rest = field.strip_prefix('s')?;
     let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
     let after = &rest[digits.len()..];
@@ -200,28 +200,4 @@ pub fn write_beside(vcd: &Path, formats: &Formats) -> Result<std::path::PathBuf,
     let out = vcd.with_extension("gtkw");
     synth::export::write_atomic(&out, body.as_bytes())?;
     Ok(out)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn stages_are_read_off_register_names() {
-        assert_eq!(stage_of("s7_p$0"), Some(7));
-        assert_eq!(stage_of("s6b_c$1"), Some(6));
-        assert_eq!(stage_of("s12_x"), Some(12));
-        for f in ["mop_r$0", "sum", "s_x", "shift_f", "sb_x"] {
-            assert_eq!(stage_of(f), None, "{f}");
-        }
-    }
-
-    #[test]
-    fn the_header_is_read_scope_by_scope() {
-        let v = header_vars("$scope module uut $end $var wire 1 ! clock $end $scope module s1_a $end $var wire 12 # q $end $upscope $end $var wire 3 $ w $end $upscope $end $enddefinitions $end");
-        assert_eq!(v.len(), 3);
-        assert_eq!(v[1], Var { path: vec!["uut".into(), "s1_a".into(), "q".into()], bits: 12 });
-        assert_eq!(v[2].name(), "uut.w");
-        assert_eq!(facility(&v[1]), "uut.s1_a.q[11:0]");
-    }
 }

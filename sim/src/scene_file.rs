@@ -343,7 +343,7 @@ impl SceneSpec {
 pub const DEFAULT_WORLD_LIGHT: [f64; 3] = [-2.0, 2.5, 3.0];
 
 /// 1-based line and column of a byte offset.
-fn line_col(text: &str, at: usize) -> (usize, usize) {
+pub fn line_col(text: &str, at: usize) -> (usize, usize) {
     let at = at.min(text.len());
     let before = &text[..at];
     let line = before.matches('\n').count() + 1;
@@ -692,17 +692,4 @@ pub fn demo() -> Result<SceneSpec, String> {
 /// The embedded quad as read.
 pub fn quad() -> Result<SceneSpec, String> {
     parse(QUAD, "scenes/quad.toml (embedded)", Path::new("."))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn line_and_column_count_from_one() {
-        let t = "a = 1\nbb = 2\n";
-        assert_eq!(line_col(t, 0), (1, 1));
-        assert_eq!(line_col(t, 6), (2, 1));
-        assert_eq!(line_col(t, 9), (2, 4));
-    }
 }

@@ -59,3 +59,26 @@ fn a_pipelines_vcd_gets_a_save_file_gtkwave_can_follow() {
     let at = |n: &str| traces.iter().position(|t| t.0 == n).unwrap_or_else(|| panic!("{n}"));
     assert!(at("uut.bump_norm.s3_s.q[19:0]") < at("uut.bump_norm.s7_p$0.q[22:0]"));
 }
+
+mod reading {
+    use sim::gtkw::*;
+
+    #[test]
+    fn stages_are_read_off_register_names() {
+        assert_eq!(stage_of("s7_p$0"), Some(7));
+        assert_eq!(stage_of("s6b_c$1"), Some(6));
+        assert_eq!(stage_of("s12_x"), Some(12));
+        for f in ["mop_r$0", "sum", "s_x", "shift_f", "sb_x"] {
+            assert_eq!(stage_of(f), None, "{f}");
+        }
+    }
+
+    #[test]
+    fn the_header_is_read_scope_by_scope() {
+        let v = header_vars("$scope module uut $end $var wire 1 ! clock $end $scope module s1_a $end $var wire 12 # q $end $upscope $end $var wire 3 $ w $end $upscope $end $enddefinitions $end");
+        assert_eq!(v.len(), 3);
+        assert_eq!(v[1], Var { path: vec!["uut".into(), "s1_a".into(), "q".into()], bits: 12 });
+        assert_eq!(v[2].name(), "uut.w");
+        assert_eq!(facility(&v[1]), "uut.s1_a.q[11:0]");
+    }
+}

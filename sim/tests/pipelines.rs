@@ -140,3 +140,134 @@ fn no_combination_of_choices_has_two_pipelines() {
     }
     assert_eq!(served, PIPELINES.len(), "every row serves a combination of these choices");
 }
+
+mod built {
+    use sim::pipeline::*;
+    use sim::pipelines::{self, Settings};
+    use sim::scene::Scene;
+    use vectors::cart_pipeline::Decode;
+
+    fn all() -> Vec<Box<dyn Pipeline>> {
+        pipelines::PIPELINES.iter().map(|r| build(r, &Scene::default(), &Settings::default())).collect()
+    }
+
+    /// On level 0 the texture unit reads what the host-fed pipeline was given: the same frame, pixel for pixel,
+    /// on the quad, on the demo's torus and on a sphere whose map repeats 64 times round it (positions far past
+    /// Sq11.8's range unless reduced modulo the map).
+    #[test]
+    fn the_units_bilinear_frame_is_the_host_fed_frame() {
+        use sim::scene::Curved;
+        let unit = pipelines::named("cart_tex_bilinear_matte").unwrap();
+        let host = pipelines::named("cart_pipeline_matte").unwrap();
+        let demo = sim::scene_file::parse(sim::scene_file::DEMO, "demo.toml", std::path::Path::new(".")).unwrap().scene;
+        let mut sphere = Scene { size: 96, conc: 0, ..demo.clone() };
+        sphere.curved = Some(Curved { shape: sim::surface::Shape::Sphere, repeat: [64, 1], ..demo.curved.unwrap() });
+        let quad = Scene { size: 64, conc: 0, ..Scene::default() };
+        for (what, scene) in [("quad", quad), ("demo", Scene { size: 128, ..demo }), ("sphere", sphere)] {
+            let (u, h) = (build(unit, &scene, &Settings::default()), build(host, &scene, &Settings::default()));
+            let (pu, ph) = (u.prepare(&scene), h.prepare(&scene));
+            let (ou, oh) = (sim::render::model(u.model(), &pu), sim::render::model(h.model(), &ph));
+            assert!(ou.outs.len() > 1000, "{what}: {} pixels", ou.outs.len());
+            let differ = ou.outs.iter().zip(&oh.outs).filter(|(a, b)| a != b).count();
+            assert_eq!((differ, ou.outs.len()), (0, oh.outs.len()), "{what}");
+        }
+    }
+
+    #[test]
+    fn a_built_pipeline_is_its_row() {
+        for (p, r) in all().iter().zip(pipelines::PIPELINES) {
+            assert_eq!((p.row().name, p.model().name, p.rtl().name()), (r.name, r.name, r.name));
+        }
+    }
+
+    /// The per-vertex pipeline without the gloss unit holds the full one's other units and renders a C = 0 scene
+    /// as the full one does.
+    #[test]
+    fn a_matte_scene_gets_the_per_vertex_pipeline_without_gloss_and_the_same_picture() {
+        for decode in [Decode::Seed, Decode::HemiOct] {
+            let scene = Scene { size: 24, conc: 0, ..Scene::default() };
+            let (m, g) = (Cartesian::new(decode, false), Cartesian::glossy(decode));
+            assert!(!m.units().contains(&"gloss") && g.units().contains(&"gloss"));
+            assert_eq!(
+                m.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>(),
+                g.units().iter().filter(|u| **u != "gloss").collect::<Vec<_>>()
+            );
+            let (pm, pg) = (m.prepare(&scene), g.prepare(&scene));
+            assert_eq!(pm.pixels().len(), pg.pixels().len());
+            assert!(!pm.pixels().is_empty());
+            for (a, b) in pm.pixels().iter().zip(pg.pixels()) {
+                assert_eq!(a.len() + 1, b.len());
+                assert_eq!((m.model().exact)(a), (g.model().exact)(b));
+                assert_eq!(m.normal(a), g.normal(b));
+            }
+        }
+    }
+
+    #[test]
+    fn prepared_inputs_are_legal_for_the_model() {
+        for p in all() {
+            // a pipeline without a gloss unit is built for C = 0
+            let conc = if p.units().contains(&"gloss") { Scene::default().conc } else { 0 };
+            let scene = Scene { size: 8, conc, ..Scene::default() };
+            let prep = p.prepare(&scene);
+            assert_eq!((prep.pixels().len(), prep.ideal.len()), (64, 64));
+            for x in &prep.inputs {
+                for (v, port) in x.iter().zip(p.model().inputs) {
+                    let (lo, hi) = port.range();
+                    assert!((lo..=hi).contains(v), "{}: {} = {v}", p.model().name, port.name);
+                }
+            }
+        }
+    }
+}
+
+mod rows {
+    use sim::pipelines::*;
+    use vectors::cart_pipeline::Decode;
+    use vectors::cart_surface::Variant;
+
+    #[test]
+    fn a_row_is_named_after_its_model_and_its_block_and_holds_units_of_the_table() {
+        let mut names = std::collections::BTreeSet::new();
+        for r in PIPELINES {
+            assert!(names.insert(r.name), "{} twice", r.name);
+            assert!(sim::units::find(r.name).is_some(), "{} is in the unit table", r.name);
+            assert_eq!((r.model().name, r.rtl().name()), (r.name, r.name));
+            for u in r.units {
+                assert!(sim::units::find(u).is_some(), "{}: unit {u} is not in the unit table", r.name);
+            }
+        }
+    }
+
+    #[test]
+    fn no_two_rows_serve_the_same_choices() {
+        for (i, a) in PIPELINES.iter().enumerate() {
+            for b in &PIPELINES[i + 1..] {
+                assert_ne!(a.serves, b.serves, "{} and {}", a.name, b.name);
+            }
+            assert_eq!(choose(&a.serves), Some(a));
+        }
+    }
+
+    #[test]
+    fn a_surface_row_holds_the_units_its_variant_needs_and_no_others() {
+        let mut seen = vec![];
+        for r in PIPELINES {
+            let Family::CartSurface(variant) = r.family else { continue };
+            let has = |u: &str| r.units.contains(&u);
+            assert_eq!(has("gloss"), variant.gloss, "{variant:?}");
+            assert_eq!(has("bilinear"), !variant.nearest, "{variant:?}");
+            assert_eq!(
+                (has("cart_decode_hemi_oct"), has("cart_decode")),
+                (variant.decode == Decode::HemiOct, variant.decode == Decode::Seed)
+            );
+            assert!(!has("light_iter") && r.units.iter().filter(|u| **u == "normalise").count() == 1, "{variant:?}");
+            assert_eq!(r.model().name, variant.model().name, "{variant:?}");
+            seen.push(variant);
+        }
+        assert!(Variant::ALL.iter().all(|v| seen.contains(v)) && seen.len() == 8);
+        let labels: std::collections::BTreeSet<&str> =
+            PIPELINES.iter().filter(|r| matches!(r.family, Family::CartSurface(_))).map(|r| r.label).collect();
+        assert_eq!(labels.len(), 8);
+    }
+}

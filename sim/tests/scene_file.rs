@@ -531,3 +531,15 @@ fn the_png_loader_survives_100000_corrupted_maps() {
     assert_eq!(panics, 0);
     assert!(ok > 0 && refused > 0);
 }
+
+mod positions {
+    use sim::scene_file::*;
+
+    #[test]
+    fn line_and_column_count_from_one() {
+        let t = "a = 1\nbb = 2\n";
+        assert_eq!(line_col(t, 0), (1, 1));
+        assert_eq!(line_col(t, 6), (2, 1));
+        assert_eq!(line_col(t, 9), (2, 4));
+    }
+}

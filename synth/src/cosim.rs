@@ -147,6 +147,9 @@ type CloseFn = unsafe extern "C" fn(*mut std::ffi::c_void);
 type RunFn = unsafe extern "C" fn(*mut std::ffi::c_void, *const std::ffi::c_void, usize, usize, *mut u64) -> usize;
 type BareFn = unsafe extern "C" fn(*mut std::ffi::c_void, std::ffi::c_long, *mut u64) -> f64;
 
+/// The C++ flags of the model, its interface and Verilator's runtime: position-independent, for a shared library.
+const CFLAGS: &str = "-fPIC";
+
 /// Build the verilated model and its C interface as a shared library in `dir/obj`: Verilator writes the C++ and
 /// compiles the model; the interface and Verilator's runtime are compiled position-independent; g++ links them.
 fn build_verilator_library(dir: &Path, name: &str, vname: &str) -> Result<PathBuf, String> {
@@ -163,7 +166,7 @@ fn build_verilator_library(dir: &Path, name: &str, vname: &str) -> Result<PathBu
             "--x-initial",
             "unique",
             "-CFLAGS",
-            "-fPIC",
+            CFLAGS,
             "--top-module",
             name,
             "-Mdir",
@@ -176,27 +179,56 @@ fn build_verilator_library(dir: &Path, name: &str, vname: &str) -> Result<PathBu
     )?;
     let obj = dir.join("obj");
     let mk = format!("V{name}.mk");
-    tools::run(&obj, "make", &["-f", &mk, "-j", "2", "harness.o", "verilated.o", "verilated_threads.o"])?;
+    tools::run(&obj, "make", &["-f", &mk, "harness.o"])?;
+    let [rt, rt_threads] = runtime_objects(&obj, name)?;
     let tmp = format!("libharness.so.partial.{}", std::process::id());
+    let (rt, rt_threads) = (rt.to_string_lossy().into_owned(), rt_threads.to_string_lossy().into_owned());
     tools::run(
         &obj,
         "g++",
-        &[
-            "-shared",
-            "-o",
-            &tmp,
-            "harness.o",
-            "verilated.o",
-            "verilated_threads.o",
-            &format!("V{name}__ALL.a"),
-            "-pthread",
-            "-latomic",
-        ],
+        &["-shared", "-o", &tmp, "harness.o", &rt, &rt_threads, &format!("V{name}__ALL.a"), "-pthread", "-latomic"],
     )?;
     // a new file, not an overwrite: a process that has the old one loaded keeps its mapping
     let lib = obj.join("libharness.so");
     std::fs::rename(obj.join(&tmp), &lib).map_err(|e| format!("cannot write {}: {e}", lib.display()))?;
     Ok(lib)
+}
+
+/// The settings of a model's makefiles that Verilator's runtime is compiled under: every `VM_… = value` line of
+/// `V<name>.mk` and `V<name>_classes.mk` but the model's own names (`VM_PREFIX`, `VM_MODPREFIX`) and the lists.
+fn runtime_settings(obj: &Path, name: &str) -> Result<String, String> {
+    let mut out = String::new();
+    for f in [format!("V{name}.mk"), format!("V{name}_classes.mk")] {
+        let text = std::fs::read_to_string(obj.join(&f)).map_err(|e| format!("no Verilator makefile {f}: {e}"))?;
+        for l in text.lines().filter(|l| l.starts_with("VM_") && !l.trim_end().ends_with('\\')) {
+            if !l.starts_with("VM_PREFIX ") && !l.starts_with("VM_MODPREFIX ") {
+                let _ = writeln!(out, "{l}");
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Verilator's runtime, `verilated.o` and `verilated_threads.o`: the same for every model built with the same
+/// Verilator, compiler and settings, and as long to compile as a small model, so compiled once (from the first
+/// model's makefile) and kept in the synthesis cache under the hash of those, then linked into every library.
+fn runtime_objects(obj: &Path, name: &str) -> Result<[PathBuf; 2], String> {
+    let settings = format!("verilator runtime\n{CFLAGS}\n{}", runtime_settings(obj, name)?);
+    let dir = crate::cache::root().join("verilator").join(crate::cache::key(&settings, &["verilator", "g++"]));
+    // held while it is built: a second process waits for the first one's objects rather than building its own
+    let _lock = FolderLock::take(&dir)?;
+    let objects = ["verilated.o", "verilated_threads.o"].map(|o| dir.join(o));
+    if objects.iter().all(|o| o.is_file()) {
+        return Ok(objects);
+    }
+    let mk = format!("V{name}.mk");
+    tools::run(obj, "make", &["-f", &mk, "-j", "2", "verilated.o", "verilated_threads.o"])?;
+    for o in &objects {
+        let file = o.file_name().unwrap_or_default();
+        let bytes = std::fs::read(obj.join(file)).map_err(|e| format!("no {}: {e}", file.to_string_lossy()))?;
+        write_atomic(o, &bytes)?;
+    }
+    Ok(objects)
 }
 
 fn icarus_bench<U: StreamUnit>() -> String {
