@@ -157,6 +157,18 @@ enum Cmd {
         #[arg(long)]
         no_verilator: bool,
     },
+    /// The texture unit's filters (nearest, nearest_mip, bilinear, trilinear) on a scene against a supersampled
+    /// f64 ideal: the colour error over every pixel and over the minified ones (λ > 0.5), a table (DIR/minify.md)
+    /// and pictures (each filter's frame beside its error)
+    Minify {
+        /// a scene file whose map the texture unit holds (gloss 0); default: the demo's torus
+        scene: Option<PathBuf>,
+        #[arg(long, default_value = "out/minify")]
+        out: PathBuf,
+        /// samples a side of each pixel's ideal (n × n)
+        #[arg(long, default_value_t = 4)]
+        samples: usize,
+    },
     /// The design knobs swept over scenes: each point's error against the scene's ideal (colour, shade, normal
     /// angle; for the Cartesian pipelines the shade's error split into encoding, method and datapath) beside its
     /// cost (iCE40 cells, placement, latency) and the model's speed; a Markdown table (DIR/report.md), a Pareto
@@ -337,6 +349,10 @@ pub fn main() -> Result<(), String> {
             return Err("--out -: render writes pictures and a waveform; name a folder".into())
         }
         Cmd::Render { scene, out, window, no_verilator } => crate::render::run(&scene, &out, window, !no_verilator)?,
+        Cmd::Minify { out, .. } if out.as_os_str() == "-" => {
+            return Err("--out -: minify writes a table and pictures; name a folder".into())
+        }
+        Cmd::Minify { scene, out, samples } => crate::minify::run(scene.as_deref(), &out, samples)?,
         Cmd::Hardcases => crate::unit_commands::hardcases()?,
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

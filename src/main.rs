@@ -6,6 +6,7 @@ mod demo;
 mod fonts;
 mod hardcases;
 mod hardware;
+mod minify;
 mod output;
 mod palette_table;
 mod quantize;

@@ -806,3 +806,29 @@ fn a_report_plan_run_through_gnu_parallel_merges_into_the_report_run_in_one_proc
     let err = String::from_utf8_lossy(&m.stderr);
     assert!(!m.status.success() && err.lines().count() == 1 && err.contains("quad.cart_surface_nearest"), "{err}");
 }
+
+/// `minify`: the four filters of the texture unit against the supersampled ideal on the demo's torus, as a table
+/// and pictures; a glossy scene (the filters' pipelines are matte) is refused in one line naming the file, with
+/// nothing written.
+#[test]
+fn minify_measures_every_filter_of_the_texture_unit_and_refuses_a_glossy_scene() {
+    let d = scratch("minify");
+    let out = d.join("out");
+    let (code, text, err) = bumprtl(&["minify", "--out", out.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    for f in ["nearest", "nearest_mip", "bilinear", "trilinear"] {
+        assert!(text.contains(&format!("| {f} | cart_tex_{f}_matte |")), "{text}");
+        assert!(image::open(out.join(format!("minify_{f}.png"))).is_ok_and(|i| i.width() == 512), "{f}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(out.join("minify.md")).unwrap().trim_end(),
+        text.lines().take_while(|l| !l.starts_with("wrote")).collect::<Vec<_>>().join("\n").trim_end()
+    );
+    let glossy = d.join("glossy.toml");
+    std::fs::write(&glossy, sim::scene_file::DEMO.replace("gloss = 0", "gloss = 40")).unwrap();
+    let none = d.join("none");
+    let (code, _, err) = bumprtl(&["minify", glossy.to_str().unwrap(), "--out", none.to_str().unwrap()]);
+    assert_eq!(code, 1);
+    assert!(err.lines().count() == 1 && err.contains("glossy.toml") && err.contains("gloss is 40"), "{err}");
+    assert!(!none.exists());
+}

@@ -4,6 +4,7 @@
 pub mod accuracy;
 pub mod gtkw;
 pub mod heightmap;
+pub mod minify;
 pub mod pipeline;
 pub mod pipelines;
 pub mod prepared;

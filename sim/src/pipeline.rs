@@ -338,6 +338,9 @@ impl Pipeline for CartTex {
             pipelines::Filter::Bilinear => "bilinear on level 0",
             pipelines::Filter::Nearest => "the nearest texel of level 0",
             pipelines::Filter::NearestMip => "the nearest texel of the nearest MIP level (the LOD unit's)",
+            pipelines::Filter::Trilinear => {
+                "bilinear on the two MIP levels round the LOD unit's λ, blended by its fraction"
+            }
         };
         let texels = match self.decode() {
             Decode::HemiOct => "hemi-octahedral texels",
@@ -358,7 +361,7 @@ impl Pipeline for CartTex {
         use vectors::texture::front::{self, At};
         let host = self.host.prepare(scene);
         let model = self.model();
-        let at = At::of(model.inputs, self.filter == pipelines::Filter::NearestMip);
+        let at = At::of(model.inputs, self.filter.front().mip());
         let t = scene.tex;
         assert!(self.row.renders(scene), "{}: a map of side {t}, not a power of two up to 128", self.row.name);
         let log_side = t.trailing_zeros() as i64;
@@ -397,7 +400,7 @@ impl Pipeline for CartTex {
     }
     fn trim(&self, mut p: Prepared) -> Prepared {
         use vectors::texture::front::{At, Front};
-        let at = At::of(self.model().inputs, self.filter == pipelines::Filter::NearestMip);
+        let at = At::of(self.model().inputs, self.filter.front().mip());
         let front = Front::new(self.filter.front());
         let read: std::collections::HashSet<_> = p.pixels().iter().flat_map(|v| front.reads(v, &at)).collect();
         let keep: Vec<Vec<i64>> = p.inputs[..p.prologue]

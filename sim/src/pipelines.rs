@@ -43,6 +43,8 @@ pub enum Filter {
     Nearest,
     /// the nearest texel of the nearest MIP level (the texture unit's LOD unit picks it)
     NearestMip,
+    /// bilinear on the two MIP levels round λ, blended by its fraction (the texture unit's LOD unit)
+    Trilinear,
 }
 
 impl Filter {
@@ -52,6 +54,7 @@ impl Filter {
             Filter::Bilinear => "bilinear",
             Filter::Nearest => "nearest",
             Filter::NearestMip => "nearest_mip",
+            Filter::Trilinear => "trilinear",
         }
     }
 
@@ -62,6 +65,7 @@ impl Filter {
             Filter::Bilinear => F::Bilinear,
             Filter::Nearest => F::Nearest,
             Filter::NearestMip => F::NearestMip,
+            Filter::Trilinear => F::Trilinear,
         }
     }
 }
@@ -384,6 +388,14 @@ pub static PIPELINES: &[Row] = &[
         cartesian(S, Per::Vertex, false, Filter::Bilinear),
         Filter::NearestMip,
         &["lod", "tex_addr", "tex_fetch", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
+    ),
+    tex(
+        "cart_tex_trilinear_matte",
+        "Cartesian, matte, texture unit, trilinear",
+        "cart_pipeline_matte",
+        cartesian(S, Per::Vertex, false, Filter::Bilinear),
+        Filter::Trilinear,
+        &["lod", "tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
     ),
     Row {
         name: "polar_pipeline",

@@ -624,8 +624,8 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                 }
                 Some(Fetch::Unit) => unit,
                 None if on_unit && fits => unit,
-                _ if filter == Filter::NearestMip => {
-                    return Err(at.err(filter_span.unwrap_or(bump_span.clone()), format!("[bump] filter = \"nearest_mip\": only the texture unit has MIP levels, and none of its pipelines serves {}{}", unit.describe(), if fits { "" } else { " (or the map's side is not a power of two up to 128)" })));
+                _ if filter.front().mip() => {
+                    return Err(at.err(filter_span.unwrap_or(bump_span.clone()), format!("[bump] filter = \"{}\": only the texture unit has MIP levels, and none of its pipelines serves {}{}", filter.name(), unit.describe(), if fits { "" } else { " (or the map's side is not a power of two up to 128)" })));
                 }
                 _ if per == Per::Vertex && nearest => {
                     return Err(at.err(filter_span.unwrap_or(bump_span.clone()), "[bump] filter = \"nearest\": the host-fed nearest-texel pipelines light a surface with one light (per = \"surface\" under [light])"));

@@ -190,6 +190,18 @@ pub static UNITS: &[Unit] = &[
             ("fetch$t01", "as fetch$t10"),
             ("fetch$t11", "as fetch$t10"),
         ]),
+    Unit::new(&vectors::cart_tex::trilinear_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexTrilinearMatte>::PATHS).waiving(
+        &[
+            ("light$valid_out", "as in cart_pipeline"),
+            ("light_norm$valid_out", "as in cart_pipeline"),
+            ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
+            ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
+            ("filter$1$wide", "as filter$0$wide"),
+            ("filter$2$wide", "as filter$0$wide"),
+            ("filter$3$wide", "as filter$0$wide"),
+            ("fetch$1$valid_out", "the two fetches run in step: the valid chain follows the first's"),
+        ],
+    ),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

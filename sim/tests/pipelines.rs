@@ -10,6 +10,7 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("seed", false, "bilinear", false),
     ("seed", false, "nearest", false),
     ("seed", false, "nearest_mip", false),
+    ("seed", false, "trilinear", false),
 ];
 
 /// The pipeline a scene's choices name, by the project's naming of its rtl tops; None where the reader refuses.
@@ -32,7 +33,7 @@ fn expected(
         let surface = if per_surface { "_surface" } else { "" };
         return Some(format!("cart_tex_{filter}{surface}{hemi}{matte}"));
     }
-    if filter == "nearest_mip" || (filter == "nearest" && !per_surface) {
+    if matches!(filter, "nearest_mip" | "trilinear") || (filter == "nearest" && !per_surface) {
         return None;
     }
     let nearest = filter == "nearest";
@@ -57,7 +58,7 @@ fn every_scene_the_reader_takes_has_exactly_one_pipeline_and_every_pipeline_a_sc
     for encoding in ["seed", "hemi_oct", "polar", "polar_dc255", "heights", "palette"] {
         for per in [None, Some("vertex"), Some("surface")] {
             for gloss in [None, Some(0), Some(96)] {
-                for filter in [None, Some("bilinear"), Some("nearest"), Some("nearest_mip")] {
+                for filter in [None, Some("bilinear"), Some("nearest"), Some("nearest_mip"), Some("trilinear")] {
                     for (palette, fetch) in [None, Some(256), Some(300), Some(4096)]
                         .into_iter()
                         .flat_map(|p| [(p, None), (p, Some("unit")), (p, Some("host"))])
@@ -125,7 +126,7 @@ fn no_combination_of_choices_has_two_pipelines() {
     for encoding in encodings {
         for per in [Per::Vertex, Per::Surface] {
             for gloss in [false, true] {
-                for filter in [Filter::Bilinear, Filter::Nearest, Filter::NearestMip] {
+                for filter in [Filter::Bilinear, Filter::Nearest, Filter::NearestMip, Filter::Trilinear] {
                     for (index_bits, fetch) in [0, 8, 12].into_iter().flat_map(|b| [(b, Fetch::Unit), (b, Fetch::Host)])
                     {
                         let c = Choices { encoding, per, gloss, filter, index_bits, fetch };

@@ -130,6 +130,12 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         kind(scene("seed", "filter = \"nearest_mip\"\n", "vertex", "gloss = 0\n")),
         "cart_tex_nearest_mip_matte"
     );
+    assert_eq!(kind(scene("seed", "filter = \"trilinear\"\n", "vertex", "gloss = 0\n")), "cart_tex_trilinear_matte");
+    refused(
+        &scene("seed", "filter = \"trilinear\"\nfetch = \"host\"\n", "vertex", "gloss = 0\n"),
+        "s.toml:5:10:",
+        &["filter = \"trilinear\"", "only the texture unit has MIP levels"],
+    );
     refused(
         &scene("seed", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n"),
         "s.toml:5:10:",

@@ -2,16 +2,19 @@
 //! → texel) and the host-fed pipeline's units, against the composed model three ways: golden vectors (the map
 //! loaded first); random streams through rust-hdl, and through Verilator after the hard cases have loaded the chain
 //! they read.
-use rtl::cart_tex::{CartTexBilinear, CartTexBilinearMatte, CartTexNearestMatte, CartTexNearestMipMatte};
+use rtl::cart_tex::{
+    CartTexBilinear, CartTexBilinearMatte, CartTexNearestMatte, CartTexNearestMipMatte, CartTexTrilinearMatte,
+};
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
-use vectors::cart_tex::{bilinear, bilinear_matte, nearest_matte, nearest_mip_matte};
+use vectors::cart_tex::{bilinear, bilinear_matte, nearest_matte, nearest_mip_matte, trilinear_matte};
 use vectors::UnitModel;
 
 unit_tests!(cart_tex_bilinear, CartTexBilinear, bilinear::MODEL);
 unit_tests!(cart_tex_bilinear_matte, CartTexBilinearMatte, bilinear_matte::MODEL);
 unit_tests!(cart_tex_nearest_matte, CartTexNearestMatte, nearest_matte::MODEL);
 unit_tests!(cart_tex_nearest_mip_matte, CartTexNearestMipMatte, nearest_mip_matte::MODEL);
+unit_tests!(cart_tex_trilinear_matte, CartTexTrilinearMatte, trilinear_matte::MODEL);
 
 /// Random streams through rust-hdl (from an empty memory, which both read as zero), the hard cases with bubbles,
 /// and a long random stream under Verilator after the hard cases have loaded the chain it reads.
@@ -44,4 +47,9 @@ fn cart_tex_nearest_matte_streams() {
 #[test]
 fn cart_tex_nearest_mip_matte_streams() {
     three_streams::<CartTexNearestMipMatte>(&nearest_mip_matte::MODEL, 26);
+}
+
+#[test]
+fn cart_tex_trilinear_matte_streams() {
+    three_streams::<CartTexTrilinearMatte>(&trilinear_matte::MODEL, 27);
 }

@@ -45,3 +45,13 @@ cartesian_pipeline! {
     mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy] },
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
 }
+
+cartesian_pipeline! {
+    module: trilinear_matte,
+    block: CartTexTrilinearMatte,
+    unit: "cart_tex_trilinear_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy] },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}

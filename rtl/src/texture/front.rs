@@ -198,3 +198,217 @@ texture_front! {
     lod: { unit: lod, pick: nearest, position: pos_dly },
     unfiltered: { texel: t00 },
 }
+
+/// `TexTrilinear`: the trilinear front, two sets of the unit blocks side by side, one a level: the LOD unit gives
+/// ⌊λ⌋ and frac(λ); one address unit reads level ⌊λ⌋ and the other ⌊λ⌋ + 1 (the address unit clamps it to the
+/// last level, where frac(λ) is 0); each has its own fetch, holding its own copy of the map's memory (a bank has one
+/// read port: two footprints a clock need two copies, both written by the same write port), and two bilinear
+/// units; then each byte of the two levels is blended by frac(λ): `round_half_up(b₀·2^8 + (b₁ − b₀)·f, 8)` (U8,
+/// `vectors::front::lerp`). Ports as `TexNearestMip`'s.
+pub mod trilinear {
+    use crate::prim::delay::Delay;
+    use crate::prim::q::{SBits, Sq11_8, Sq8_8, U16, U8};
+    use crate::prim::ram_delay::RamDelay;
+    use crate::prim::sm_mul::{self, SmMul};
+    use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr, tex_fetch::TexFetch};
+    use rust_hdl::prelude::*;
+
+    /// Cycles from the front's input to the address units', to the fetches', to the bilinear units', to the blend
+    /// of the two levels and to its output (the difference; the product; the rounded sum).
+    pub const AT_ADDR: usize = crate::lod::LATENCY;
+    pub const AT_FETCH: usize = AT_ADDR + crate::tex_addr::LATENCY;
+    pub const AT_FILTER: usize = AT_FETCH + crate::tex_fetch::LATENCY;
+    pub const AT_LERP: usize = AT_FILTER + crate::bilinear::LATENCY;
+    pub const LATENCY: usize = AT_LERP + 1 + sm_mul::LATENCY + 1;
+
+    crate::block! {
+        #[derive(Default)]
+        pub struct TexTrilinear {
+            pub clock: Signal<In, Clock>,
+            pub valid_in: Signal<In, Bit>,
+            pub u: Signal<In, Sq11_8>,
+            pub v: Signal<In, Sq11_8>,
+            pub du_dx: Signal<In, Sq8_8>,
+            pub dv_dx: Signal<In, Sq8_8>,
+            pub du_dy: Signal<In, Sq8_8>,
+            pub dv_dy: Signal<In, Sq8_8>,
+            pub log_side: Signal<In, Bits<4>>,
+            pub uwrap: Signal<In, Bits<1>>,
+            pub vwrap: Signal<In, Bits<1>>,
+            pub we: Signal<In, Bits<1>>,
+            pub w_log2: Signal<In, Bits<4>>,
+            pub wx: Signal<In, U8>,
+            pub wy: Signal<In, U8>,
+            pub wdata: Signal<In, U16>,
+            pub valid_out: Signal<Out, Bit>,
+            pub lo: Signal<Out, U8>,
+            pub hi: Signal<Out, U8>,
+            pub lod: Lod,
+            pos_dly: RamDelay<46, 4, { crate::lod::LATENCY }>, // (u, v, log_side, uwrap, vwrap) packed low to high
+            pos_word: Signal<Local, Bits<46>>,
+            next_level: Signal<Local, Bits<4>>, // ⌊λ⌋ + 1 ≤ 9 (λ ≤ 8)
+            pub addr: [TexAddr; 2],     // level ⌊λ⌋, level ⌊λ⌋ + 1
+            pub fetch: [TexFetch; 2],   // each with its copy of the memory
+            write_dly: RamDelay<37, 5, { crate::lod::LATENCY + crate::tex_addr::LATENCY }>, // (we, w_log2, wx, wy, wdata)
+            write_word: Signal<Local, Bits<37>>,
+            pub filter: [BilinearUnit<8, 8>; 4], // level ⌊λ⌋ low byte, high byte; level ⌊λ⌋ + 1 low byte, high byte
+            blend_dly: [Delay<U16, { crate::tex_fetch::LATENCY }>; 2], // each level's (ublend, vblend) packed low to high
+            blend_word: [Signal<Local, U16>; 2],
+            filter_valid: Delay<Bit, { crate::bilinear::LATENCY }>,
+            // frac(λ), from the LOD unit to the blend of the two levels
+            frac_dly: RamDelay<8, 5, { AT_LERP + 1 - crate::lod::LATENCY }>,
+            // the blend, per byte: stage 1, b₁ − b₀ (S9 in 16, two's complement) and b₀·2^8 (U16 in 17)
+            s1_d: [DFF<SBits<16>>; 2],
+            s1_base: [DFF<Bits<17>>; 2],
+            w_b0: [Signal<Local, Bits<16>>; 2], // b₀ widened (U8 in 16)
+            w_b1: [Signal<Local, Bits<16>>; 2], // b₁ widened (U8 in 16)
+            w_base: [Signal<Local, Bits<17>>; 2], // b₀ widened (U8 in 17)
+            w_frac: Signal<Local, Bits<16>>,    // f widened (U8 in 16)
+            // stages 2–4: |b₁ − b₀|·f ≤ 255·255 (U16), the base beside it
+            mul: [SmMul<16>; 2],
+            base: [Delay<Bits<17>, { sm_mul::LATENCY }>; 2],
+            w_prod: [Signal<Local, Bits<17>>; 2], // the product's low 17 bits: exact (< 2^16)
+            w_sum: [Signal<Local, Bits<17>>; 2],  // b₀·2^8 ± |b₁ − b₀|·f ∈ 0..=65280, exact (a mean of b₀, b₁ times 2^8)
+            w_r: [Signal<Local, Bits<17>>; 2],    // that + 2^7 ≤ 65408, exact
+            // stage 5: bits 8.. of the rounded sum (truncation of it: round half up overall)
+            s5_out: [DFF<U8>; 2],
+            lerp_valid: Delay<Bit, { 1 + sm_mul::LATENCY + 1 }>,
+        }
+    }
+
+    impl Logic for TexTrilinear {
+        #[hdl_gen]
+        fn update(&mut self) {
+            self.lod.clock.next = self.clock.val();
+            self.pos_dly.clock.next = self.clock.val();
+            self.write_dly.clock.next = self.clock.val();
+            self.filter_valid.clock.next = self.clock.val();
+            self.frac_dly.clock.next = self.clock.val();
+            self.lerp_valid.clock.next = self.clock.val();
+            // the write, packed (bit copies), waits for its vector's address
+            self.write_word.next = bit_cast::<37, 1>(self.we.val());
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 4>(self.w_log2.val()) << 1);
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 8>(self.wx.val()) << 5);
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 8>(self.wy.val()) << 13);
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 16>(self.wdata.val()) << 21);
+            self.write_dly.d.next = self.write_word.val();
+            // the level: from the derivatives, the position waiting beside the LOD unit (bit copies)
+            self.lod.valid_in.next = self.valid_in.val();
+            self.lod.du_dx.next = self.du_dx.val();
+            self.lod.dv_dx.next = self.dv_dx.val();
+            self.lod.du_dy.next = self.du_dy.val();
+            self.lod.dv_dy.next = self.dv_dy.val();
+            self.lod.log_side.next = self.log_side.val();
+            self.pos_word.next = bit_cast::<46, 20>(self.u.val());
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 20>(self.v.val()) << 20);
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 4>(self.log_side.val()) << 40);
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.uwrap.val()) << 44);
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.vwrap.val()) << 45);
+            self.pos_dly.d.next = self.pos_word.val();
+            self.next_level.next = self.lod.level.val() + 1; // ≤ 9 in 4 bits: exact
+                                                             // each level's blend factors wait beside its fetch: packed and unpacked, bit copies (a loop's index
+                                                             // cannot reach into a cast's argument under `hdl_gen`)
+                                                             // (one assignment each, before the loop reads them: an element read before it is written, or written from
+                                                             // itself, reads to Verilator as a combinational loop)
+            self.blend_word[0].next =
+                bit_cast::<16, 8>(self.addr[0].ublend.val()) | (bit_cast::<16, 8>(self.addr[0].vblend.val()) << 8);
+            self.blend_word[1].next =
+                bit_cast::<16, 8>(self.addr[1].ublend.val()) | (bit_cast::<16, 8>(self.addr[1].vblend.val()) << 8);
+            self.addr[0].level.next = self.lod.level.val();
+            self.addr[1].level.next = self.next_level.val();
+            for k in 0..2 {
+                self.addr[k].clock.next = self.clock.val();
+                self.fetch[k].clock.next = self.clock.val();
+                self.blend_dly[k].clock.next = self.clock.val();
+                self.addr[k].valid_in.next = self.lod.valid_out.val();
+                self.addr[k].u.next = self.pos_dly.q.val().get_bits::<20>(0);
+                self.addr[k].v.next = self.pos_dly.q.val().get_bits::<20>(20);
+                self.addr[k].log_side.next = self.pos_dly.q.val().get_bits::<4>(40);
+                self.addr[k].uwrap.next = self.pos_dly.q.val().get_bits::<1>(44);
+                self.addr[k].vwrap.next = self.pos_dly.q.val().get_bits::<1>(45);
+                self.addr[k].linear.next = true.into(); // the bilinear footprint
+                                                        // the fetch: the footprint its address unit gives, and the write that waited beside it (bit copies);
+                                                        // both copies of the memory take every write
+                self.fetch[k].valid_in.next = self.addr[k].valid_out.val();
+                self.fetch[k].level_log2.next = self.addr[k].level_log2.val();
+                self.fetch[k].x0.next = self.addr[k].x0.val();
+                self.fetch[k].x1.next = self.addr[k].x1.val();
+                self.fetch[k].y0.next = self.addr[k].y0.val();
+                self.fetch[k].y1.next = self.addr[k].y1.val();
+                self.fetch[k].we.next = self.write_dly.q.val().get_bits::<1>(0);
+                self.fetch[k].w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
+                self.fetch[k].wx.next = self.write_dly.q.val().get_bits::<8>(5);
+                self.fetch[k].wy.next = self.write_dly.q.val().get_bits::<8>(13);
+                self.fetch[k].wdata.next = self.write_dly.q.val().get_bits::<16>(21);
+                self.blend_dly[k].d.next = self.blend_word[k].val();
+            }
+            // the filters: unit 2k + c takes byte c of level k's four texels (bit copies)
+            for i in 0..4 {
+                self.filter[i].clock.next = self.clock.val();
+            }
+            self.filter[0].ublend.next = self.blend_dly[0].q.val().get_bits::<8>(0);
+            self.filter[0].vblend.next = self.blend_dly[0].q.val().get_bits::<8>(8);
+            self.filter[1].ublend.next = self.blend_dly[0].q.val().get_bits::<8>(0);
+            self.filter[1].vblend.next = self.blend_dly[0].q.val().get_bits::<8>(8);
+            self.filter[2].ublend.next = self.blend_dly[1].q.val().get_bits::<8>(0);
+            self.filter[2].vblend.next = self.blend_dly[1].q.val().get_bits::<8>(8);
+            self.filter[3].ublend.next = self.blend_dly[1].q.val().get_bits::<8>(0);
+            self.filter[3].vblend.next = self.blend_dly[1].q.val().get_bits::<8>(8);
+            self.filter[0].t00.next = self.fetch[0].t00.val().get_bits::<8>(0);
+            self.filter[0].t10.next = self.fetch[0].t10.val().get_bits::<8>(0);
+            self.filter[0].t01.next = self.fetch[0].t01.val().get_bits::<8>(0);
+            self.filter[0].t11.next = self.fetch[0].t11.val().get_bits::<8>(0);
+            self.filter[1].t00.next = self.fetch[0].t00.val().get_bits::<8>(8);
+            self.filter[1].t10.next = self.fetch[0].t10.val().get_bits::<8>(8);
+            self.filter[1].t01.next = self.fetch[0].t01.val().get_bits::<8>(8);
+            self.filter[1].t11.next = self.fetch[0].t11.val().get_bits::<8>(8);
+            self.filter[2].t00.next = self.fetch[1].t00.val().get_bits::<8>(0);
+            self.filter[2].t10.next = self.fetch[1].t10.val().get_bits::<8>(0);
+            self.filter[2].t01.next = self.fetch[1].t01.val().get_bits::<8>(0);
+            self.filter[2].t11.next = self.fetch[1].t11.val().get_bits::<8>(0);
+            self.filter[3].t00.next = self.fetch[1].t00.val().get_bits::<8>(8);
+            self.filter[3].t10.next = self.fetch[1].t10.val().get_bits::<8>(8);
+            self.filter[3].t01.next = self.fetch[1].t01.val().get_bits::<8>(8);
+            self.filter[3].t11.next = self.fetch[1].t11.val().get_bits::<8>(8);
+            self.filter_valid.d.next = self.fetch[0].valid_out.val();
+            // frac(λ) waits for the two levels' bytes
+            self.frac_dly.d.next = self.lod.frac.val();
+            self.w_frac.next = bit_cast::<16, 8>(self.frac_dly.q.val());
+            // the blend of the two levels, per byte c: b₀ from unit c, b₁ from unit 2 + c
+            self.w_b0[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
+            self.w_b0[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
+            self.w_b1[0].next = bit_cast::<16, 8>(self.filter[2].out.val());
+            self.w_b1[1].next = bit_cast::<16, 8>(self.filter[3].out.val());
+            self.w_base[0].next = bit_cast::<17, 8>(self.filter[0].out.val());
+            self.w_base[1].next = bit_cast::<17, 8>(self.filter[1].out.val());
+            self.lerp_valid.d.next = self.filter_valid.q.val();
+            for c in 0..2 {
+                self.s1_d[c].clock.next = self.clock.val();
+                self.s1_base[c].clock.next = self.clock.val();
+                self.mul[c].clock.next = self.clock.val();
+                self.base[c].clock.next = self.clock.val();
+                self.s5_out[c].clock.next = self.clock.val();
+                // stage 1: b₁ − b₀, wrapping in 16 bits to its two's complement; b₀·2^8 (exact in 17)
+                self.s1_d[c].d.next = self.w_b1[c].val() - self.w_b0[c].val();
+                self.s1_base[c].d.next = self.w_base[c].val() << 8;
+                // stages 2–4: |b₁ − b₀|·f, the base beside it
+                self.mul[c].x.next = self.s1_d[c].q.val();
+                self.mul[c].w.next = self.w_frac.val();
+                self.base[c].d.next = self.s1_base[c].q.val();
+                // stage 5: b₀·2^8 ± |b₁ − b₀|·f + 2^7, then bits 8..
+                self.w_prod[c].next = self.mul[c].p.val().get_bits::<17>(0);
+                if self.mul[c].neg.val() {
+                    self.w_sum[c].next = self.base[c].q.val() - self.w_prod[c].val();
+                } else {
+                    self.w_sum[c].next = self.base[c].q.val() + self.w_prod[c].val();
+                }
+                self.w_r[c].next = self.w_sum[c].val() + 128;
+                self.s5_out[c].d.next = self.w_r[c].val().get_bits::<8>(8); // truncation of the rounded sum
+            }
+            self.valid_out.next = self.lerp_valid.q.val();
+            self.lo.next = self.s5_out[0].q.val();
+            self.hi.next = self.s5_out[1].q.val();
+        }
+    }
+}
+pub use trilinear::TexTrilinear;

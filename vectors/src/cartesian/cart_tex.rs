@@ -137,6 +137,10 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i
             d.push([256 << k, 0, 0, 256 << k]);
             d.push([0, -(256 << k), 256 << k, 256 << k]);
             d.push([(256 << k) * 181 / 128, 0, 0, 0]);
+            if filter == Filter::Trilinear {
+                // just below the next level (frac(λ) ≈ 255/256): the second level's weight at its largest
+                d.push([(256 << k) * 255 / 128, 0, 0, 0]);
+            }
         }
         d
     } else {
@@ -262,13 +266,21 @@ textured!(nearest_mip_matte, "cart_tex_nearest_mip_matte", Filter::NearestMip, c
     w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
+textured!(trilinear_matte, "cart_tex_trilinear_matte", Filter::Trilinear, crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 4] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 5] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
         (&nearest_matte::MODEL, nearest_matte::FILTER, nearest_matte::host()),
         (&nearest_mip_matte::MODEL, nearest_mip_matte::FILTER, nearest_mip_matte::host()),
+        (&trilinear_matte::MODEL, trilinear_matte::FILTER, trilinear_matte::host()),
     ]
 }
 
@@ -319,6 +331,34 @@ mod tests {
         }
         (hv[h::ublend], hv[h::vblend]) = (77, 200);
         assert_eq!(got, (host.exact)(&hv));
+    }
+
+    /// Two levels of one value each, 0 on level 0 and 255 on level 1 (both bytes): between them the trilinear front
+    /// gives 255·frac(λ), λ from the f64 formula, to within the LOD table's error and a rounding.
+    #[test]
+    fn the_trilinear_front_blends_two_levels_by_the_fraction_of_lambda() {
+        let ports = trilinear_matte::INPUTS;
+        let at = At::of(ports, true);
+        let mut f = Front::new(Filter::Trilinear);
+        let mut v = vec![0; ports.len()];
+        for (m, t) in [(1, 0x0000), (0, 0xffff)] {
+            for y in 0..1 << m {
+                for x in 0..1 << m {
+                    front::put_write(&mut v, &at, m, x, y, t);
+                    assert_eq!(f.step(&v, &at), [0, 0]);
+                }
+            }
+        }
+        let mut seen = std::collections::BTreeSet::new();
+        for edge in (256..512).step_by(5) {
+            let d = [edge, 0, 0, 0];
+            front::put_read(&mut v, &at, [300, 100], 1, [true, true], d);
+            let got = f.step(&v, &at);
+            let want = 255.0 * crate::lod::ideal_lambda(d);
+            assert!(got[0] == got[1] && (got[0] as f64 - want).abs() <= 1.5, "edge {edge}: {got:?} against {want:.2}");
+            seen.insert(got[0]);
+        }
+        assert!(seen.len() > 40, "{seen:?}");
     }
 
     #[test]

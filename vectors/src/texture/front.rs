@@ -8,7 +8,10 @@
 
 use crate::texture::{lod, tex_addr, tex_fetch};
 use crate::unit::Port;
-use crate::{bilinear, fixed::saturate};
+use crate::{
+    bilinear,
+    fixed::{round_half_up, saturate},
+};
 
 /// Which texel a front gives (the scene's `[bump] filter`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -19,14 +22,17 @@ pub enum Filter {
     NearestMip,
     /// the four texels round the sample on level 0, filtered
     Bilinear,
+    /// the four texels round the sample on level ⌊λ⌋ and the four on level ⌊λ⌋ + 1, each filtered, the two
+    /// blended by frac(λ) (`lerp`)
+    Trilinear,
 }
 
 impl Filter {
     pub fn mip(self) -> bool {
-        self == Filter::NearestMip
+        matches!(self, Filter::NearestMip | Filter::Trilinear)
     }
     pub fn linear(self) -> bool {
-        self == Filter::Bilinear
+        matches!(self, Filter::Bilinear | Filter::Trilinear)
     }
 }
 
@@ -100,12 +106,24 @@ impl Front {
         Front { filter, mem: tex_fetch::Memory::default() }
     }
 
-    /// The level the address unit reads for this vector: the LOD unit's nearest level, or 0.
-    pub fn level(&self, v: &[i64], at: &At) -> i64 {
-        match at.d {
-            Some(d) if self.filter.mip() => lod::exact(d.map(|k| v[k]), v[at.log_side])[lod::output::nearest],
-            _ => 0,
+    /// The levels the address units read for this vector (the LOD unit's nearest level; ⌊λ⌋ and ⌊λ⌋ + 1; or 0),
+    /// and the weight of the second, frac(λ) (U8; 0 with one level).
+    pub fn levels(&self, v: &[i64], at: &At) -> (Vec<i64>, i64) {
+        let l = |d: [usize; 4]| lod::exact(d.map(|k| v[k]), v[at.log_side]);
+        match (at.d, self.filter) {
+            (Some(d), Filter::NearestMip) => (vec![l(d)[lod::output::nearest]], 0),
+            (Some(d), Filter::Trilinear) => {
+                let o = l(d);
+                (vec![o[lod::output::level], o[lod::output::level] + 1], o[lod::output::frac])
+            }
+            _ => (vec![0], 0),
         }
+    }
+
+    /// The address unit's outputs for this read vector at `level`.
+    fn address(&self, v: &[i64], at: &At, level: i64) -> Vec<i64> {
+        let lin = i64::from(self.filter.linear());
+        tex_addr::exact(&[v[at.u], v[at.v], level, v[at.log_side], v[at.uwrap], v[at.vwrap], lin])
     }
 
     /// The texels a read vector's footprint reads, as (level side log2, x, y) the memory holds them (the side
@@ -114,14 +132,15 @@ impl Front {
         if v[at.we] == 1 {
             return vec![];
         }
-        let lin = i64::from(self.filter.linear());
-        let a = tex_addr::exact(&[v[at.u], v[at.v], self.level(v, at), v[at.log_side], v[at.uwrap], v[at.vwrap], lin]);
         use tex_addr::output as o;
-        let m = tex_fetch::level(a[o::level_log2]);
         let mut t = vec![];
-        for y in [a[o::y0], a[o::y1]] {
-            for x in [a[o::x0], a[o::x1]] {
-                t.push((m, tex_fetch::wrap(x, m), tex_fetch::wrap(y, m)));
+        for level in self.levels(v, at).0 {
+            let a = self.address(v, at, level);
+            let m = tex_fetch::level(a[o::level_log2]);
+            for y in [a[o::y0], a[o::y1]] {
+                for x in [a[o::x0], a[o::x1]] {
+                    t.push((m, tex_fetch::wrap(x, m), tex_fetch::wrap(y, m)));
+                }
             }
         }
         t
@@ -139,9 +158,18 @@ impl Front {
             self.mem.write(v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
             return [0, 0];
         }
-        let level = self.level(v, at);
-        let lin = i64::from(self.filter.linear());
-        let a = tex_addr::exact(&[v[at.u], v[at.v], level, v[at.log_side], v[at.uwrap], v[at.vwrap], lin]);
+        let (levels, frac) = self.levels(v, at);
+        let b = levels.iter().map(|&l| self.sample(v, at, l)).collect::<Vec<_>>();
+        match b[..] {
+            [one] => one,
+            [b0, b1] => [0, 1].map(|c| lerp(b0[c], b1[c], frac)),
+            _ => unreachable!("a front reads one level or two"),
+        }
+    }
+
+    /// The texel's two bytes at one level: filtered, or the nearest texel's.
+    fn sample(&self, v: &[i64], at: &At, level: i64) -> [i64; 2] {
+        let a = self.address(v, at, level);
         use tex_addr::output as o;
         let t = self.mem.footprint(a[o::level_log2], [a[o::x0], a[o::x1]], [a[o::y0], a[o::y1]]);
         let byte = |k: usize, c: u32| (t[k] >> (8 * c)) & 0xff;
@@ -161,6 +189,12 @@ impl Front {
             [byte(0, 0), byte(0, 1)]
         }
     }
+}
+
+/// The blend of two levels' bytes b₀, b₁ (U8) by the second's weight f (U8, /2^8): `b₀·2^8 + (b₁ − b₀)·f`
+/// (exact, a weighted mean of the two times 2^8), rounded half up to U8.
+pub fn lerp(b0: i64, b1: i64, f: i64) -> i64 {
+    round_half_up(b0 * 256 + (b1 - b0) * f, 8)
 }
 
 /// A read vector's front ports for the sample (u, v) (Sq11.8) of a map of side 2^log_side, with the wrap modes

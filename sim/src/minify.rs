@@ -1,0 +1,140 @@
+//! Minification, measured: the texture unit's filters on one scene against a supersampled f64 ideal. Each pixel's
+//! ideal colour is the mean of `n × n` samples spread over its footprint on the map (the pixel's centre moved by
+//! the screen derivatives of its position, on a regular grid), each sample the map's level 0 read bilinearly in f64
+//! at that point, made unit length and lit by the pixel's light as the pipelines' ideal is. Against it, the colour
+//! each filter's pipeline gives (the bit-exact model, which the rtl equals), over every pixel and over the minified
+//! ones, where λ = log2 ρ of the pixel's own derivatives is above ½ (the nearest level is no longer level 0).
+
+use crate::pipeline::{build, gloss_shade, Pipeline};
+use crate::pipelines::{self, Filter, Settings};
+use crate::scene::Scene;
+use vectors::stats::ErrorStats;
+
+/// λ above which a pixel counts as minified.
+pub const MINIFIED: f64 = 0.5;
+
+/// The bands of λ the table splits the pixels into: each band's upper end (the last is open).
+pub const BANDS: [f64; 4] = [0.5, 1.5, 2.5, f64::INFINITY];
+
+/// The filters on the texture unit, each with the matte per-vertex pipeline that holds it.
+pub const FILTERS: [(Filter, &str); 4] = [
+    (Filter::Nearest, "cart_tex_nearest_matte"),
+    (Filter::NearestMip, "cart_tex_nearest_mip_matte"),
+    (Filter::Bilinear, "cart_tex_bilinear_matte"),
+    (Filter::Trilinear, "cart_tex_trilinear_matte"),
+];
+
+/// The supersampled ideal of a frame, pixel by pixel in the pipelines' order.
+pub struct Ideal {
+    /// the colour, 8-bit units, real
+    pub rgb: Vec<[f64; 3]>,
+    /// λ = log2 ρ of the pixel's derivatives (unclamped)
+    pub lambda: Vec<f64>,
+    /// each pixel's place in the frame
+    pub at: Vec<usize>,
+}
+
+/// Level 0 of the map read bilinearly in f64 at (x, y) in texels (texel centres at k + ½), each axis repeating or
+/// clamped, renormalised.
+fn sample(normals: &[[f64; 3]], t: usize, x: f64, y: f64, wrap: [bool; 2]) -> [f64; 3] {
+    let axis = |s: f64, wrap: bool| -> (usize, usize, f64) {
+        let s = s - 0.5;
+        if wrap {
+            let f = s.floor();
+            let i0 = (f as i64).rem_euclid(t as i64) as usize;
+            (i0, (i0 + 1) % t, s - f)
+        } else {
+            let s = s.clamp(0.0, (t - 1) as f64);
+            let i0 = (s.floor() as usize).min(t - 1);
+            (i0, (i0 + 1).min(t - 1), s - i0 as f64)
+        }
+    };
+    let ((i0, i1, fu), (j0, j1, fv)) = (axis(x, wrap[0]), axis(y, wrap[1]));
+    let n = |i: usize, j: usize| normals[j * t + i];
+    let m: [f64; 3] = std::array::from_fn(|c| {
+        (1.0 - fv) * ((1.0 - fu) * n(i0, j0)[c] + fu * n(i1, j0)[c])
+            + fv * ((1.0 - fu) * n(i0, j1)[c] + fu * n(i1, j1)[c])
+    });
+    crate::surface::unit(m)
+}
+
+/// The scene's supersampled ideal with `n × n` samples a pixel.
+pub fn ideal(scene: &Scene, n: usize) -> Ideal {
+    let normals = scene.normals();
+    let t = scene.tex;
+    let frame = crate::raster::frame(scene, &normals);
+    let mut out = Ideal { rgb: vec![], lambda: vec![], at: vec![] };
+    for px in &frame.pixels {
+        let d = px.deriv; // du/dx, dv/dx, du/dy, dv/dy in texels of level 0
+        let mut rgb = [0.0; 3];
+        for sy in 0..n {
+            for sx in 0..n {
+                let (ox, oy) = ((sx as f64 + 0.5) / n as f64 - 0.5, (sy as f64 + 0.5) / n as f64 - 0.5);
+                let (x, y) = (px.pos[0] + d[0] * ox + d[2] * oy, px.pos[1] + d[1] * ox + d[3] * oy);
+                let c = scene.blend_ideal(gloss_shade(scene.conc, sample(&normals, t, x, y, px.wrap), px.light));
+                for k in 0..3 {
+                    rgb[k] += c[k] / (n * n) as f64;
+                }
+            }
+        }
+        let rho = (d[0] * d[0] + d[1] * d[1]).sqrt().max((d[2] * d[2] + d[3] * d[3]).sqrt());
+        out.rgb.push(rgb);
+        out.lambda.push(rho.log2());
+        out.at.push(px.at);
+    }
+    out
+}
+
+/// One filter's colour error against the supersampled ideal.
+pub struct Line {
+    pub filter: Filter,
+    pub pipeline: &'static str,
+    pub all: ErrorStats,
+    pub minified: ErrorStats,
+    /// by band of λ (`BANDS`)
+    pub bands: Vec<ErrorStats>,
+    /// the frame's colours, place by place (None off the surface)
+    pub frame: Vec<Option<[u8; 3]>>,
+    /// the worst channel's error against the ideal, place by place
+    pub error: Vec<Option<f64>>,
+}
+
+/// Every filter of `FILTERS` on the scene (its gloss must be 0: the filters' pipelines are matte) against `ideal`.
+pub fn measure(scene: &Scene, ideal: &Ideal) -> Result<Vec<Line>, String> {
+    if scene.conc != 0 {
+        return Err(format!(
+            "the minification table runs the matte pipelines: the scene's gloss is {}, not 0",
+            scene.conc
+        ));
+    }
+    let mut lines = vec![];
+    for (filter, name) in FILTERS {
+        let row = pipelines::named(name).ok_or_else(|| format!("no pipeline {name}"))?;
+        if !row.renders(scene) {
+            return Err(format!("{name} cannot render this scene (the texture unit holds maps of side 1, 2, 4 … 128)"));
+        }
+        let p: Box<dyn Pipeline> = build(row, scene, &Settings::default());
+        let prep = p.prepare(scene);
+        let img = crate::render::model(p.model(), &prep);
+        assert_eq!(img.outs.len(), ideal.rgb.len(), "{name}: the pipeline's pixels and the ideal's");
+        let (mut all, mut minified) = (ErrorStats::default(), ErrorStats::default());
+        let mut bands = vec![ErrorStats::default(); BANDS.len()];
+        let size = scene.size;
+        let (mut frame, mut error) = (vec![None; size * size], vec![None; size * size]);
+        for (k, out) in img.outs.iter().enumerate() {
+            let c = p.colour(out);
+            let e = crate::render::colour_err(c, ideal.rgb[k]);
+            let at = ideal.at[k];
+            let place = || crate::render::pixel_at(size)(at);
+            all.add(e, place);
+            if ideal.lambda[k] > MINIFIED {
+                minified.add(e, place);
+            }
+            let band = BANDS.iter().position(|&hi| ideal.lambda[k] <= hi).unwrap_or(BANDS.len() - 1);
+            bands[band].add(e, place);
+            (frame[at], error[at]) = (Some(c), Some(e));
+        }
+        lines.push(Line { filter, pipeline: name, all, minified, bands, frame, error });
+    }
+    Ok(lines)
+}
