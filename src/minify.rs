@@ -20,21 +20,30 @@ fn table(name: &str, n: usize, ideal: &minify::Ideal, lines: &[Line]) -> String 
         s,
         "Colour error in 8-bit LSB (mean / max of the worst channel) of each filter's pipeline (the bit-exact model, \
          which the rtl equals) against the ideal supersampled {n} × {n} a pixel through level 0 of the map in f64; \
-         {} pixels, {minified} of them minified (λ > {MINIFIED}).\n",
+         {} pixels, {minified} of them minified (λ > {MINIFIED}). Beside it, the same filter computed in f64 on \
+         the float MIP chain the unit's memory is loaded from (each level's texel the normalised mean of the four \
+         under it): the method's own error, without the texels' encoding or the datapath's widths.\n",
         ideal.rgb.len()
     );
-    let _ = writeln!(s, "| filter | pipeline | all pixels | minified (λ > {MINIFIED}) |");
-    let _ = writeln!(s, "| --- | --- | --- | --- |");
+    let _ = writeln!(
+        s,
+        "| filter | pipeline | all pixels | minified (λ > {MINIFIED}) | the filter in f64: all | in f64: minified |"
+    );
+    let _ = writeln!(s, "| --- | --- | --- | --- | --- | --- |");
     for l in lines {
         let _ = writeln!(
             s,
-            "| {} | {} | {:.3} / {:.1} | {:.3} / {:.1} |",
+            "| {} | {} | {:.3} / {:.1} | {:.3} / {:.1} | {:.3} / {:.1} | {:.3} / {:.1} |",
             l.filter.name(),
             l.pipeline,
             l.all.mean(),
             l.all.max,
             l.minified.mean(),
-            l.minified.max
+            l.minified.max,
+            l.method_all.mean(),
+            l.method_all.max,
+            l.method_minified.mean(),
+            l.method_minified.max
         );
     }
     // the same errors by band of λ: the share of the pixels in each, and each filter's mean there

@@ -32,6 +32,47 @@ pub struct Ideal {
     pub lambda: Vec<f64>,
     /// each pixel's place in the frame
     pub at: Vec<usize>,
+    /// each filter of `FILTERS` in f64 on the float MIP chain the unit's memory is loaded from (the method alone,
+    /// without the texels' encoding or the datapath's widths): the colour, pixel by pixel
+    pub method: [Vec<[f64; 3]>; 4],
+}
+
+/// The texel of a level of side `t` that holds the point x (texels of that level), repeating or clamped.
+fn nearest(x: f64, t: usize, wrap: bool) -> usize {
+    let i = x.floor() as i64;
+    if wrap {
+        i.rem_euclid(t as i64) as usize
+    } else {
+        i.clamp(0, t as i64 - 1) as usize
+    }
+}
+
+/// The filter's normal in f64 at the pixel's centre: on level 0, or on the level(s) λ (clamped to the chain) names.
+fn method(filter: Filter, chain: &[Vec<[f64; 3]>], t: usize, px: &crate::raster::Pixel, lambda: f64) -> [f64; 3] {
+    let last = chain.len() - 1;
+    let at = |k: usize| (px.pos[0] / (1u64 << k) as f64, px.pos[1] / (1u64 << k) as f64, t >> k);
+    let texel = |k: usize| {
+        let (x, y, side) = at(k);
+        chain[k][nearest(y, side, px.wrap[1]) * side + nearest(x, side, px.wrap[0])]
+    };
+    let bilinear = |k: usize| {
+        let (x, y, side) = at(k);
+        sample(&chain[k], side, x, y, px.wrap)
+    };
+    let l = lambda.clamp(0.0, last as f64);
+    match filter {
+        Filter::Nearest => texel(0),
+        Filter::NearestMip => texel(((l + 0.5).floor() as usize).min(last)),
+        Filter::Bilinear => bilinear(0),
+        Filter::Trilinear => {
+            let (k, f) = (l.floor() as usize, l - l.floor());
+            if k >= last {
+                return bilinear(last);
+            }
+            let (a, b) = (bilinear(k), bilinear(k + 1));
+            crate::surface::unit(std::array::from_fn(|c| a[c] + (b[c] - a[c]) * f))
+        }
+    }
 }
 
 /// Level 0 of the map read bilinearly in f64 at (x, y) in texels (texel centres at k + ½), each axis repeating or
@@ -63,7 +104,8 @@ pub fn ideal(scene: &Scene, n: usize) -> Ideal {
     let normals = scene.normals();
     let t = scene.tex;
     let frame = crate::raster::frame(scene, &normals);
-    let mut out = Ideal { rgb: vec![], lambda: vec![], at: vec![] };
+    let chain = crate::pipeline::mip_chain(&normals, t);
+    let mut out = Ideal { rgb: vec![], lambda: vec![], at: vec![], method: Default::default() };
     for px in &frame.pixels {
         let d = px.deriv; // du/dx, dv/dx, du/dy, dv/dy in texels of level 0
         let mut rgb = [0.0; 3];
@@ -78,6 +120,10 @@ pub fn ideal(scene: &Scene, n: usize) -> Ideal {
             }
         }
         let rho = (d[0] * d[0] + d[1] * d[1]).sqrt().max((d[2] * d[2] + d[3] * d[3]).sqrt());
+        for (k, (f, _)) in FILTERS.iter().enumerate() {
+            let n = method(*f, &chain, t, px, rho.log2());
+            out.method[k].push(scene.blend_ideal(gloss_shade(scene.conc, n, px.light)));
+        }
         out.rgb.push(rgb);
         out.lambda.push(rho.log2());
         out.at.push(px.at);
@@ -93,6 +139,9 @@ pub struct Line {
     pub minified: ErrorStats,
     /// by band of λ (`BANDS`)
     pub bands: Vec<ErrorStats>,
+    /// the filter in f64 (`Ideal::method`) against the same ideal, every pixel and the minified ones
+    pub method_all: ErrorStats,
+    pub method_minified: ErrorStats,
     /// the frame's colours, place by place (None off the surface)
     pub frame: Vec<Option<[u8; 3]>>,
     /// the worst channel's error against the ideal, place by place
@@ -108,7 +157,7 @@ pub fn measure(scene: &Scene, ideal: &Ideal) -> Result<Vec<Line>, String> {
         ));
     }
     let mut lines = vec![];
-    for (filter, name) in FILTERS {
+    for (i, (filter, name)) in FILTERS.into_iter().enumerate() {
         let row = pipelines::named(name).ok_or_else(|| format!("no pipeline {name}"))?;
         if !row.renders(scene) {
             return Err(format!("{name} cannot render this scene (the texture unit holds maps of side 1, 2, 4 … 128)"));
@@ -119,6 +168,7 @@ pub fn measure(scene: &Scene, ideal: &Ideal) -> Result<Vec<Line>, String> {
         assert_eq!(img.outs.len(), ideal.rgb.len(), "{name}: the pipeline's pixels and the ideal's");
         let (mut all, mut minified) = (ErrorStats::default(), ErrorStats::default());
         let mut bands = vec![ErrorStats::default(); BANDS.len()];
+        let (mut method_all, mut method_minified) = (ErrorStats::default(), ErrorStats::default());
         let size = scene.size;
         let (mut frame, mut error) = (vec![None; size * size], vec![None; size * size]);
         for (k, out) in img.outs.iter().enumerate() {
@@ -130,11 +180,16 @@ pub fn measure(scene: &Scene, ideal: &Ideal) -> Result<Vec<Line>, String> {
             if ideal.lambda[k] > MINIFIED {
                 minified.add(e, place);
             }
+            let m = (0..3).map(|c| (ideal.method[i][k][c] - ideal.rgb[k][c]).abs()).fold(0.0, f64::max);
+            method_all.add(m, place);
+            if ideal.lambda[k] > MINIFIED {
+                method_minified.add(m, place);
+            }
             let band = BANDS.iter().position(|&hi| ideal.lambda[k] <= hi).unwrap_or(BANDS.len() - 1);
             bands[band].add(e, place);
             (frame[at], error[at]) = (Some(c), Some(e));
         }
-        lines.push(Line { filter, pipeline: name, all, minified, bands, frame, error });
+        lines.push(Line { filter, pipeline: name, all, minified, bands, method_all, method_minified, frame, error });
     }
     Ok(lines)
 }

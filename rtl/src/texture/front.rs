@@ -321,6 +321,7 @@ pub mod trilinear {
                 self.fetch[k].clock.next = self.clock.val();
                 self.blend_dly[k].clock.next = self.clock.val();
                 self.addr[k].valid_in.next = self.lod.valid_out.val();
+                // the position that waited beside the LOD unit, unpacked: bit copies
                 self.addr[k].u.next = self.pos_dly.q.val().get_bits::<20>(0);
                 self.addr[k].v.next = self.pos_dly.q.val().get_bits::<20>(20);
                 self.addr[k].log_side.next = self.pos_dly.q.val().get_bits::<4>(40);
@@ -346,6 +347,7 @@ pub mod trilinear {
             for i in 0..4 {
                 self.filter[i].clock.next = self.clock.val();
             }
+            // each unit's blend factors (its level's, unpacked) and its byte of the four texels: bit copies
             self.filter[0].ublend.next = self.blend_dly[0].q.val().get_bits::<8>(0);
             self.filter[0].vblend.next = self.blend_dly[0].q.val().get_bits::<8>(8);
             self.filter[1].ublend.next = self.blend_dly[0].q.val().get_bits::<8>(0);
