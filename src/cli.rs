@@ -168,6 +168,10 @@ enum Cmd {
         /// samples a side of each pixel's ideal (n × n)
         #[arg(long, default_value_t = 4)]
         samples: usize,
+        /// the MIP filters' LOD bias, levels (a multiple of 1/256, −8 to 8 − 1/256); default: the scene's
+        /// (`[bump] lod_bias`, else 0). The table sweeps it besides
+        #[arg(long, allow_hyphen_values = true)]
+        lod_bias: Option<f64>,
     },
     /// The design knobs swept over scenes: each point's error against the scene's ideal (colour, shade, normal
     /// angle; for the Cartesian pipelines the shade's error split into encoding, method and datapath) beside its
@@ -352,7 +356,7 @@ pub fn main() -> Result<(), String> {
         Cmd::Minify { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: minify writes a table and pictures; name a folder".into())
         }
-        Cmd::Minify { scene, out, samples } => crate::minify::run(scene.as_deref(), &out, samples)?,
+        Cmd::Minify { scene, out, samples, lod_bias } => crate::minify::run(scene.as_deref(), &out, samples, lod_bias)?,
         Cmd::Hardcases => crate::unit_commands::hardcases()?,
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

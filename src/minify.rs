@@ -2,7 +2,8 @@
 //! MIP level, bilinear, trilinear) on one scene, the demo's torus by default, against a supersampled f64 ideal
 //! (`sim::minify`): the colour error over every pixel and over the minified ones, as a table (DIR/minify.md, and
 //! printed), and as pictures: the ideal, and each filter's frame beside its error heat map on one scale
-//! (DIR/minify_<filter>.png). The scene is read (or refused) before anything is written.
+//! (DIR/minify_<filter>.png); then the MIP filters over a sweep of LOD biases. The scene is read (or refused)
+//! before anything is written.
 
 use sim::minify::{self, Line, MINIFIED};
 use sim::render::{heat, write_png, BACKGROUND};
@@ -12,7 +13,7 @@ use std::path::Path;
 /// The heat maps' scale: an error of this many 8-bit LSB or more is white.
 pub const HEAT_MAX: f64 = 64.0;
 
-fn table(name: &str, n: usize, ideal: &minify::Ideal, lines: &[Line]) -> String {
+fn table(name: &str, n: usize, bias: f64, ideal: &minify::Ideal, lines: &[Line], swept: &[minify::Swept]) -> String {
     let minified = ideal.lambda.iter().filter(|&&l| l > MINIFIED).count();
     let mut s = String::new();
     let _ = writeln!(s, "# Minification: {name}\n");
@@ -22,7 +23,8 @@ fn table(name: &str, n: usize, ideal: &minify::Ideal, lines: &[Line]) -> String 
          which the rtl equals) against the ideal supersampled {n} × {n} a pixel through level 0 of the map in f64; \
          {} pixels, {minified} of them minified (λ > {MINIFIED}). Beside it, the same filter computed in f64 on \
          the float MIP chain the unit's memory is loaded from (each level's texel the normalised mean of the four \
-         under it): the method's own error, without the texels' encoding or the datapath's widths.\n",
+         under it): the method's own error, without the texels' encoding or the datapath's widths. The MIP filters \
+         read λ + {bias} (the LOD bias).\n",
         ideal.rgb.len()
     );
     let _ = writeln!(
@@ -69,10 +71,42 @@ fn table(name: &str, n: usize, ideal: &minify::Ideal, lines: &[Line]) -> String 
             100.0 * t / b.max(1e-12)
         );
     }
+    // the sweep: each MIP filter's minified mean at each bias, the pipeline's and the method's in f64
+    let mip: Vec<usize> = (0..minify::FILTERS.len()).filter(|&k| minify::FILTERS[k].0.front().mip()).collect();
+    let _ = writeln!(
+        s,
+        "\nThe MIP filters' mean error on the minified pixels by LOD bias (the pipeline / the filter in f64). The \
+         isotropic rule's λ, read through trilinear's kernel (a level's texel, a box 2^λ texels wide, under \
+         bilinear's tent as wide), blurs more than the pixel's own footprint; a negative bias trades that blur for \
+         aliasing.\n"
+    );
+    let heads: Vec<&str> = mip.iter().map(|&k| minify::FILTERS[k].0.name()).collect();
+    let _ = writeln!(s, "| bias | {} |", heads.join(" | "));
+    let _ = writeln!(s, "| --- |{}", " --- |".repeat(heads.len()));
+    for w in swept {
+        let cells: Vec<String> = mip
+            .iter()
+            .map(|&k| format!("{:.3} / {:.3}", w.hardware[k].unwrap_or(f64::NAN), w.method[k].unwrap_or(f64::NAN)))
+            .collect();
+        let _ = writeln!(s, "| {} | {} |", w.bias, cells.join(" | "));
+    }
+    let tri = minify::FILTERS.iter().position(|f| f.0 == sim::pipelines::Filter::Trilinear);
+    let best = tri.and_then(|k| {
+        swept.iter().filter_map(|w| w.hardware[k].map(|e| (w.bias, e))).min_by(|a, b| a.1.total_cmp(&b.1))
+    });
+    if let (Some((bias, t)), Some(b)) = (best, by(sim::pipelines::Filter::Bilinear)) {
+        let _ = writeln!(
+            s,
+            "\nTrilinear's best bias of the sweep is {bias}: {t:.3} LSB on the minified pixels against bilinear's \
+             {b:.3}, {:.1} % of it ({:.1} % less).",
+            100.0 * t / b.max(1e-12),
+            100.0 * (1.0 - t / b.max(1e-12))
+        );
+    }
     s
 }
 
-pub fn run(path: Option<&Path>, out: &Path, samples: usize) -> Result<(), String> {
+pub fn run(path: Option<&Path>, out: &Path, samples: usize, bias: Option<f64>) -> Result<(), String> {
     if !(1..=16).contains(&samples) {
         return Err(format!("--samples {samples}: 1 to 16 a side"));
     }
@@ -80,12 +114,18 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize) -> Result<(), String
         Some(p) => sim::scene_file::load(p)?,
         None => sim::scene_file::demo()?,
     };
-    let scene = &spec.scene;
+    let mut scene = spec.scene.clone();
+    if let Some(b) = bias {
+        scene.lod_bias = sim::scene_file::LodBias::try_from(b).map_err(|e| format!("--lod-bias {b}: {e}"))?.0;
+    }
+    let scene = &scene;
     let ideal = minify::ideal(scene, samples);
-    let lines = minify::measure(scene, &ideal).map_err(|e| match path {
+    let named = |e: String| match path {
         Some(p) => format!("{}: {e}", p.display()),
         None => e,
-    })?;
+    };
+    let lines = minify::measure(scene, &ideal).map_err(named)?;
+    let swept = minify::sweep(scene, &ideal).map_err(named)?;
     crate::output::writable_folder(out)?;
     let size = scene.size;
     let mut ideal_at = vec![None; size * size];
@@ -103,7 +143,7 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize) -> Result<(), String
         }
         sim::render::save_png(&out.join(format!("minify_{}.png", l.filter.name())), &img)?;
     }
-    let text = table(&spec.name, samples, &ideal, &lines);
+    let text = table(&spec.name, samples, scene.lod_bias, &ideal, &lines, &swept);
     let md = out.join("minify.md");
     let tmp = md.with_extension("md.partial");
     std::fs::write(&tmp, &text)

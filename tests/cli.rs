@@ -831,4 +831,13 @@ fn minify_measures_every_filter_of_the_texture_unit_and_refuses_a_glossy_scene()
     assert_eq!(code, 1);
     assert!(err.lines().count() == 1 && err.contains("glossy.toml") && err.contains("gloss is 40"), "{err}");
     assert!(!none.exists());
+    // the MIP filters swept over LOD biases; a bias past the LOD unit's Sq3.8 refused in one line, nothing written
+    assert!(text.contains("| bias | nearest_mip | trilinear |") && text.contains("| -1.25 | "), "{text}");
+    assert!(text.contains("Trilinear's best bias of the sweep is"), "{text}");
+    for bad in ["8", "-8.5", "0.001"] {
+        let (code, _, err) = bumprtl(&["minify", "--lod-bias", bad, "--out", none.to_str().unwrap()]);
+        assert_eq!(code, 1, "{bad}");
+        assert!(err.lines().count() == 1 && err.contains(&format!("--lod-bias {bad}")), "{bad}: {err}");
+        assert!(!none.exists());
+    }
 }

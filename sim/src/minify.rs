@@ -3,7 +3,8 @@
 //! the screen derivatives of its position, on a regular grid), each sample the map's level 0 read bilinearly in f64
 //! at that point, made unit length and lit by the pixel's light as the pipelines' ideal is. Against it, the colour
 //! each filter's pipeline gives (the bit-exact model, which the rtl equals), over every pixel and over the minified
-//! ones, where λ = log2 ρ of the pixel's own derivatives is above ½ (the nearest level is no longer level 0).
+//! ones, where λ = log2 ρ of the pixel's own derivatives is above ½ (the nearest level is no longer level 0). The
+//! MIP filters read λ plus the scene's LOD bias; `sweep` measures them over a range of biases.
 
 use crate::pipeline::{build, gloss_shade, Pipeline};
 use crate::pipelines::{self, Filter, Settings};
@@ -46,6 +47,9 @@ fn nearest(x: f64, t: usize, wrap: bool) -> usize {
         i.clamp(0, t as i64 - 1) as usize
     }
 }
+
+/// The LOD biases `sweep` measures the MIP filters at, levels.
+pub const SWEEP: [f64; 7] = [0.0, -0.25, -0.5, -0.75, -1.0, -1.25, -1.5];
 
 /// The filter's normal in f64 at the pixel's centre: on level 0, or on the level(s) λ (clamped to the chain) names.
 fn method(filter: Filter, chain: &[Vec<[f64; 3]>], t: usize, px: &crate::raster::Pixel, lambda: f64) -> [f64; 3] {
@@ -120,15 +124,63 @@ pub fn ideal(scene: &Scene, n: usize) -> Ideal {
             }
         }
         let rho = (d[0] * d[0] + d[1] * d[1]).sqrt().max((d[2] * d[2] + d[3] * d[3]).sqrt());
-        for (k, (f, _)) in FILTERS.iter().enumerate() {
-            let n = method(*f, &chain, t, px, rho.log2());
-            out.method[k].push(scene.blend_ideal(gloss_shade(scene.conc, n, px.light)));
-        }
         out.rgb.push(rgb);
         out.lambda.push(rho.log2());
         out.at.push(px.at);
     }
+    out.method = methods(scene, &frame, &chain);
     out
+}
+
+/// Each filter of `FILTERS` in f64 on the float chain, pixel by pixel, the MIP filters at λ plus the scene's bias.
+fn methods(scene: &Scene, frame: &crate::raster::Frame, chain: &[Vec<[f64; 3]>]) -> [Vec<[f64; 3]>; 4] {
+    std::array::from_fn(|k| {
+        let f = FILTERS[k].0;
+        let bias = if f.front().mip() { scene.lod_bias } else { 0.0 };
+        frame
+            .pixels
+            .iter()
+            .map(|px| {
+                let d = px.deriv;
+                let rho = (d[0] * d[0] + d[1] * d[1]).sqrt().max((d[2] * d[2] + d[3] * d[3]).sqrt());
+                let n = method(f, chain, scene.tex, px, rho.log2() + bias);
+                scene.blend_ideal(gloss_shade(scene.conc, n, px.light))
+            })
+            .collect()
+    })
+}
+
+/// One bias of the sweep: the MIP filters' mean error on the minified pixels, the pipeline's and the f64 method's,
+/// in `FILTERS`' order (None for the filters without a level of detail).
+pub struct Swept {
+    pub bias: f64,
+    pub hardware: [Option<f64>; 4],
+    pub method: [Option<f64>; 4],
+}
+
+/// The MIP filters at each bias of `SWEEP`, against the same supersampled ideal (`ideal`, made for `scene`).
+pub fn sweep(scene: &Scene, ideal: &Ideal) -> Result<Vec<Swept>, String> {
+    let normals = scene.normals();
+    let frame = crate::raster::frame(scene, &normals);
+    let chain = crate::pipeline::mip_chain(&normals, scene.tex);
+    let mip: Vec<usize> = (0..FILTERS.len()).filter(|&k| FILTERS[k].0.front().mip()).collect();
+    let mut out = vec![];
+    for bias in SWEEP {
+        let biased = Scene { lod_bias: bias, ..scene.clone() };
+        let at = Ideal {
+            rgb: ideal.rgb.clone(),
+            lambda: ideal.lambda.clone(),
+            at: ideal.at.clone(),
+            method: methods(&biased, &frame, &chain),
+        };
+        let lines = measure_only(&biased, &at, &mip)?;
+        let (mut hardware, mut method) = ([None; 4], [None; 4]);
+        for (l, &k) in lines.iter().zip(&mip) {
+            (hardware[k], method[k]) = (Some(l.minified.mean()), Some(l.method_minified.mean()));
+        }
+        out.push(Swept { bias, hardware, method });
+    }
+    Ok(out)
 }
 
 /// One filter's colour error against the supersampled ideal.
@@ -150,6 +202,11 @@ pub struct Line {
 
 /// Every filter of `FILTERS` on the scene (its gloss must be 0: the filters' pipelines are matte) against `ideal`.
 pub fn measure(scene: &Scene, ideal: &Ideal) -> Result<Vec<Line>, String> {
+    measure_only(scene, ideal, &[0, 1, 2, 3])
+}
+
+/// The filters `FILTERS[k]` for each k of `which`, as `measure`.
+pub fn measure_only(scene: &Scene, ideal: &Ideal, which: &[usize]) -> Result<Vec<Line>, String> {
     if scene.conc != 0 {
         return Err(format!(
             "the minification table runs the matte pipelines: the scene's gloss is {}, not 0",
@@ -157,7 +214,8 @@ pub fn measure(scene: &Scene, ideal: &Ideal) -> Result<Vec<Line>, String> {
         ));
     }
     let mut lines = vec![];
-    for (i, (filter, name)) in FILTERS.into_iter().enumerate() {
+    for &i in which {
+        let (filter, name) = FILTERS[i];
         let row = pipelines::named(name).ok_or_else(|| format!("no pipeline {name}"))?;
         if !row.renders(scene) {
             return Err(format!("{name} cannot render this scene (the texture unit holds maps of side 1, 2, 4 … 128)"));

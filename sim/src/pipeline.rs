@@ -394,6 +394,7 @@ impl Pipeline for CartTex {
             // the position truncated to 1/256 texel, as the host-fed path truncates its blend factors
             let uv = [floor8(pos[0], 20), floor8(pos[1], 20)];
             front::put_read(&mut v, &at, uv, log_side, px.wrap, px.deriv.map(|d| fixed8(d, 17)));
+            front::put_bias(&mut v, &at, (scene.lod_bias * 256.0) as i64); // a multiple of 1/256 (the scene file's)
             inputs.push(v);
         }
         Prepared { size: host.size, inputs, prologue, ideal: host.ideal, at: host.at }

@@ -30,6 +30,9 @@ pub struct Scene {
     /// A sphere or a torus in place of the quad; `light_pos` is then a point of the world (y up, the object at the
     /// origin, radius 1).
     pub curved: Option<Curved>,
+    /// The texture unit's LOD bias, levels (a multiple of 1/256, the LOD unit's Sq3.8): what a MIP filter adds to
+    /// λ = log2 ρ before it picks its levels. 0: the isotropic rule as it is.
+    pub lod_bias: f64,
 }
 
 /// A curved surface, how finely it is cut, how it is seen and how often the map repeats round it.
@@ -58,6 +61,7 @@ impl Default for Scene {
             directional: None,
             per_surface: false,
             curved: None,
+            lod_bias: 0.0,
         }
     }
 }

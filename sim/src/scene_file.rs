@@ -24,6 +24,9 @@
 //! # green = "opengl"              # normal_map: opengl (green up the image) | directx (green down)
 //! encoding = "seed"               # seed | hemi_oct | polar | polar_dc255 | heights | palette
 //! # palette = 256                 # palette: s_N, 1 to 4,096
+//! # filter = "bilinear"           # seed, hemi_oct: nearest | nearest_mip | bilinear | trilinear
+//! # lod_bias = -1.0               # nearest_mip, trilinear: levels added to λ, −8 to 8 − 1/256 in 1/256
+//! # fetch = "unit"                # seed, hemi_oct: unit (the texture unit's memory) | host
 //!
 //! [light]
 //! kind = "point"                  # point | directional
@@ -118,6 +121,22 @@ impl TryFrom<f64> for Relief {
         let v = finite_in(v, 0.0, 1024.0, "the relief (texels)")?;
         if v == 0.0 {
             return Err("the relief must be above 0: a flat map has no bumps to shade".into());
+        }
+        Ok(Self(v))
+    }
+}
+
+/// The texture unit's LOD bias, levels, a multiple of 1/256 in −8 … 8 − 1/256 (the LOD unit's Sq3.8 port).
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "f64")]
+pub struct LodBias(pub f64);
+
+impl TryFrom<f64> for LodBias {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        let v = finite_in(v, -8.0, 8.0 - 1.0 / 256.0, "the LOD bias (levels)")?;
+        if (v * 256.0).fract() != 0.0 {
+            return Err(format!("the LOD bias is a multiple of 1/256 of a level (the LOD unit's Sq3.8), not {v}"));
         }
         Ok(Self(v))
     }
@@ -286,6 +305,7 @@ pub struct BumpSpec {
     pub encoding: Option<Spanned<Encoding>>,
     pub palette: Option<Spanned<PaletteSize>>,
     pub filter: Option<Spanned<Filter>>,
+    pub lod_bias: Option<Spanned<LodBias>>,
     pub fetch: Option<Spanned<Fetch>>,
 }
 
@@ -582,6 +602,18 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                 filter.name()
             ),
         ));
+    }
+    if let Some(b) = &bump.lod_bias {
+        if !filter.front().mip() {
+            return Err(at.err(
+                b.span(),
+                format!(
+                    "[bump] lod_bias: only a MIP filter (nearest_mip, trilinear) reads a level of detail; filter = \"{}\"",
+                    filter.name()
+                ),
+            ));
+        }
+        scene.lod_bias = b.get_ref().0;
     }
     if fetch.is_some() && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
         return Err(at.err(

@@ -259,6 +259,19 @@ fn bad_scene_text_is_one_line_at_its_line_and_column() {
         "s.toml:5:11:",
         &["1 to 4096"],
     );
+    // the LOD bias: past the LOD unit's Sq3.8, off its 1/256 grid, and on a filter that reads no level of detail
+    let mip = "size = 64\n[bump]\nsource = \"procedural\"\nfilter = \"trilinear\"\n[material]\ngloss = 0\n";
+    let biased =
+        |b: &str| mip.replace("filter = \"trilinear\"\n", &format!("filter = \"trilinear\"\nlod_bias = {b}\n"));
+    assert_eq!(parse(&biased("-1.25")).unwrap().scene.lod_bias, -1.25);
+    assert_eq!(parse(mip).unwrap().scene.lod_bias, 0.0);
+    refused(&biased("8.0"), "s.toml:5:12:", &["LOD bias", "-8 to 7.99609375", "not 8"]);
+    refused(&biased("0.001"), "s.toml:5:12:", &["multiple of 1/256"]);
+    refused(
+        "size = 64\n[bump]\nsource = \"procedural\"\nlod_bias = -1.0\n",
+        "s.toml:4:12:",
+        &["only a MIP filter", "filter = \"bilinear\""],
+    );
 }
 
 /// A PNG written under the test folder.

@@ -84,8 +84,12 @@ pub const WAIVED: &[Waived] = &[
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),
     w("Lod", "s6_addr.d", Split, "the table's address: the 8 bits below m's leading one once the shift has put it at bit 24; \
         the leading one itself is dropped on purpose, the bits below bit 16 truncated"),
-    w("Lod", "w_frac", Split, "frac(λ) in 8 bits: λ's bits 9..2 (Uq4.10), the integer part above them read apart (w_int), \
+    w("Lod", "w_frac", Split, "frac(λ) in 8 bits: λ's bits 9..2 (Sq5.10), the integer part above them read apart (w_int), \
         the two lowest bits truncated"),
+    w("Lod", "w_int", Split, "⌊λ⌋: bits 14..10 of the Sq5.10 λ, read only when its sign (bit 15) is clear, where they are \
+        0 ..= 16; a negative λ reads level 0 on the sign instead"),
+    w("Lod", "w_near", Split, "⌊λ + ½⌋: bits 14..10 of λ + 2^9, read only when λ's sign is clear, where they are 0 ..= 16; \
+        a negative λ reads level 0 on the sign instead"),
     w("CartSurface", "dot.l_x", Split, "a 12-bit field of the light word (x, y, z packed in one RAM word), read back as the Sq1.10 it was"),
     w("CartSurface", "dot.l_y", Split, "a field of the packed light word, as in CartSurface"),
     w("CartSurface", "dot.l_z", Split, "a field of the packed light word, as in CartSurface"),

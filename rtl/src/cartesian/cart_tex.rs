@@ -42,7 +42,7 @@ cartesian_pipeline! {
     unit: "cart_tex_nearest_mip_matte",
     decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
     texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
-    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy] },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
 }
 
@@ -52,6 +52,6 @@ cartesian_pipeline! {
     unit: "cart_tex_trilinear_matte",
     decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
     texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
-    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy] },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
 }

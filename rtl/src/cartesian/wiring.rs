@@ -25,7 +25,7 @@ macro_rules! cartesian_pipeline {
         $(, filter: { units: $fl:ident, valid: $flv:ident, u: $ub:ident, v: $vb:ident })?
         $(, nearest: { x: $nx:ident, z: $nz:ident })?
         $(, texture: { block: $txb:ident, module: $txm:ident, u: $pu:ident, v: $pv:ident })?
-        $(, mip: { derivatives: [$($dd:ident),*] })?
+        $(, mip: { derivatives: [$($dd:ident),*], bias: $lb:ident })?
         $(, vertex: { iter: $li:ident, norm: $ln:ident, delay: $lvd:ident, w1: $w1:ident, w2: $w2:ident })?
         $(, surface: { x: $lx:ident, y: $ly:ident, z: $lz:ident, word: $lw:ident, delay: $lsd:ident, addr_bits: $lab:tt })?
         $(, gloss: { unit: $gl:ident, c: $conc:ident, delay: $cd:ident })?
@@ -38,7 +38,7 @@ use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightI
 #[allow(unused_imports)]
 use crate::texture::front::{TexBilinear, TexNearest, TexNearestMip, TexTrilinear};
 #[allow(unused_imports)]
-use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq11_8, Sq7_2, Sq8_8, Sq9_0, U16, U8}, ram_delay::RamDelay}};
+use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq11_8, Sq3_8, Sq7_2, Sq8_8, Sq9_0, U16, U8}, ram_delay::RamDelay}};
 
 /// Cycles from the pipeline's input to each unit's input.
 // a group's term below is there when the invocation names the group (`0 * stringify!(..).len()` only ties it to it)
@@ -77,7 +77,7 @@ crate::stream_block! {
             wx: U8,
             wy: U8,
             wdata: U16,)?
-            $($($dd: Sq8_8,)*)?
+            $($($dd: Sq8_8,)* $lb: Sq3_8,)?
             $(l0_x: S8,
             l0_y: S8,
             l0_z: S8,
@@ -174,7 +174,7 @@ impl Logic for $t {
         self.decode.valid_in.next = self.texture.valid_out.val();
         self.decode.$tu.next = self.texture.lo.val();
         self.decode.$tv.next = self.texture.hi.val();)?
-        $($(self.texture.$dd.next = self.$dd.val();)*)?
+        $($(self.texture.$dd.next = self.$dd.val();)* self.texture.lod_bias.next = self.$lb.val();)?
         // normalise the bump: INT9 → S10 by sign extension, UINT8 → S10 by zero extension
         self.bump_x10.next = bit_cast::<10, 9>(self.decode.bump_x.val());
         if self.decode.bump_x.val().get_bit(8) {

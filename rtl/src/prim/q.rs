@@ -56,6 +56,10 @@ q_types! {
     Uq0_9 = Bits<9>;
     /// A level of detail λ, ten fraction bits.
     Uq4_10 = Bits<14>;
+    /// A level of detail with its sign: log2 ρ (below 0 for a magnified pixel) plus a bias.
+    Sq5_10 = Bits<16>;
+    /// A LOD bias, levels: −8 .. 8 − 1/256.
+    Sq3_8 = Bits<12>;
 }
 
 /// A two's complement integer of a width a block takes as a parameter (`SmMul<N>`'s operand).
@@ -77,6 +81,7 @@ mod tests {
         assert_eq!(Uq0_10::BITS, 10);
         assert_eq!(Uq6_3::BITS, 6 + 3);
         assert_eq!(Uq1_12::BITS, 1 + 12);
+        assert_eq!((Sq5_10::BITS, Sq3_8::BITS), (1 + 5 + 10, 1 + 3 + 8));
         assert_eq!((U8::BITS, U16::BITS, S8::BITS, S9::BITS, S11::BITS), (8, 16, 8, 9, 11));
     }
 }

@@ -30,7 +30,7 @@ macro_rules! texture_front {
     ) => {
 pub mod $m {
 #[allow(unused_imports)] // each front holds some of these
-use crate::prim::{delay::Delay, q::{Sq11_8, Sq8_8, U16, U8}, ram_delay::RamDelay};
+use crate::prim::{delay::Delay, q::{Sq11_8, Sq3_8, Sq8_8, U16, U8}, ram_delay::RamDelay};
 #[allow(unused_imports)]
 use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr, tex_fetch::TexFetch};
 use rust_hdl::prelude::*;
@@ -53,6 +53,7 @@ crate::block! {
         pub dv_dx: Signal<In, Sq8_8>,
         pub du_dy: Signal<In, Sq8_8>,
         pub dv_dy: Signal<In, Sq8_8>,
+        pub lod_bias: Signal<In, Sq3_8>,
         $pd: RamDelay<46, 4, { crate::lod::LATENCY }>, // (u, v, log_side, uwrap, vwrap) packed low to high
         pos_word: Signal<Local, Bits<46>>,
         pub $lod: Lod,)?
@@ -100,6 +101,7 @@ impl Logic for $t {
         self.$lod.du_dy.next = self.du_dy.val();
         self.$lod.dv_dy.next = self.dv_dy.val();
         self.$lod.log_side.next = self.log_side.val();
+        self.$lod.bias.next = self.lod_bias.val();
         self.pos_word.next = bit_cast::<46, 20>(self.u.val());
         self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 20>(self.v.val()) << 20);
         self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 4>(self.log_side.val()) << 40);
@@ -207,7 +209,7 @@ texture_front! {
 /// `vectors::front::lerp`). Ports as `TexNearestMip`'s.
 pub mod trilinear {
     use crate::prim::delay::Delay;
-    use crate::prim::q::{SBits, Sq11_8, Sq8_8, U16, U8};
+    use crate::prim::q::{SBits, Sq11_8, Sq3_8, Sq8_8, U16, U8};
     use crate::prim::ram_delay::RamDelay;
     use crate::prim::sm_mul::{self, SmMul};
     use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr, tex_fetch::TexFetch};
@@ -232,6 +234,7 @@ pub mod trilinear {
             pub dv_dx: Signal<In, Sq8_8>,
             pub du_dy: Signal<In, Sq8_8>,
             pub dv_dy: Signal<In, Sq8_8>,
+            pub lod_bias: Signal<In, Sq3_8>,
             pub log_side: Signal<In, Bits<4>>,
             pub uwrap: Signal<In, Bits<1>>,
             pub vwrap: Signal<In, Bits<1>>,
@@ -299,6 +302,7 @@ pub mod trilinear {
             self.lod.du_dy.next = self.du_dy.val();
             self.lod.dv_dy.next = self.dv_dy.val();
             self.lod.log_side.next = self.log_side.val();
+            self.lod.bias.next = self.lod_bias.val();
             self.pos_word.next = bit_cast::<46, 20>(self.u.val());
             self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 20>(self.v.val()) << 20);
             self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 4>(self.log_side.val()) << 40);

@@ -1,14 +1,15 @@
-//! `lod`: the texture unit's level of detail, OpenGL's isotropic rule: from the four screen derivatives of u and v
-//! (Sq8.8, texels of level 0 a pixel) and the map's side 2^n, the level ⌊λ⌋, frac(λ) in 8 bits and the nearest
-//! level ⌊λ + ½⌋, λ = log2 ρ clamped to [0, n]; see `vectors::lod` for the exact recipe. ρ² comes from four
-//! squarers, log2 from the leading one of ρ² and a 256-entry table of its next 8 bits. Latency 12: magnitudes; their
-//! saturation to U16; the squarers' operand register; the squares; the two sums; their comparison; the larger; the
-//! leading one; the normalising shift; the table (its read register); λ; the clamps. (With the comparison and the
+//! `lod`: the texture unit's level of detail, OpenGL's isotropic rule with a LOD bias: from the four screen
+//! derivatives of u and v (Sq8.8, texels of level 0 a pixel), the map's side 2^n and the bias (Sq3.8, levels), the
+//! level ⌊λ⌋, frac(λ) in 8 bits and the nearest level ⌊λ + ½⌋, λ = log2 ρ + bias clamped to [0, n]; see
+//! `vectors::lod` for the exact recipe. ρ² comes from four squarers, log2 from the leading one of ρ² and a 256-entry
+//! table of its next 8 bits. Latency 12: magnitudes; their saturation to U16; the squarers' operand register; the
+//! squares; the two sums; their comparison; the larger; the leading one; the normalising shift; the table (its read
+//! register) beside the exponent plus the bias; λ; the clamps. (With the comparison and the
 //! choice in one stage on 33-bit sums, the UP5K placed the unit at 41.5 MHz, that path the critical one; with the
 //! negation and the saturation in one stage, 44.6 MHz.)
 
 use crate::prim::delay::Delay;
-use crate::prim::q::{Sq8_8, Uq0_9, Uq4_10, U16, U8};
+use crate::prim::q::{Sq3_8, Sq5_10, Sq8_8, Uq0_9, U16, U8};
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
@@ -54,6 +55,7 @@ crate::stream_block! {
             du_dy: Sq8_8,
             dv_dy: Sq8_8,
             log_side: Bits<4>,
+            bias: Sq3_8,
         }
         out {
             level: Bits<4>,
@@ -78,39 +80,43 @@ crate::stream_block! {
         s4_ly: DFF<Bits<25>>,
         // stage 4b: m = max(L_x, L_y) ≈ ρ²·2^8
         s4b_m: DFF<Bits<25>>,
-        // stage 5: the shift that puts m's leading one at bit 24 (0..16), p − 8 = 16 − shift (the integer part
-        // of 2λ), and whether m ≥ 2^8 (λ ≥ 0)
+        // stage 5: the shift that puts m's leading one at bit 24 (0..24), e = p − 8 (−8..16, two's complement: the
+        // integer part of 2λ before the bias), and whether m ≠ 0 (λ > −∞)
         s5_sh: DFF<Bits<5>>,
-        s5_e: DFF<Bits<5>>,
+        s5_e: DFF<Bits<6>>,
         s5_m: DFF<Bits<25>>,
         s5_big: DFF<Bit>,
-        // stage 6: the table's address (the 8 bits below the leading one) and p − 8
+        // stage 6: the table's address (the 8 bits below the leading one) and e
         s6_addr: DFF<U8>,
-        s6_e: DFF<Bits<5>>,
+        s6_e: DFF<Bits<6>>,
         s6_big: DFF<Bit>,
-        // stage 7: the table entry (log2 of the mantissa, Uq0.9)
+        // stage 7: the table entry (log2 of the mantissa, Uq0.9), and (e << 9) + (bias << 2) (Sq5.10)
         s7_t: DFF<Uq0_9>,
-        s7_e: DFF<Bits<5>>,
+        s7_eb: DFF<Sq5_10>,
         s7_big: DFF<Bit>,
-        // stage 8: λ·2^10 = (e << 9) + T (Uq4.10)
-        s8_l: DFF<Uq4_10>,
+        // stage 8: λ·2^10 = (e << 9) + T + (bias << 2) (Sq5.10)
+        s8_l: DFF<Sq5_10>,
         s8_big: DFF<Bit>,
         // stage 9: the clamped outputs
         s9_level: DFF<Bits<4>>,
         s9_frac: DFF<U8>,
         s9_near: DFF<Bits<4>>,
         n_dly: Delay<Bits<4>, 11>, // log_side beside the stages up to λ
+        b_dly: Delay<Sq3_8, 9>, // the bias beside the stages up to the table's address
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
         w_mag: [Signal<Local, Bits<17>>; 4],
         w_sq: [Signal<Local, Bits<32>>; 4],
         w_norm: Signal<Local, Bits<25>>,
-        w_e14: Signal<Local, Uq4_10>,
-        w_es: Signal<Local, Uq4_10>,
-        w_t14: Signal<Local, Uq4_10>,
-        w_int: Signal<Local, Bits<4>>,
+        w_e16: Signal<Local, Sq5_10>,
+        w_es: Signal<Local, Sq5_10>,
+        w_b16: Signal<Local, Sq5_10>,
+        w_bs: Signal<Local, Sq5_10>,
+        w_t16: Signal<Local, Sq5_10>,
+        w_n5: Signal<Local, Bits<5>>,
+        w_int: Signal<Local, Bits<5>>,
         w_frac: Signal<Local, U8>,
-        w_round: Signal<Local, Uq4_10>,
-        w_near: Signal<Local, Bits<4>>,
+        w_round: Signal<Local, Sq5_10>,
+        w_near: Signal<Local, Bits<5>>,
     }
 }
 
@@ -119,11 +125,12 @@ impl Logic for Lod {
     fn update(&mut self) {
         dff_setup!(
             self, clock, s3_lx, s3_ly, s4_gt, s4_lx, s4_ly, s4b_m, s5_sh, s5_e, s5_m, s5_big, s6_addr, s6_e, s6_big,
-            s7_t, s7_e, s7_big, s8_l, s8_big, s9_level, s9_frac, s9_near
+            s7_t, s7_eb, s7_big, s8_l, s8_big, s9_level, s9_frac, s9_near
         );
-        clock!(self, clock, n_dly, valid);
+        clock!(self, clock, n_dly, b_dly, valid);
         self.valid.d.next = self.valid_in.val();
         self.n_dly.d.next = self.log_side.val();
+        self.b_dly.d.next = self.bias.val();
         for i in 0..4 {
             self.s1_m[i].clock.next = self.clock.val();
             self.s1_a[i].clock.next = self.clock.val();
@@ -174,8 +181,8 @@ impl Logic for Lod {
         } else {
             self.s4b_m.d.next = self.s4_ly.q.val();
         }
-        // stage 5: the leading one of m among bits 24 ..= 8 (below 2^8, ρ < 1: no level above 0 to find); each
-        // branch writes the shift and p − 8 as constants
+        // stage 5: the leading one of m among bits 24 ..= 0 (none: m = 0, λ = −∞); each branch writes the shift and
+        // e = p − 8 as constants (e two's complement in 6 bits: −8 is 56)
         self.s5_m.d.next = self.s4b_m.q.val();
         self.s5_big.d.next = true;
         if self.s4b_m.q.val().get_bit(24) {
@@ -229,6 +236,30 @@ impl Logic for Lod {
         } else if self.s4b_m.q.val().get_bit(8) {
             self.s5_sh.d.next = 16.into();
             self.s5_e.d.next = 0.into();
+        } else if self.s4b_m.q.val().get_bit(7) {
+            self.s5_sh.d.next = 17.into();
+            self.s5_e.d.next = 63.into(); // -1
+        } else if self.s4b_m.q.val().get_bit(6) {
+            self.s5_sh.d.next = 18.into();
+            self.s5_e.d.next = 62.into(); // -2
+        } else if self.s4b_m.q.val().get_bit(5) {
+            self.s5_sh.d.next = 19.into();
+            self.s5_e.d.next = 61.into(); // -3
+        } else if self.s4b_m.q.val().get_bit(4) {
+            self.s5_sh.d.next = 20.into();
+            self.s5_e.d.next = 60.into(); // -4
+        } else if self.s4b_m.q.val().get_bit(3) {
+            self.s5_sh.d.next = 21.into();
+            self.s5_e.d.next = 59.into(); // -5
+        } else if self.s4b_m.q.val().get_bit(2) {
+            self.s5_sh.d.next = 22.into();
+            self.s5_e.d.next = 58.into(); // -6
+        } else if self.s4b_m.q.val().get_bit(1) {
+            self.s5_sh.d.next = 23.into();
+            self.s5_e.d.next = 57.into(); // -7
+        } else if self.s4b_m.q.val().get_bit(0) {
+            self.s5_sh.d.next = 24.into();
+            self.s5_e.d.next = 56.into(); // -8
         } else {
             self.s5_sh.d.next = 0.into();
             self.s5_e.d.next = 0.into();
@@ -240,39 +271,48 @@ impl Logic for Lod {
         self.s6_addr.d.next = self.w_norm.val().get_bits::<8>(16); // bits 23..16: the mantissa, truncated to 8 bits
         self.s6_e.d.next = self.s5_e.q.val();
         self.s6_big.d.next = self.s5_big.q.val();
-        // stage 7: the table
+        // stage 7: the table; beside it (e << 9) + (bias << 2), each sign-extended to 16 bits by an OR on its sign
         self.log2.address.next = self.s6_addr.q.val();
         self.s7_t.d.next = self.log2.data.val();
-        self.s7_e.d.next = self.s6_e.q.val();
+        self.w_e16.next = bit_cast::<16, 6>(self.s6_e.q.val()); // e's six bits, the sign extended below
+        if self.s6_e.q.val().get_bit(5) {
+            self.w_e16.next = bit_cast::<16, 6>(self.s6_e.q.val()) | 0xffc0; // S6 → S16, exact
+        }
+        self.w_es.next = self.w_e16.val() << 9; // e·512, −4,096 ..= 8,192: S16, exact
+        self.w_b16.next = bit_cast::<16, 12>(self.b_dly.q.val()); // the bias's twelve bits, the sign extended below
+        if self.b_dly.q.val().get_bit(11) {
+            self.w_b16.next = bit_cast::<16, 12>(self.b_dly.q.val()) | 0xf000; // S12 → S16, exact
+        }
+        self.w_bs.next = self.w_b16.val() << 2; // bias·4, −8,192 ..= 8,188: S16, exact
+        self.s7_eb.d.next = self.w_es.val() + self.w_bs.val(); // −12,288 ..= 16,380: S16, exact (modulo 2^16)
         self.s7_big.d.next = self.s6_big.q.val();
-        // stage 8: λ·2^10 = (e << 9) + T ≤ 16·512 + 511 (U14, exact)
-        self.w_e14.next = bit_cast::<14, 5>(self.s7_e.q.val()); // U5 widened to U14, exact (≤ 16)
-        self.w_es.next = self.w_e14.val() << 9; // U14, e ≤ 16: ≤ 8,192
-        self.w_t14.next = bit_cast::<14, 9>(self.s7_t.q.val()); // U9 widened to U14, exact
-        self.s8_l.d.next = self.w_es.val() + self.w_t14.val(); // U14, ≤ 8,703
+        // stage 8: λ·2^10 = (e << 9) + (bias << 2) + T, −12,288 ..= 16,891: S16, exact (modulo 2^16)
+        self.w_t16.next = bit_cast::<16, 9>(self.s7_t.q.val()); // U9 widened to S16, exact
+        self.s8_l.d.next = self.s7_eb.q.val() + self.w_t16.val(); // Sq5.10, exact (see above)
         self.s8_big.d.next = self.s7_big.q.val();
-        // stage 9: ⌊λ⌋ (bits 13..10, ≤ 8), frac(λ) to 8 bits (bits 9..2, truncated), ⌊λ + ½⌋ (rounded half up: U14,
-        // ≤ 9,215), each clamped to the last level n; λ < 0 reads level 0
-        self.w_int.next = self.s8_l.q.val().get_bits::<4>(10); // λ >> 10: the integer part, ≤ 8
+        // stage 9: λ < 0 (its sign, bit 15) or m = 0 reads level 0; else ⌊λ⌋ (bits 14..10, ≤ 16), frac(λ) to 8 bits
+        // (bits 9..2, truncated), ⌊λ + ½⌋ (rounded half up: ≤ 17,403, no wrap), each clamped to the last level n
+        self.w_n5.next = bit_cast::<5, 4>(self.n_dly.q.val()); // U4 widened to U5, exact
+        self.w_int.next = self.s8_l.q.val().get_bits::<5>(10); // λ >> 10 for λ ≥ 0: the integer part, ≤ 16
         self.w_frac.next = self.s8_l.q.val().get_bits::<8>(2); // (λ mod 2^10) >> 2: truncated to 8 bits
-        self.w_round.next = self.s8_l.q.val() + 512; // U14, ≤ 9,215: no wrap
-        self.w_near.next = self.w_round.val().get_bits::<4>(10); // (λ + 2^9) >> 10, ≤ 8
-        if !self.s8_big.q.val() {
+        self.w_round.next = self.s8_l.q.val() + 512; // S16, ≤ 17,403 for λ ≥ 0: no wrap
+        self.w_near.next = self.w_round.val().get_bits::<5>(10); // (λ + 2^9) >> 10, ≤ 16
+        if !self.s8_big.q.val() | self.s8_l.q.val().get_bit(15) {
             self.s9_level.d.next = 0.into();
             self.s9_frac.d.next = 0.into();
             self.s9_near.d.next = 0.into();
         } else {
-            if self.w_int.val() >= self.n_dly.q.val() {
+            if self.w_int.val() >= self.w_n5.val() {
                 self.s9_level.d.next = self.n_dly.q.val();
                 self.s9_frac.d.next = 0.into();
             } else {
-                self.s9_level.d.next = self.w_int.val();
+                self.s9_level.d.next = self.w_int.val().get_bits::<4>(0); // < n ≤ 15: U4, exact
                 self.s9_frac.d.next = self.w_frac.val();
             }
-            if self.w_near.val() > self.n_dly.q.val() {
+            if self.w_near.val() > self.w_n5.val() {
                 self.s9_near.d.next = self.n_dly.q.val();
             } else {
-                self.s9_near.d.next = self.w_near.val();
+                self.s9_near.d.next = self.w_near.val().get_bits::<4>(0); // ≤ n ≤ 15: U4, exact
             }
         }
         self.level.next = self.s9_level.q.val();

@@ -87,6 +87,7 @@ pub fn random(filter: Filter, host: &UnitModel, ports: &[Port], rng: &mut dyn ra
     let uv = [front::random_position(rng, s), front::random_position(rng, s)];
     let d = (crate::lod::MODEL.random)(rng);
     front::put_read(&mut v, &at, uv, s, [rng.gen_bool(0.5), rng.gen_bool(0.5)], [d[0], d[1], d[2], d[3]]);
+    front::put_bias(&mut v, &at, d[5]);
     v
 }
 
@@ -181,7 +182,15 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i
         for d in &lambdas {
             let mut v = base.clone();
             front::put_read(&mut v, &at, [side / 3, side / 5], s, [true, true], *d);
-            out.push(v);
+            out.push(v.clone());
+            // with a LOD bias: its ends (below level 0 and past the last level from every footprint), and a level
+            // either way
+            if filter.mip() {
+                for bias in [-(1 << 11), -256, 256, (1 << 11) - 1] {
+                    front::put_bias(&mut v, &at, bias);
+                    out.push(v.clone());
+                }
+            }
         }
     }
     // the ends of the position's range, each axis
@@ -261,14 +270,14 @@ textured!(nearest_matte, "cart_tex_nearest_matte", Filter::Nearest, crate::cart_
 
 textured!(nearest_mip_matte, "cart_tex_nearest_mip_matte", Filter::NearestMip, crate::cart_pipeline::MODEL_MATTE, inputs: [
     u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
-    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
     l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
     w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
 textured!(trilinear_matte, "cart_tex_trilinear_matte", Filter::Trilinear, crate::cart_pipeline::MODEL_MATTE, inputs: [
     u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
-    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
     l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
     w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
@@ -359,6 +368,15 @@ mod tests {
             seen.insert(got[0]);
         }
         assert!(seen.len() > 40, "{seen:?}");
+        // a bias of −½ level (−128 in Sq3.8) moves each of them half a level toward level 0
+        for edge in (362..512).step_by(7) {
+            let d = [edge, 0, 0, 0];
+            front::put_read(&mut v, &at, [300, 100], 1, [true, true], d);
+            front::put_bias(&mut v, &at, -128);
+            let got = f.step(&v, &at);
+            let want = 255.0 * (crate::lod::ideal_lambda(d) - 0.5);
+            assert!(got[0] == got[1] && (got[0] as f64 - want).abs() <= 1.5, "edge {edge}: {got:?} against {want:.2}");
+        }
     }
 
     #[test]

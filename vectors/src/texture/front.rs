@@ -3,7 +3,7 @@
 //!
 //! A front's ports, by name, in the vector of the pipeline that holds it: `u`, `v` (Sq11.8, texels of level 0),
 //! `log_side`, `uwrap`, `vwrap`, the write port `we`, `w_log2`, `wx`, `wy`, `wdata`, and with a MIP filter the four
-//! derivatives `du_dx`, `dv_dx`, `du_dy`, `dv_dy` (Sq8.8). A write puts `wdata` into its texel and leaves as a
+//! derivatives `du_dx`, `dv_dx`, `du_dy`, `dv_dy` (Sq8.8) and the LOD bias `lod_bias` (Sq3.8, levels). A write puts `wdata` into its texel and leaves as a
 //! texel of zero; a read sees every write before it.
 
 use crate::texture::{lod, tex_addr, tex_fetch};
@@ -49,8 +49,9 @@ pub const PORTS: &[Port] = &[
     Port::u("wy", 8),
     Port::u("wdata", 16),
 ];
+/// The MIP filters' ports: the four derivatives and the LOD bias.
 pub const DERIVATIVES: &[Port] =
-    &[Port::s("du_dx", 17), Port::s("dv_dx", 17), Port::s("du_dy", 17), Port::s("dv_dy", 17)];
+    &[Port::s("du_dx", 17), Port::s("dv_dx", 17), Port::s("du_dy", 17), Port::s("dv_dy", 17), Port::s("lod_bias", 12)];
 
 /// Where a front's ports sit in a pipeline's vector.
 #[derive(Clone, Copy, Debug)]
@@ -67,6 +68,8 @@ pub struct At {
     pub wdata: usize,
     /// du_dx, dv_dx, du_dy, dv_dy, with a MIP filter
     pub d: Option<[usize; 4]>,
+    /// lod_bias, with a MIP filter
+    pub bias: Option<usize>,
 }
 
 /// The index of the port called `name`; panics if there is none (a pipeline's port list is fixed at compile time,
@@ -90,6 +93,7 @@ impl At {
             wy: i("wy"),
             wdata: i("wdata"),
             d: mip.then(|| [i("du_dx"), i("dv_dx"), i("du_dy"), i("dv_dy")]),
+            bias: mip.then(|| i("lod_bias")),
         }
     }
 }
@@ -109,7 +113,8 @@ impl Front {
     /// The levels the address units read for this vector (the LOD unit's nearest level; ⌊λ⌋ and ⌊λ⌋ + 1; or 0),
     /// and the weight of the second, frac(λ) (U8; 0 with one level).
     pub fn levels(&self, v: &[i64], at: &At) -> (Vec<i64>, i64) {
-        let l = |d: [usize; 4]| lod::exact(d.map(|k| v[k]), v[at.log_side]);
+        let bias = at.bias.map_or(0, |k| v[k]);
+        let l = |d: [usize; 4]| lod::exact(d.map(|k| v[k]), v[at.log_side], bias);
         match (at.d, self.filter) {
             (Some(d), Filter::NearestMip) => (vec![l(d)[lod::output::nearest]], 0),
             (Some(d), Filter::Trilinear) => {
@@ -198,7 +203,7 @@ pub fn lerp(b0: i64, b1: i64, f: i64) -> i64 {
 }
 
 /// A read vector's front ports for the sample (u, v) (Sq11.8) of a map of side 2^log_side, with the wrap modes
-/// and, for a MIP filter, the derivatives; written into `v` at `at`.
+/// and, for a MIP filter, the derivatives (and a LOD bias of 0: `put_bias` sets another); written into `v` at `at`.
 pub fn put_read(v: &mut [i64], at: &At, uv: [i64; 2], log_side: i64, wrap: [bool; 2], d: [i64; 4]) {
     (v[at.u], v[at.v], v[at.log_side]) = (uv[0], uv[1], log_side);
     (v[at.uwrap], v[at.vwrap], v[at.we]) = (i64::from(wrap[0]), i64::from(wrap[1]), 0);
@@ -207,6 +212,14 @@ pub fn put_read(v: &mut [i64], at: &At, uv: [i64; 2], log_side: i64, wrap: [bool
         for c in 0..4 {
             v[k[c]] = d[c];
         }
+    }
+    put_bias(v, at, 0);
+}
+
+/// A read vector's LOD bias (Sq3.8, levels), for a MIP filter; nothing without one.
+pub fn put_bias(v: &mut [i64], at: &At, bias: i64) {
+    if let Some(k) = at.bias {
+        v[k] = bias;
     }
 }
 
@@ -219,6 +232,7 @@ pub fn put_write(v: &mut [i64], at: &At, m: i64, x: i64, y: i64, texel: i64) {
             v[c] = 0;
         }
     }
+    put_bias(v, at, 0);
 }
 
 /// A random sample position: mostly within a few repeats of the map either side of 0, one draw in eight an end
