@@ -32,7 +32,8 @@ enum Cmd {
         out: Option<PathBuf>,
     },
     /// Export a unit's Verilog into DIR/<unit>.v, with a self-checking testbench of its golden vectors
-    /// (DIR/<unit>_tb.v, DIR/<unit>_in.hex, DIR/<unit>_out.hex)
+    /// (DIR/<unit>_tb.v, DIR/<unit>_in.hex, DIR/<unit>_out.hex), and the unit behind AXI4-Stream with its own
+    /// bench on the same vectors (DIR/<unit>_axis.v, DIR/<unit>_axis_tb.v)
     Verilog {
         #[arg(required_unless_present = "scene")]
         unit: Option<String>,

@@ -36,7 +36,8 @@ pub fn verilog_scene(scene: PathBuf, out: PathBuf) -> Result<(), String> {
     Ok(())
 }
 
-/// A unit's Verilog with a self-checking testbench of its golden vectors.
+/// A unit's Verilog with a self-checking testbench of its golden vectors, and the same unit behind its AXI4-Stream
+/// wrapper with a testbench of its own on the same vectors.
 pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     let unit = sim::units::unit(&name)?;
     let u = unit.model;
@@ -52,6 +53,9 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     let outs: Vec<Vec<u64>> = file.rows.iter().map(|r| vectors::unit::to_patterns(&r[n_in..], u.outputs)).collect();
     let source = format!("vectors/data/{name}.csv");
     for p in unit.rtl.selfcheck(&out, &ins, &outs, &source)? {
+        println!("{}", p.display());
+    }
+    for p in unit.axis.selfcheck(&out, ins.len(), &source)? {
         println!("{}", p.display());
     }
     Ok(())

@@ -223,11 +223,11 @@ fn non_utf8_output_paths_work_or_fail_cleanly() {
 }
 
 #[test]
-fn verilog_writes_the_module_its_testbench_and_the_golden_vectors() {
+fn verilog_writes_the_module_its_testbench_the_golden_vectors_and_the_axis_wrapper() {
     let d = scratch("tb");
     let (code, out, err) = bumprtl(&["verilog", "dot3", "--out", d.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
-    for f in ["dot3.v", "dot3_tb.v", "dot3_in.hex", "dot3_out.hex"] {
+    for f in ["dot3.v", "dot3_tb.v", "dot3_in.hex", "dot3_out.hex", "dot3_axis.v", "dot3_axis_tb.v"] {
         assert!(d.join(f).is_file() && out.contains(f), "{f}: {out}");
     }
     let golden = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/vectors/data/dot3.csv")).unwrap();

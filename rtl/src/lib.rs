@@ -85,6 +85,9 @@ pub mod texture {
 
 pub mod stream;
 
+/// Any unit behind AXI4-Stream, with back-pressure and reset.
+pub mod axis;
+
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{cart_decode, cart_decode_hemi_oct, cart_pipeline, cart_surface, cart_tex, light_iter};
 pub use height::{

@@ -16,6 +16,9 @@ pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
     fn set_clock(&mut self, level: bool);
     fn clock_level(&self) -> bool;
     fn set_inputs(&mut self, valid: bool, values: &[u64]);
+    /// Mark the clock, valid and data inputs as driven, for a block that drives them from its own `update` (the
+    /// AXI4-Stream wrapper).
+    fn connect_inputs(&mut self);
     fn valid_out(&self) -> bool;
     fn outputs(&self) -> Vec<u64>;
 }
@@ -82,6 +85,11 @@ macro_rules! stream_block {
                 let mut k = 0;
                 $( self.$i.next = <$it>::from(values[k]); k += 1; )*
                 debug_assert_eq!(k, values.len());
+            }
+            fn connect_inputs(&mut self) {
+                self.clock.connect();
+                self.valid_in.connect();
+                $( self.$i.connect(); )*
             }
             fn valid_out(&self) -> bool {
                 self.valid_out.val()

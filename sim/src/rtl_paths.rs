@@ -60,6 +60,41 @@ pub trait RtlPaths: RtlBlock {
     ) -> Result<(Cells, Blocks), String>;
 }
 
+/// A unit behind its AXI4-Stream wrapper (`rtl::axis`): the module `<unit>_axis` and its self-checking bench.
+pub trait AxisPaths: Sync {
+    /// The exported module's name, `<unit>_axis`.
+    fn module(&self) -> String;
+    /// The exported module's text.
+    fn verilog(&self) -> String;
+    /// `dir/<unit>_axis.v` and `dir/<unit>_axis_tb.v` (which reads the unit's `<unit>_in.hex` and `<unit>_out.hex`,
+    /// written beside it by `RtlPaths::selfcheck`), for `n` vectors from `source`: the paths written.
+    fn selfcheck(&self, dir: &Path, n: usize, source: &str) -> Result<Vec<PathBuf>, String>;
+}
+
+/// The AXI4-Stream paths of unit `U` with its wrapper's widths (`rtl::axis_of!` works them out: see `units`).
+pub struct AxisRtl<U, const IW: usize, const OW: usize, const A: usize, const C: usize>(PhantomData<fn() -> U>);
+
+impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: usize> AxisRtl<U, IW, OW, A, C> {
+    pub const PATHS: AxisRtl<U, IW, OW, A, C> = AxisRtl(PhantomData);
+}
+
+impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: usize> AxisPaths
+    for AxisRtl<U, IW, OW, A, C>
+{
+    fn module(&self) -> String {
+        rtl::axis::Axis::<U, IW, OW, A, C>::name()
+    }
+    fn verilog(&self) -> String {
+        synth::export_axis::<U, IW, OW, A, C>().text
+    }
+    fn selfcheck(&self, dir: &Path, n: usize, source: &str) -> Result<Vec<PathBuf>, String> {
+        let v = synth::export_axis::<U, IW, OW, A, C>().write(dir)?;
+        let tb = dir.join(format!("{}_tb.v", self.module()));
+        synth::export::write_atomic(&tb, synth::axis_bench::bench::<U>(n, source).as_bytes())?;
+        Ok(vec![v, tb])
+    }
+}
+
 /// The paths of the rtl block `U`.
 pub struct Rtl<U>(PhantomData<fn() -> U>);
 

@@ -7,20 +7,40 @@
 //! A new unit is its model (`vectors`), its block (`rtl`), its test file (`testbench/tests`) and its row here; its
 //! golden file is generated (`bumprtl vectors <unit>`). The table names both crates, so it lives above them.
 
-use crate::rtl_paths::{Rtl, RtlBlock, RtlPaths};
+use crate::rtl_paths::{AxisPaths, AxisRtl, Rtl, RtlBlock, RtlPaths};
+
+/// A row of the table: the model, the block `T`'s paths, and `T` behind its AXI4-Stream wrapper with the widths
+/// worked out from `T`'s ports and latency (a const expression needs the concrete type, hence a macro).
+macro_rules! unit {
+    ($model:expr, $t:ty) => {
+        Unit::new(
+            $model,
+            &Rtl::<$t>::PATHS,
+            &AxisRtl::<
+                $t,
+                { rtl::axis::word(<$t as rtl::StreamUnit>::INPUTS) },
+                { rtl::axis::word(<$t as rtl::StreamUnit>::OUTPUTS) },
+                { rtl::axis::addr_bits(<$t as rtl::StreamUnit>::LATENCY) },
+                { rtl::axis::addr_bits(<$t as rtl::StreamUnit>::LATENCY) + 1 },
+            >::PATHS,
+        )
+    };
+}
 use vectors::UnitModel;
 
 /// One unit with an rtl block.
 pub struct Unit {
     pub model: &'static UnitModel,
     pub rtl: &'static dyn RtlPaths,
+    /// The block behind its AXI4-Stream wrapper.
+    pub axis: &'static dyn AxisPaths,
     /// The design's own lint waivers: (signal as `instance$port`, why the Verilog leaves it unused).
     pub waivers: &'static [(&'static str, &'static str)],
 }
 
 impl Unit {
-    pub const fn new(model: &'static UnitModel, rtl: &'static dyn RtlPaths) -> Unit {
-        Unit { model, rtl, waivers: &[] }
+    pub const fn new(model: &'static UnitModel, rtl: &'static dyn RtlPaths, axis: &'static dyn AxisPaths) -> Unit {
+        Unit { model, rtl, axis, waivers: &[] }
     }
 
     pub const fn waiving(self, waivers: &'static [(&'static str, &'static str)]) -> Unit {
@@ -35,9 +55,9 @@ impl Unit {
 
 /// Every unit with an rtl block, in the order the command line lists them and `bumprtl accuracy` prints them.
 pub static UNITS: &[Unit] = &[
-    Unit::new(&vectors::cart_decode::MODEL, &Rtl::<rtl::cart_decode::CartDecode>::PATHS),
-    Unit::new(&vectors::cart_decode_hemi_oct::MODEL, &Rtl::<rtl::cart_decode_hemi_oct::CartDecodeHemiOct>::PATHS),
-    Unit::new(&vectors::bilinear::MODEL, &Rtl::<rtl::bilinear::Bilinear>::PATHS).waiving(&[
+    unit!(&vectors::cart_decode::MODEL, rtl::cart_decode::CartDecode),
+    unit!(&vectors::cart_decode_hemi_oct::MODEL, rtl::cart_decode_hemi_oct::CartDecodeHemiOct),
+    unit!(&vectors::bilinear::MODEL, rtl::bilinear::Bilinear).waiving(&[
         (
             "unit$0$wide",
             "the colour filter reads each bilinear unit's rounded output; the exact one is the \
@@ -47,66 +67,54 @@ pub static UNITS: &[Unit] = &[
         ("unit$2$wide", "as unit$0$wide"),
         ("unit$3$wide", "as unit$0$wide"),
     ]),
-    Unit::new(&vectors::light_iter::MODEL, &Rtl::<rtl::light_iter::LightIter>::PATHS),
-    Unit::new(&vectors::normalise::MODEL, &Rtl::<rtl::normalise::Normalise>::PATHS),
-    Unit::new(&vectors::dot3::MODEL, &Rtl::<rtl::dot3::Dot3>::PATHS),
-    Unit::new(&vectors::gloss::MODEL, &Rtl::<rtl::gloss::Gloss>::PATHS),
-    Unit::new(&vectors::blend::MODEL, &Rtl::<rtl::blend::Blend>::PATHS),
-    Unit::new(&vectors::cart_pipeline::MODEL, &Rtl::<rtl::cart_pipeline::CartPipeline>::PATHS).waiving(&[
+    unit!(&vectors::light_iter::MODEL, rtl::light_iter::LightIter),
+    unit!(&vectors::normalise::MODEL, rtl::normalise::Normalise),
+    unit!(&vectors::dot3::MODEL, rtl::dot3::Dot3),
+    unit!(&vectors::gloss::MODEL, rtl::gloss::Gloss),
+    unit!(&vectors::blend::MODEL, rtl::blend::Blend),
+    unit!(&vectors::cart_pipeline::MODEL, rtl::cart_pipeline::CartPipeline).waiving(&[
         ("filter$0$wide", "the texel's components are read rounded, as the colour filter reads them"),
         ("filter$1$wide", "as filter$0$wide"),
         ("light$valid_out", "the light path runs in lockstep with the bump path, whose valid is used"),
         ("light_norm$valid_out", "as light$valid_out"),
     ]),
-    Unit::new(&vectors::cart_pipeline::MODEL_HEMI_OCT, &Rtl::<rtl::cart_pipeline::CartPipelineHemiOct>::PATHS).waiving(
-        &[
-            ("filter$0$wide", "as in cart_pipeline"),
-            ("filter$1$wide", "as filter$0$wide"),
-            ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
-            ("light_norm$valid_out", "as light$valid_out"),
-        ],
-    ),
-    Unit::new(&vectors::cart_pipeline::MODEL_MATTE, &Rtl::<rtl::cart_pipeline::CartPipelineMatte>::PATHS).waiving(&[
+    unit!(&vectors::cart_pipeline::MODEL_HEMI_OCT, rtl::cart_pipeline::CartPipelineHemiOct).waiving(&[
         ("filter$0$wide", "as in cart_pipeline"),
         ("filter$1$wide", "as filter$0$wide"),
         ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
         ("light_norm$valid_out", "as light$valid_out"),
     ]),
-    Unit::new(
-        &vectors::cart_pipeline::MODEL_HEMI_OCT_MATTE,
-        &Rtl::<rtl::cart_pipeline::CartPipelineHemiOctMatte>::PATHS,
-    )
-    .waiving(&[
+    unit!(&vectors::cart_pipeline::MODEL_MATTE, rtl::cart_pipeline::CartPipelineMatte).waiving(&[
         ("filter$0$wide", "as in cart_pipeline"),
         ("filter$1$wide", "as filter$0$wide"),
         ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
         ("light_norm$valid_out", "as light$valid_out"),
     ]),
-    Unit::new(&vectors::cart_surface::MODEL, &Rtl::<rtl::cart_surface::CartSurface>::PATHS)
+    unit!(&vectors::cart_pipeline::MODEL_HEMI_OCT_MATTE, rtl::cart_pipeline::CartPipelineHemiOctMatte).waiving(&[
+        ("filter$0$wide", "as in cart_pipeline"),
+        ("filter$1$wide", "as filter$0$wide"),
+        ("light$valid_out", "as in cart_pipeline: the bump path's valid is used"),
+        ("light_norm$valid_out", "as light$valid_out"),
+    ]),
+    unit!(&vectors::cart_surface::MODEL, rtl::cart_surface::CartSurface)
         .waiving(&[("filter$0$wide", "as in cart_pipeline"), ("filter$1$wide", "as filter$0$wide")]),
-    Unit::new(&vectors::cart_surface::MODEL_MATTE, &Rtl::<rtl::cart_surface::CartSurfaceMatte>::PATHS)
+    unit!(&vectors::cart_surface::MODEL_MATTE, rtl::cart_surface::CartSurfaceMatte)
         .waiving(&[("filter$0$wide", "as in cart_pipeline"), ("filter$1$wide", "as filter$0$wide")]),
-    Unit::new(&vectors::cart_surface::MODEL_HEMI_OCT, &Rtl::<rtl::cart_surface::CartSurfaceHemiOct>::PATHS)
+    unit!(&vectors::cart_surface::MODEL_HEMI_OCT, rtl::cart_surface::CartSurfaceHemiOct)
         .waiving(&[("filter$0$wide", "as in cart_pipeline"), ("filter$1$wide", "as filter$0$wide")]),
-    Unit::new(&vectors::cart_surface::MODEL_HEMI_OCT_MATTE, &Rtl::<rtl::cart_surface::CartSurfaceHemiOctMatte>::PATHS)
+    unit!(&vectors::cart_surface::MODEL_HEMI_OCT_MATTE, rtl::cart_surface::CartSurfaceHemiOctMatte)
         .waiving(&[("filter$0$wide", "as in cart_pipeline"), ("filter$1$wide", "as filter$0$wide")]),
-    Unit::new(&vectors::cart_surface::MODEL_NEAREST, &Rtl::<rtl::cart_surface::CartSurfaceNearest>::PATHS),
-    Unit::new(&vectors::cart_surface::MODEL_NEAREST_MATTE, &Rtl::<rtl::cart_surface::CartSurfaceNearestMatte>::PATHS),
-    Unit::new(
-        &vectors::cart_surface::MODEL_NEAREST_HEMI_OCT,
-        &Rtl::<rtl::cart_surface::CartSurfaceNearestHemiOct>::PATHS,
-    ),
-    Unit::new(
-        &vectors::cart_surface::MODEL_NEAREST_HEMI_OCT_MATTE,
-        &Rtl::<rtl::cart_surface::CartSurfaceNearestHemiOctMatte>::PATHS,
-    ),
-    Unit::new(&vectors::height_addr::MODEL, &Rtl::<rtl::height_addr::HeightAddr>::PATHS),
-    Unit::new(&vectors::height_fetch::MODEL, &Rtl::<rtl::height_fetch::HeightFetch>::PATHS),
-    Unit::new(&vectors::replicate::MODEL, &Rtl::<rtl::replicate::Replicate>::PATHS),
-    Unit::new(&vectors::blend_adjust::MODEL, &Rtl::<rtl::blend_adjust::BlendAdjust>::PATHS),
-    Unit::new(&vectors::tangent::MODEL, &Rtl::<rtl::tangent::Tangent>::PATHS),
-    Unit::new(&vectors::height_normal::MODEL, &Rtl::<rtl::height_normal::HeightNormal>::PATHS),
-    Unit::new(&vectors::height_pipeline::MODEL, &Rtl::<rtl::height_pipeline::HeightPipeline>::PATHS).waiving(&[
+    unit!(&vectors::cart_surface::MODEL_NEAREST, rtl::cart_surface::CartSurfaceNearest),
+    unit!(&vectors::cart_surface::MODEL_NEAREST_MATTE, rtl::cart_surface::CartSurfaceNearestMatte),
+    unit!(&vectors::cart_surface::MODEL_NEAREST_HEMI_OCT, rtl::cart_surface::CartSurfaceNearestHemiOct),
+    unit!(&vectors::cart_surface::MODEL_NEAREST_HEMI_OCT_MATTE, rtl::cart_surface::CartSurfaceNearestHemiOctMatte),
+    unit!(&vectors::height_addr::MODEL, rtl::height_addr::HeightAddr),
+    unit!(&vectors::height_fetch::MODEL, rtl::height_fetch::HeightFetch),
+    unit!(&vectors::replicate::MODEL, rtl::replicate::Replicate),
+    unit!(&vectors::blend_adjust::MODEL, rtl::blend_adjust::BlendAdjust),
+    unit!(&vectors::tangent::MODEL, rtl::tangent::Tangent),
+    unit!(&vectors::height_normal::MODEL, rtl::height_normal::HeightNormal),
+    unit!(&vectors::height_pipeline::MODEL, rtl::height_pipeline::HeightPipeline).waiving(&[
         (
             "unit$0$out",
             "the height path reads each bilinear unit's exact result; the rounded one is the \
@@ -116,8 +124,8 @@ pub static UNITS: &[Unit] = &[
         ("unit$2$out", "as unit$0$out"),
         ("unit$3$out", "as unit$0$out"),
     ]),
-    Unit::new(&vectors::texture_filter::MODEL, &Rtl::<rtl::texture_filter::TextureFilter>::PATHS),
-    Unit::new(&vectors::blinn_pipeline::MODEL, &Rtl::<rtl::blinn_pipeline::BlinnPipeline>::PATHS).waiving(&[
+    unit!(&vectors::texture_filter::MODEL, rtl::texture_filter::TextureFilter),
+    unit!(&vectors::blinn_pipeline::MODEL, rtl::blinn_pipeline::BlinnPipeline).waiving(&[
         (
             "unit$0$out",
             "Blinn's function reads each bilinear unit's exact result; the rounded one is the \
@@ -126,47 +134,42 @@ pub static UNITS: &[Unit] = &[
         ("unit$1$out", "as unit$0$out"),
         ("unit$2$out", "as unit$0$out"),
     ]),
-    Unit::new(&vectors::palette_lookup::MODEL, &Rtl::<rtl::palette_lookup::PaletteLookup<8, 9>>::PATHS),
-    Unit::new(&vectors::table_builder::MODEL, &Rtl::<rtl::table_builder::TableBuilder>::PATHS)
+    unit!(&vectors::palette_lookup::MODEL, rtl::palette_lookup::PaletteLookup<8, 9>),
+    unit!(&vectors::table_builder::MODEL, rtl::table_builder::TableBuilder)
         .waiving(&[("diffuse$valid_out", "the two dot products run in lockstep; the highlight's valid is used")]),
-    Unit::new(&vectors::palette_pipeline::MODEL, &Rtl::<rtl::palette_pipeline::PalettePipeline<8, 9>>::PATHS)
+    unit!(&vectors::palette_pipeline::MODEL, rtl::palette_pipeline::PalettePipeline<8, 9>)
         .waiving(&[("diffuse$valid_out", "as in table_builder")]),
-    Unit::new(&vectors::palette_pipeline::MODEL_12, &Rtl::<rtl::palette_pipeline::PalettePipeline<12, 13>>::PATHS)
+    unit!(&vectors::palette_pipeline::MODEL_12, rtl::palette_pipeline::PalettePipeline<12, 13>)
         .waiving(&[("diffuse$valid_out", "as in table_builder")]),
-    Unit::new(
-        &vectors::palette_pipeline_shared::MODEL,
-        &Rtl::<rtl::palette_pipeline_shared::PalettePipelineShared>::PATHS,
-    ),
-    Unit::new(&vectors::sincos::MODEL, &Rtl::<rtl::sincos::SinCosUnit>::PATHS),
-    Unit::new(&vectors::cos_sign::MODEL, &Rtl::<rtl::cos_sign::CosSignUnit>::PATHS),
-    Unit::new(&vectors::polar_shade::MODEL, &Rtl::<rtl::polar_shade::PolarShade<false>>::PATHS),
-    Unit::new(&vectors::polar_shade::MODEL_DC, &Rtl::<rtl::polar_shade::PolarShade<true>>::PATHS),
-    Unit::new(&vectors::power::MODEL, &Rtl::<rtl::power::Power>::PATHS),
-    Unit::new(&vectors::polar_pipeline::MODEL, &Rtl::<rtl::polar_pipeline::PolarPipelineSeed>::PATHS).waiving(&[(
+    unit!(&vectors::palette_pipeline_shared::MODEL, rtl::palette_pipeline_shared::PalettePipelineShared),
+    unit!(&vectors::sincos::MODEL, rtl::sincos::SinCosUnit),
+    unit!(&vectors::cos_sign::MODEL, rtl::cos_sign::CosSignUnit),
+    unit!(&vectors::polar_shade::MODEL, rtl::polar_shade::PolarShade<false>),
+    unit!(&vectors::polar_shade::MODEL_DC, rtl::polar_shade::PolarShade<true>),
+    unit!(&vectors::power::MODEL, rtl::power::Power),
+    unit!(&vectors::polar_pipeline::MODEL, rtl::polar_pipeline::PolarPipelineSeed).waiving(&[(
         "shader$sum",
         "polar_shade's S11 before the clamp is an output for tests and waveforms; the \
             pipeline uses the clamped shade",
     )]),
-    Unit::new(&vectors::polar_pipeline::MODEL_DC, &Rtl::<rtl::polar_pipeline::PolarPipelineDc>::PATHS)
+    unit!(&vectors::polar_pipeline::MODEL_DC, rtl::polar_pipeline::PolarPipelineDc)
         .waiving(&[("shader$sum", "as in polar_pipeline")]),
-    Unit::new(&vectors::lod::MODEL, &Rtl::<rtl::lod::Lod>::PATHS),
-    Unit::new(&vectors::tex_addr::MODEL, &Rtl::<rtl::tex_addr::TexAddr>::PATHS),
-    Unit::new(&vectors::tex_fetch::MODEL, &Rtl::<rtl::tex_fetch::TexFetch>::PATHS),
-    Unit::new(&vectors::cart_tex::bilinear::MODEL, &Rtl::<rtl::cart_tex::CartTexBilinear>::PATHS).waiving(&[
+    unit!(&vectors::lod::MODEL, rtl::lod::Lod),
+    unit!(&vectors::tex_addr::MODEL, rtl::tex_addr::TexAddr),
+    unit!(&vectors::tex_fetch::MODEL, rtl::tex_fetch::TexFetch),
+    unit!(&vectors::cart_tex::bilinear::MODEL, rtl::cart_tex::CartTexBilinear).waiving(&[
         ("filter$0$wide", "the front's bilinear units, read rounded as in cart_pipeline"),
         ("filter$1$wide", "as filter$0$wide"),
         ("light$valid_out", "as in cart_pipeline"),
         ("light_norm$valid_out", "as in cart_pipeline"),
     ]),
-    Unit::new(&vectors::cart_tex::bilinear_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexBilinearMatte>::PATHS).waiving(
-        &[
-            ("filter$0$wide", "as in cart_tex_bilinear"),
-            ("filter$1$wide", "as filter$0$wide"),
-            ("light$valid_out", "as in cart_pipeline"),
-            ("light_norm$valid_out", "as in cart_pipeline"),
-        ],
-    ),
-    Unit::new(&vectors::cart_tex::nearest_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexNearestMatte>::PATHS).waiving(&[
+    unit!(&vectors::cart_tex::bilinear_matte::MODEL, rtl::cart_tex::CartTexBilinearMatte).waiving(&[
+        ("filter$0$wide", "as in cart_tex_bilinear"),
+        ("filter$1$wide", "as filter$0$wide"),
+        ("light$valid_out", "as in cart_pipeline"),
+        ("light_norm$valid_out", "as in cart_pipeline"),
+    ]),
+    unit!(&vectors::cart_tex::nearest_matte::MODEL, rtl::cart_tex::CartTexNearestMatte).waiving(&[
         ("light$valid_out", "as in cart_pipeline"),
         ("light_norm$valid_out", "as in cart_pipeline"),
         ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
@@ -175,33 +178,30 @@ pub static UNITS: &[Unit] = &[
         ("fetch$t01", "as fetch$t10"),
         ("fetch$t11", "as fetch$t10"),
     ]),
-    Unit::new(&vectors::cart_tex::nearest_mip_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexNearestMipMatte>::PATHS)
-        .waiving(&[
-            ("light$valid_out", "as in cart_pipeline"),
-            ("light_norm$valid_out", "as in cart_pipeline"),
-            (
-                "lod$level",
-                "the nearest level is the LOD unit's `nearest`; the floor of lambda and its fraction are trilinear's",
-            ),
-            ("lod$frac", "as lod$level"),
-            ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
-            ("addr$vblend", "as addr$ublend"),
-            ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
-            ("fetch$t01", "as fetch$t10"),
-            ("fetch$t11", "as fetch$t10"),
-        ]),
-    Unit::new(&vectors::cart_tex::trilinear_matte::MODEL, &Rtl::<rtl::cart_tex::CartTexTrilinearMatte>::PATHS).waiving(
-        &[
-            ("light$valid_out", "as in cart_pipeline"),
-            ("light_norm$valid_out", "as in cart_pipeline"),
-            ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
-            ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
-            ("filter$1$wide", "as filter$0$wide"),
-            ("filter$2$wide", "as filter$0$wide"),
-            ("filter$3$wide", "as filter$0$wide"),
-            ("fetch$1$valid_out", "the two fetches run in step: the valid chain follows the first's"),
-        ],
-    ),
+    unit!(&vectors::cart_tex::nearest_mip_matte::MODEL, rtl::cart_tex::CartTexNearestMipMatte).waiving(&[
+        ("light$valid_out", "as in cart_pipeline"),
+        ("light_norm$valid_out", "as in cart_pipeline"),
+        (
+            "lod$level",
+            "the nearest level is the LOD unit's `nearest`; the floor of lambda and its fraction are trilinear's",
+        ),
+        ("lod$frac", "as lod$level"),
+        ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
+        ("addr$vblend", "as addr$ublend"),
+        ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
+        ("fetch$t01", "as fetch$t10"),
+        ("fetch$t11", "as fetch$t10"),
+    ]),
+    unit!(&vectors::cart_tex::trilinear_matte::MODEL, rtl::cart_tex::CartTexTrilinearMatte).waiving(&[
+        ("light$valid_out", "as in cart_pipeline"),
+        ("light_norm$valid_out", "as in cart_pipeline"),
+        ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
+        ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
+        ("filter$1$wide", "as filter$0$wide"),
+        ("filter$2$wide", "as filter$0$wide"),
+        ("filter$3$wide", "as filter$0$wide"),
+        ("fetch$1$valid_out", "the two fetches run in step: the valid chain follows the first's"),
+    ]),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -11,12 +11,21 @@ pub struct Exported {
 }
 
 pub fn export<U: StreamUnit>() -> Exported {
-    let mut uut = U::build();
+    named(U::build(), U::NAME)
+}
+
+/// A unit behind its AXI4-Stream wrapper, as the module `<unit>_axis` (its unit inside, under that prefix, so the
+/// file stands alone and can be read beside `<unit>.v`).
+pub fn export_axis<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: usize>() -> Exported {
+    named(rtl::axis::Axis::<U, IW, OW, A, C>::build(), &rtl::axis::Axis::<U, IW, OW, A, C>::name())
+}
+
+/// Any block's Verilog with rust-hdl's `top` renamed `module`.
+fn named<B: Block>(mut uut: B, module: &str) -> Exported {
     uut.connect_all();
     let text = generate_verilog(&uut);
-    let module = U::NAME.to_string();
     let text = text.replace("module top(", &format!("module {module}(")).replace("top$", &format!("{module}$"));
-    Exported { module, text }
+    Exported { module: module.to_string(), text }
 }
 
 impl Exported {

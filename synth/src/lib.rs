@@ -3,6 +3,7 @@
 //! co-simulates it under Verilator and Icarus on the same vectors as the model, and synthesises and places it for
 //! the iCE40 UP5K and the ECP5 25F / 45F / 85F with yosys and nextpnr.
 
+pub mod axis_bench;
 pub mod cache;
 pub mod cosim;
 pub mod export;
@@ -11,4 +12,4 @@ pub mod lint;
 pub mod selfcheck;
 pub mod tools;
 
-pub use export::{export, Exported};
+pub use export::{export, export_axis, Exported};

@@ -5,6 +5,8 @@
 //! - monitor: `rtl::stream::Collected` (rust-hdl) or the external harness's output: what left the unit, and when;
 //! - checker: `check` compares every output with `exact()` and every latency with the unit's stated one.
 
+pub mod axis;
+
 use rand::{Rng, SeedableRng};
 use rtl::stream::{Collected, Runner};
 use rtl::StreamUnit;
