@@ -4,7 +4,8 @@
 //! A source offers the vectors with random gaps and holds each beat until it is taken; a sink stalls `tready` at
 //! random, now and then for up to three latencies. Part way through, `aresetn` falls for a few clocks: the beats in
 //! flight are dropped, the bench checks that nothing comes out until new input arrives, then sends the whole file
-//! again and checks every output beat against the expected one, in order, none missing or extra. Every clock it
+//! again and checks every output beat against the expected one, in order, none missing or extra (a reset empties
+//! the wrapper, not the unit's tables and maps: `+cut=1` puts it before the first beat). Every clock it
 //! checks the rules: tvalid and tready low in reset, an offered output held unchanged until it is taken. The
 //! random numbers are a xorshift32 in the bench (seed `+seed=N`, default 1), the same under every simulator.
 //!
@@ -44,7 +45,9 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
         w,
         "//   $ verilator --binary -Wno-fatal --top-module {u}_axis_tb {u}_axis_tb.v {u}_axis.v && ./obj_dir/V{u}_axis_tb +seed=1"
     );
-    let _ = writeln!(w, "// Random tvalid gaps and tready stalls; aresetn low for 3 clocks after {cut} clocks (the beats in flight dropped),");
+    let _ = writeln!(w, "// Random tvalid gaps and tready stalls; aresetn low for 3 clocks after {cut} clocks (+cut=N: after N; the beats in");
+    let _ = writeln!(w, "// flight dropped; a reset does not clear the unit's memories, so a unit with a table or a map whose stream reads");
+    let _ = writeln!(w, "// before it writes needs +cut=1, a reset before the first beat),");
     let _ = writeln!(
         w,
         "// nothing out until new input, then every vector again, each output checked in order, none missing or extra."
@@ -52,7 +55,7 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(w, "`timescale 1ns/1ps\nmodule {u}_axis_tb;");
     let _ = writeln!(
         w,
-        "  localparam N = {n};\n  localparam LATENCY = {};\n  localparam IW = {iw};\n  localparam OW = {ow};\n  localparam IWP = {iwp};\n  localparam OWP = {owp};\n  localparam CUT = {cut};\n  localparam RESET = 3;\n  localparam QUIET = LATENCY + 4;\n  localparam LIMIT = 40 * (N + LATENCY + 8) + 100000;",
+        "  localparam N = {n};\n  localparam LATENCY = {};\n  localparam IW = {iw};\n  localparam OW = {ow};\n  localparam IWP = {iwp};\n  localparam OWP = {owp};\n  localparam CUT_AT = {cut};\n  localparam RESET = 3;\n  localparam QUIET = LATENCY + 4;\n  localparam LIMIT = 40 * (N + LATENCY + 8) + 100000;",
         U::LATENCY
     );
     let _ = writeln!(w, "  reg aclk = 1'b0;\n  reg aresetn = 1'b1;");
@@ -72,7 +75,7 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(w, "    took <= s_axis_tvalid & s_axis_tready;\n    gave <= m_axis_tvalid & m_axis_tready;");
     let _ = writeln!(w, "    e_valid <= m_axis_tvalid;\n    e_ready <= s_axis_tready;\n    e_reset <= ~aresetn;\n    e_data <= m_axis_tdata;");
     let _ = writeln!(w, "  end");
-    let _ = writeln!(w, "  reg [31:0] rng = 32'd1;\n  integer seed = 1;");
+    let _ = writeln!(w, "  reg [31:0] rng = 32'd1;\n  integer seed = 1, cut = CUT_AT;");
     let _ = writeln!(
         w,
         "  integer cycle = 0, phase = 0, phase_at = 0, sent = 0, seen = 0, passed = 0, failed = 0, stall = 0;"
@@ -81,7 +84,7 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(w, "  initial begin");
     let _ = writeln!(w, "    $readmemh(\"{u}_in.hex\", stim_mem);\n    $readmemh(\"{u}_out.hex\", want_mem);");
     let _ =
-        writeln!(w, "    if ($value$plusargs(\"seed=%d\", seed)) rng = seed;\n    if (rng == 0) rng = 32'd1;\n  end");
+        writeln!(w, "    if ($value$plusargs(\"seed=%d\", seed)) rng = seed;\n    if (rng == 0) rng = 32'd1;\n    if ($value$plusargs(\"cut=%d\", cut) && cut < 1) cut = 1;\n  end");
     let _ = writeln!(w, "  always #5 aclk = ~aclk;");
     let _ =
         writeln!(w, "  // phases: 0 the stream until CUT, 1 in reset, 2 quiet, 3 the whole stream, 4 quiet to the end");
@@ -104,7 +107,7 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(w, "    end");
     // the phases
     let _ = writeln!(w, "    cycle = cycle + 1;");
-    let _ = writeln!(w, "    if (phase == 0 & cycle == CUT) begin phase = 1; phase_at = cycle; aresetn = 1'b0; end");
+    let _ = writeln!(w, "    if (phase == 0 & cycle == cut) begin phase = 1; phase_at = cycle; aresetn = 1'b0; end");
     let _ = writeln!(w, "    else if (phase == 1 & cycle == phase_at + RESET) begin phase = 2; phase_at = cycle; aresetn = 1'b1; s_axis_tvalid = 1'b0; end");
     let _ = writeln!(w, "    else if (phase == 2 & cycle == phase_at + QUIET) begin phase = 3; phase_at = cycle; sent = 0; seen = 0; end");
     let _ = writeln!(w, "    else if (phase == 3 & seen == N) begin phase = 4; phase_at = cycle; end");
