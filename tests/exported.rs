@@ -33,6 +33,16 @@ fn rows(unit: &str) -> usize {
     text.lines().filter(|l| !l.starts_with('#')).count() - 1
 }
 
+/// Flip the lowest bit of expected word `k` (counted from 0, past the header comments) of a `.hex` file.
+fn flip_expected(path: &Path, k: usize) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let k = lines.iter().position(|l| !l.starts_with("//")).unwrap() + k;
+    let flipped = u64::from_str_radix(&lines[k], 16).unwrap() ^ 1;
+    lines[k] = format!("{flipped:0w$x}", w = lines[k].len());
+    std::fs::write(path, lines.join("\n") + "\n").unwrap();
+}
+
 /// The two commands the README gives, as a user types them in the export folder.
 fn icarus(u: &str) -> String {
     format!("iverilog -o {u}_tb.vvp {u}_tb.v {u}.v && vvp -n {u}_tb.vvp")
@@ -54,13 +64,7 @@ fn the_exported_testbench_passes_under_icarus_and_verilator_and_fails_on_a_wrong
             assert!(out.lines().any(|l| l == format!("{n} passed, 0 failed")), "{u} under {sim}:\n{out}");
         }
         // one expected word off by one bit: both simulators must say so and exit non-zero
-        let path = d.join(format!("{u}_out.hex"));
-        let text = std::fs::read_to_string(&path).unwrap();
-        let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
-        let k = lines.iter().position(|l| !l.starts_with("//")).unwrap() + 3;
-        let flipped = u64::from_str_radix(&lines[k], 16).unwrap() ^ 1;
-        lines[k] = format!("{flipped:0w$x}", w = lines[k].len());
-        std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+        flip_expected(&d.join(format!("{u}_out.hex")), 3);
         let _ = std::fs::remove_dir_all(d.join("obj_dir"));
         for (sim, line) in [("icarus", icarus(u)), ("verilator", verilator(u))] {
             let (code, out) = sh(&d, &line);
@@ -106,13 +110,7 @@ fn the_exported_axis_wrapper_passes_its_bench_under_icarus_and_verilator_and_fai
             assert!(out.lines().any(|l| l == format!("{n} passed, 0 failed")), "{u}_axis under {sim}:\n{out}");
         }
         // one expected word off by one bit: the beat after the reset that carries it fails, under both
-        let path = d.join(format!("{u}_out.hex"));
-        let text = std::fs::read_to_string(&path).unwrap();
-        let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
-        let k = lines.iter().position(|l| !l.starts_with("//")).unwrap() + n - 2;
-        let flipped = u64::from_str_radix(&lines[k], 16).unwrap() ^ 1;
-        lines[k] = format!("{flipped:0w$x}", w = lines[k].len());
-        std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+        flip_expected(&d.join(format!("{u}_out.hex")), n - 2);
         let _ = std::fs::remove_dir_all(d.join("obj_dir"));
         for (sim, line) in [("icarus", axis_icarus(u)), ("verilator", axis_verilator(u))] {
             let (code, out) = sh(&d, &line);
