@@ -36,8 +36,9 @@ pub fn verilog_scene(scene: PathBuf, out: PathBuf) -> Result<(), String> {
     Ok(())
 }
 
-/// A unit's Verilog with a self-checking testbench of its golden vectors, and the same unit behind its AXI4-Stream
-/// wrapper with a testbench of its own on the same vectors.
+/// A unit's Verilog with a self-checking testbench of its golden vectors, the same unit behind its AXI4-Stream
+/// wrapper with a testbench of its own on the same vectors, Verilator's waivers for both, and the package around
+/// them: a FuseSoC core, a cocotb test and its Makefile, and the serial I/O wrapper the core's `synth` target places.
 pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     let unit = sim::units::unit(&name)?;
     let u = unit.model;
@@ -57,6 +58,31 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     }
     for p in unit.axis.selfcheck(&out, ins.len(), &source)? {
         println!("{}", p.display());
+    }
+    // the Verilator waivers are read off Verilator's own warnings on the files as written
+    let module = unit.axis.module();
+    let waivers = synth::tools::missing(&["verilator"]).is_empty();
+    if waivers {
+        let files = [(format!("{name}.v"), name.clone()), (format!("{module}.v"), module.clone())];
+        let files: Vec<(&str, &str)> = files.iter().map(|(f, m)| (f.as_str(), m.as_str())).collect();
+        let (p, design) = synth::lint::write_waivers(&out, &name, &files, unit.waivers)?;
+        println!("{}", p.display());
+        for d in design {
+            println!("  not waived (the design's): {d}");
+        }
+    } else {
+        println!("{name}.vlt not written: Verilator is not installed (its waivers are read off Verilator's warnings)");
+    }
+    // which part the unit fits is synthesised in a scratch folder beside the output, removed after
+    let scratch = out.join(format!(".{name}-fit"));
+    let packaged = unit.axis.package(&out, waivers, &scratch);
+    let _ = std::fs::remove_dir_all(&scratch);
+    let (written, no_synth) = packaged?;
+    for p in written {
+        println!("{}", p.display());
+    }
+    if let Some(why) = no_synth {
+        println!("{name}.core has no synth target: {why}");
     }
     Ok(())
 }

@@ -223,11 +223,12 @@ fn non_utf8_output_paths_work_or_fail_cleanly() {
 }
 
 #[test]
-fn verilog_writes_the_module_its_testbench_the_golden_vectors_and_the_axis_wrapper() {
+fn verilog_writes_the_module_its_testbench_the_golden_vectors_the_axis_wrapper_and_the_package() {
     let d = scratch("tb");
     let (code, out, err) = bumprtl(&["verilog", "dot3", "--out", d.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
-    for f in ["dot3.v", "dot3_tb.v", "dot3_in.hex", "dot3_out.hex", "dot3_axis.v", "dot3_axis_tb.v"] {
+    let files = ["dot3.v", "dot3_tb.v", "dot3_in.hex", "dot3_out.hex", "dot3_axis.v", "dot3_axis_tb.v", "dot3.vlt"];
+    for f in files.into_iter().chain(["dot3_io.v", "dot3.core", "test_dot3.py", "Makefile"]) {
         assert!(d.join(f).is_file() && out.contains(f), "{f}: {out}");
     }
     let golden = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/vectors/data/dot3.csv")).unwrap();

@@ -33,14 +33,31 @@ fn rows(unit: &str) -> usize {
     text.lines().filter(|l| !l.starts_with('#')).count() - 1
 }
 
-/// Flip the lowest bit of expected word `k` (counted from 0, past the header comments) of a `.hex` file.
+/// Flip the lowest bit of expected word `k` (counted from 0, past the header comments) of a `.hex` file, a word of
+/// any width.
 fn flip_expected(path: &Path, k: usize) {
     let text = std::fs::read_to_string(path).unwrap();
     let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
     let k = lines.iter().position(|l| !l.starts_with("//")).unwrap() + k;
-    let flipped = u64::from_str_radix(&lines[k], 16).unwrap() ^ 1;
-    lines[k] = format!("{flipped:0w$x}", w = lines[k].len());
+    let (head, last) = lines[k].split_at(lines[k].len() - 1);
+    let digit = u32::from_str_radix(last, 16).unwrap() ^ 1;
+    lines[k] = format!("{head}{}", char::from_digit(digit, 16).unwrap());
     std::fs::write(path, lines.join("\n") + "\n").unwrap();
+}
+
+/// Run a command line in `dir` with the test command's PyPI venv first on the PATH (FuseSoC, cocotb).
+fn sh_venv(dir: &Path, line: &str) -> (i32, String) {
+    let o = Command::new("sh")
+        .arg("-c")
+        .arg(line)
+        .current_dir(dir)
+        .env("PATH", synth::tools::path_with_venv())
+        .output()
+        .unwrap();
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stdout).to_string() + &String::from_utf8_lossy(&o.stderr),
+    )
 }
 
 /// The two commands the README gives, as a user types them in the export folder.
@@ -169,4 +186,56 @@ fn a_missing_place_and_route_tool_is_an_error_not_a_design_that_does_not_place()
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("cannot run") && err.contains("no-such-nextpnr"), "{err}");
     assert!(!out.contains("does not place"), "{out}");
+}
+
+/// Two units exported into one folder, as a user collects IP: the files each adds beside the other's.
+fn two_units_in_one_folder(name: &str) -> PathBuf {
+    let d = scratch(name);
+    for u in ["gloss", "cart_pipeline"] {
+        let (code, out, err) = bumprtl(&["verilog", u, "--out", d.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+        for f in [format!("{u}.vlt"), format!("{u}.core"), format!("{u}_io.v"), format!("test_{u}.py")] {
+            assert!(out.lines().any(|l| l.ends_with(&f)) && d.join(&f).is_file(), "{f}: {out}");
+        }
+    }
+    d
+}
+
+#[test]
+fn the_exported_cores_pass_their_sim_and_lint_targets_under_fusesoc_and_sim_fails_on_a_wrong_vector() {
+    let d = two_units_in_one_folder("fusesoc");
+    for u in ["gloss", "cart_pipeline"] {
+        let n = rows(u);
+        for target in ["sim", "sim_unit"] {
+            let (code, out) = sh_venv(&d, &format!("fusesoc --cores-root . run --target {target} bumprtl:unit:{u}"));
+            assert_eq!(code, 0, "{u} --target {target}:\n{out}");
+            assert!(out.lines().any(|l| l == format!("{n} passed, 0 failed")), "{u} --target {target}:\n{out}");
+        }
+    }
+    // Verilator -Wall with the core's waivers: silent, so the flow's warnings-as-errors passes
+    let (code, out) = sh_venv(&d, "fusesoc --cores-root . run --target lint bumprtl:unit:gloss");
+    assert_eq!(code, 0, "lint:\n{out}");
+    assert!(!out.contains("%Warning"), "lint:\n{out}");
+    flip_expected(&d.join("gloss_out.hex"), rows("gloss") - 2);
+    let (code, out) = sh_venv(&d, "fusesoc --cores-root . run --target sim bumprtl:unit:gloss");
+    assert_ne!(code, 0, "fusesoc passed a wrong vector:\n{out}");
+    assert!(out.lines().any(|l| l == format!("{} passed, 1 failed", rows("gloss") - 1)), "{out}");
+}
+
+#[test]
+fn the_exported_cocotb_tests_pass_under_icarus_and_fail_on_a_wrong_word() {
+    let d = two_units_in_one_folder("cocotb");
+    for u in ["gloss", "cart_pipeline"] {
+        let n = rows(u);
+        let (code, out) = sh_venv(&d, &format!("make UNIT={u}"));
+        assert_eq!(code, 0, "cocotb {u}:\n{out}");
+        assert!(out.contains("TESTS=2 PASS=2 FAIL=0"), "cocotb {u}:\n{out}");
+        // both tests, the plain stream and the one with a reset part way, checked every vector
+        assert_eq!(out.matches(&format!("{n} passed, 0 failed ({u}_axis, seed 1)")).count(), 2, "{out}");
+    }
+    flip_expected(&d.join("cart_pipeline_out.hex"), 7);
+    let (code, out) = sh_venv(&d, "make UNIT=cart_pipeline BUMPRTL_SEED=5");
+    assert_ne!(code, 0, "cocotb passed a wrong word:\n{out}");
+    assert!(out.contains("TESTS=2 PASS=0 FAIL=2"), "{out}");
+    assert!(out.contains("vector 7: got"), "{out}");
 }

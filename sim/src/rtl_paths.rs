@@ -69,6 +69,10 @@ pub trait AxisPaths: Sync {
     /// `dir/<unit>_axis.v` and `dir/<unit>_axis_tb.v` (which reads the unit's `<unit>_in.hex` and `<unit>_out.hex`,
     /// written beside it by `RtlPaths::selfcheck`), for `n` vectors from `source`: the paths written.
     fn selfcheck(&self, dir: &Path, n: usize, source: &str) -> Result<Vec<PathBuf>, String>;
+    /// `dir/<unit>_io.v`, `<unit>.core`, `test_<unit>.py` and the `Makefile` (`synth::package`): `waivers`, whether
+    /// `<unit>.vlt` is beside them; `scratch`, a folder for yosys's files of the fit check. The paths written, and
+    /// why the core has no `synth` target when it has none.
+    fn package(&self, dir: &Path, waivers: bool, scratch: &Path) -> Result<(Vec<PathBuf>, Option<String>), String>;
 }
 
 /// The AXI4-Stream paths of unit `U` with its wrapper's widths (`rtl::axis_of!` works them out: see `units`).
@@ -92,6 +96,11 @@ impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: u
         let tb = dir.join(format!("{}_tb.v", self.module()));
         synth::export::write_atomic(&tb, synth::axis_bench::bench::<U>(n, source).as_bytes())?;
         Ok(vec![v, tb])
+    }
+    fn package(&self, dir: &Path, waivers: bool, scratch: &Path) -> Result<(Vec<PathBuf>, Option<String>), String> {
+        let target = synth::package::synth_target::<U>(scratch);
+        let none = target.as_ref().err().cloned();
+        Ok((synth::package::write::<U>(dir, waivers, target)?, none))
     }
 }
 

@@ -48,7 +48,7 @@ pub struct Part {
     pub ff: u64,
     pub dsp: u64,
     pub bram: u64,
-    pnr: &'static [&'static str],
+    pub pnr: &'static [&'static str],
 }
 
 pub const UP5K: Part = Part {
@@ -245,7 +245,9 @@ impl SynthReport {
     }
 }
 
-fn wrapper<U: StreamUnit>() -> String {
+/// The serial I/O wrapper `<unit>_io` a unit is placed in: a shift chain in, a `hold` register, the unit, a shift
+/// chain out (three pins and a clock).
+pub fn io_wrapper<U: StreamUnit>() -> String {
     let ni: usize = 1 + U::INPUTS.iter().map(|p| p.1).sum::<usize>();
     let no: usize = 1 + U::OUTPUTS.iter().map(|p| p.1).sum::<usize>();
     let mut s = String::new();
@@ -546,7 +548,7 @@ pub fn synth_and_place<U: StreamUnit>(
         ..Default::default()
     };
     let w = format!("{}_io.v", U::NAME);
-    write_atomic(&dir.join(&w), wrapper::<U>().as_bytes())?;
+    write_atomic(&dir.join(&w), io_wrapper::<U>().as_bytes())?;
     let top = format!("{}_io", U::NAME);
     yosys(dir, part.family, &top, &[&format!("{}.v", U::NAME), &w], Some("wrapped.json"))?;
     let freq = format!("{freq_mhz}");
@@ -644,7 +646,7 @@ pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f
     let inputs = format!(
         "place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\n{freq_mhz}\nblocks by type",
         export::<U>().text,
-        wrapper::<U>(),
+        io_wrapper::<U>(),
         part.name
     );
     let pnr = match part.family {

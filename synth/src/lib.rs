@@ -9,6 +9,7 @@ pub mod cosim;
 pub mod export;
 pub mod fpga;
 pub mod lint;
+pub mod package;
 pub mod selfcheck;
 pub mod tools;
 

