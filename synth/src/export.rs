@@ -20,6 +20,13 @@ pub fn export_axis<U: StreamUnit, const IW: usize, const OW: usize, const A: usi
     named(rtl::axis::Axis::<U, IW, OW, A, C>::build(), &rtl::axis::Axis::<U, IW, OW, A, C>::name())
 }
 
+/// The wrapper's own logic around `U`, its control and output FIFO (`rtl::axis::AxisCtl`) at the depth the wrapper
+/// builds, as the module `<unit>_axis_ctl`: what the wrapper adds to the unit, synthesised alone.
+pub fn export_axis_ctl<U: StreamUnit, const OW: usize, const A: usize, const C: usize>() -> Exported {
+    let ctl = rtl::axis::AxisCtl::<OW, A, C>::new(rtl::axis::depth(U::LATENCY), U::LATENCY);
+    named(ctl, &format!("{}_axis_ctl", U::NAME))
+}
+
 /// Any block's Verilog with rust-hdl's `top` renamed `module`.
 fn named<B: Block>(mut uut: B, module: &str) -> Exported {
     uut.connect_all();

@@ -408,14 +408,51 @@ fn yosys_with(
 /// yosys figures of the unit alone in one family's cells (no place-and-route), written into `dir` and kept in the
 /// synthesis cache (`crate::cache`) under the hash of the unit's Verilog, the flow and yosys's version.
 pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
-    let v = export::<U>();
+    cached_cells(dir, family, &export::<U>(), FABRIC_PRODUCTS, |top, file| yosys(dir, family, top, &[file], None))
+}
+
+/// yosys figures of the unit alone with every product in a DSP block, however many the part has: one synthesis
+/// pass (`synth_unit` adds passes that move products into logic when an iCE40 has too few blocks). This is what a
+/// plain `synth_ice40 -dsp` / `synth_ecp5` flow, such as a FuseSoC target, makes of the unit.
+pub fn synth_unit_hard<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
+    if family == Family::Ecp5 {
+        // the project's flow moves no product into logic on the ECP5, so the two are one synthesis (and one cache entry)
+        return synth_unit::<U>(dir, family);
+    }
+    cached_cells(dir, family, &export::<U>(), "every product in a DSP block", |top, file| {
+        one_pass(dir, family, top, file)
+    })
+}
+
+/// yosys figures of what the AXI4-Stream wrapper adds to `U` (`export_axis_ctl`: its control and output FIFO,
+/// which hold no product), synthesised alone in one pass.
+pub fn synth_axis_ctl<U: StreamUnit, const OW: usize, const A: usize, const C: usize>(
+    dir: &Path,
+    family: Family,
+) -> Result<Cells, String> {
+    let v = crate::export::export_axis_ctl::<U, OW, A, C>();
+    cached_cells(dir, family, &v, "the AXI4-Stream wrapper's control alone", |top, file| {
+        one_pass(dir, family, top, file)
+    })
+}
+
+fn one_pass(dir: &Path, family: Family, top: &str, file: &str) -> Result<(String, u64), String> {
+    Ok((yosys_with(dir, family, top, &[file], None, KEEP_OPERAND_COPIES, None)?, 0))
+}
+
+/// The cells of the exported module `v` under `run` (yosys's log and its count of products built in logic, given
+/// the top module and its file), cached under the synthesis command, the flow's `how`, and the Verilog; the figures
+/// are also written to `<family>.cells` in `dir`.
+fn cached_cells(
+    dir: &Path,
+    family: Family,
+    v: &crate::export::Exported,
+    how: &str,
+    run: impl Fn(&str, &str) -> Result<(String, u64), String>,
+) -> Result<Cells, String> {
     v.write(dir)?;
     let key = cache::key(
-        &format!(
-            "cells\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\nblocks by type\n{}",
-            family.synth_command(),
-            v.text
-        ),
+        &format!("cells\n{}\n{KEEP_OPERAND_COPIES}\n{how}\nblocks by type\n{}", family.synth_command(), v.text),
         &["yosys"],
     );
     let saved = dir.join(format!("{family:?}.cells"));
@@ -428,7 +465,7 @@ pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, St
         write_atomic(&saved, text(&c).as_bytes())?;
         return Ok(c);
     }
-    let (log, soft) = yosys(dir, family, U::NAME, &[&format!("{}.v", U::NAME)], None)?;
+    let (log, soft) = run(&v.module, &format!("{}.v", v.module))?;
     let c = Cells { soft, ..cells(family, &log) };
     let text = text(&c);
     write_atomic(&saved, text.as_bytes())?;

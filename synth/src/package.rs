@@ -146,13 +146,12 @@ pub fn synth_target<U: StreamUnit>(dir: &Path) -> Result<SynthTarget, String> {
     }
     let mut passed = Vec::new();
     for p in crate::fpga::PARTS {
-        let c = crate::fpga::synth_unit::<U>(dir, p.family)?;
+        let c = crate::fpga::synth_unit_hard::<U>(dir, p.family)?;
         match p.overflow(&c) {
-            None if c.soft == 0 => {
+            None => {
                 let why = if passed.is_empty() { format!("it fits the {}", p.name) } else { passed.join("; ") };
                 return Ok(SynthTarget { part: *p, why });
             }
-            None => passed.push(format!("not {}: {} of its products would be built in logic", p.name, c.soft)),
             Some(o) => passed.push(format!("not {}: {o}", p.name)),
         }
     }
