@@ -800,6 +800,16 @@ fn a_report_plan_run_through_gnu_parallel_merges_into_the_report_run_in_one_proc
             && a.contains("no configuration meets it"),
         "{a}"
     );
+    // the AXI4-Stream wrapper's row for each pipeline: a FIFO of latency + 2 places in a RAM of the next power of two
+    for pipe in ["cart_surface_nearest", "cart_surface_nearest_hemi_oct"] {
+        let row = a.lines().find(|l| l.starts_with(&format!("| {pipe} | "))).unwrap_or_else(|| panic!("{a}"));
+        let f: Vec<&str> = row.split('|').map(str::trim).collect();
+        let (latency, places): (usize, usize) = (f[2].parse().unwrap(), f[3].parse().unwrap());
+        let (words, bits) = f[4].split_once(" × ").unwrap();
+        let words: usize = words.parse().unwrap();
+        assert!(places == latency + 2 && words.is_power_of_two() && words >= places && words < 2 * places, "{row}");
+        assert!(bits.parse::<usize>().unwrap() % 8 == 0 && f[5].parse::<u64>().unwrap() > 0, "{row}");
+    }
     assert!(many.join("pareto.png").is_file());
     // a point not computed is named when merging, in one line
     std::fs::remove_file(many.join("points").join("quad.cart_surface_nearest.txt")).unwrap();

@@ -73,6 +73,11 @@ pub trait AxisPaths: Sync {
     /// `<unit>.vlt` is beside them; `scratch`, a folder for yosys's files of the fit check. The paths written, and
     /// why the core has no `synth` target when it has none.
     fn package(&self, dir: &Path, waivers: bool, scratch: &Path) -> Result<(Vec<PathBuf>, Option<String>), String>;
+    /// The output FIFO: its places (`rtl::axis::depth`), the RAM's words (2^A) and the word's bits (TDATA's).
+    fn fifo(&self) -> (usize, usize, usize);
+    /// What the wrapper adds to the unit (its control and output FIFO) in `family`'s cells, from yosys (cached);
+    /// `dir` holds yosys's files.
+    fn ctl_cells(&self, dir: &Path, family: Family) -> Result<Cells, String>;
 }
 
 /// The AXI4-Stream paths of unit `U` with its wrapper's widths (`rtl::axis_of!` works them out: see `units`).
@@ -101,6 +106,12 @@ impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: u
         let target = synth::package::synth_target::<U>(scratch);
         let none = target.as_ref().err().cloned();
         Ok((synth::package::write::<U>(dir, waivers, target)?, none))
+    }
+    fn fifo(&self) -> (usize, usize, usize) {
+        (rtl::axis::depth(U::LATENCY), 1 << A, OW)
+    }
+    fn ctl_cells(&self, dir: &Path, family: Family) -> Result<Cells, String> {
+        synth::fpga::synth_axis_ctl::<U, OW, A, C>(dir, family)
     }
 }
 

@@ -34,6 +34,20 @@ pub struct PointFigures {
     pub lc: Option<u64>,
     pub fmax: Option<f64>,
     pub latency: usize,
+    /// the AXI4-Stream wrapper around the pipeline: its FIFO and what it adds in iCE40 cells
+    pub axis: Option<AxisCost>,
+}
+
+/// What the AXI4-Stream wrapper adds to a pipeline: its output FIFO (places, RAM words, bits a word) and the iCE40
+/// cells of its control and FIFO, synthesised alone.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct AxisCost {
+    pub depth: usize,
+    pub words: usize,
+    pub bits: usize,
+    pub lut4: u64,
+    pub ff: u64,
+    pub bram: u64,
 }
 
 impl PointFigures {
@@ -69,6 +83,10 @@ impl PointFigures {
             ("lc", o(self.lc.map(|x| x.to_string()))),
             ("fmax", o(self.fmax.map(|x| x.to_string()))),
             ("latency", self.latency.to_string()),
+            (
+                "axis",
+                o(self.axis.map(|a| format!("{} {} {} {} {} {}", a.depth, a.words, a.bits, a.lut4, a.ff, a.bram))),
+            ),
         ] {
             let _ = writeln!(s, "{k}={v}");
         }
@@ -110,6 +128,19 @@ impl PointFigures {
             lc: get("lc").filter(|v| !v.is_empty()).and_then(|v| v.parse().ok()),
             fmax: get("fmax").filter(|v| !v.is_empty()).and_then(|v| v.parse().ok()),
             latency: get("latency")?.parse().ok()?,
+            axis: get("axis").and_then(|v| {
+                match v.split(' ').filter_map(|x| x.parse::<u64>().ok()).collect::<Vec<_>>()[..] {
+                    [depth, words, bits, lut4, ff, bram] => Some(AxisCost {
+                        depth: depth as usize,
+                        words: words as usize,
+                        bits: bits as usize,
+                        lut4,
+                        ff,
+                        bram,
+                    }),
+                    _ => None,
+                }
+            }),
         })
     }
 }
@@ -132,6 +163,8 @@ mod tests {
             (Some((0.1, 2.0)), Some((0.2, 3.0)), None, Some((0.5, 1.5)), Some(37.5), Some(3082), true);
         (a.units, a.knob, a.pipeline, a.part, a.model_mpx) =
             ("x → y".into(), "normalise 2^6 table, 1 Newton".into(), "cart_surface".into(), "up5k".into(), 12.5);
+        assert_eq!(PointFigures::from_text(&a.to_text()), Some(a.clone()));
+        a.axis = Some(AxisCost { depth: 50, words: 64, bits: 24, lut4: 95, ff: 27, bram: 1 });
         assert_eq!(PointFigures::from_text(&a.to_text()), Some(a));
         assert_eq!(PointFigures::from_text("id=x\n"), None);
     }

@@ -1,6 +1,6 @@
 //! One point computed: its errors on its scene, the model's speed, and its cost.
 
-use super::figures::{stats, PointFigures};
+use super::figures::{stats, AxisCost, PointFigures};
 use super::points::{build, knob_text, scene, Point, OWN_LUT};
 use super::split::three_parts;
 use sim::pipelines::Family;
@@ -137,6 +137,11 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<PointFigures, Str
     }
     (r.lut4, r.ff, r.dsp, r.bram, r.soft) =
         (lut4.max(0) as u64, ff.max(0) as u64, dsp.max(0) as u64, bram.max(0) as u64, soft.max(0) as u64);
+    // the AXI4-Stream wrapper's own cells, the same for every point of a pipeline (cached)
+    let axis = sim::units::unit(m.name)?.axis;
+    let (depth, words, bits) = axis.fifo();
+    let a = axis.ctl_cells(&udir.join("axis_ctl"), synth::fpga::Family::Ice40)?;
+    r.axis = Some(AxisCost { depth, words, bits, lut4: a.lut4, ff: a.ff, bram: a.bram });
     r.part = "-".into();
     if place && !r.estimated {
         if let Some(rep) = crate::units::place_cached(m.name, &udir)? {
