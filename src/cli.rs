@@ -44,7 +44,7 @@ enum Cmd {
         #[arg(long)]
         out: PathBuf,
     },
-    /// Trace a unit in rust-hdl to a VCD (hard cases, then random vectors)
+    /// Trace a unit in rust-hdl to a VCD (hard cases, then random vectors), and with --fst an FST beside it
     Wave {
         unit: String,
         /// the VCD file; `-` is standard output
@@ -52,6 +52,9 @@ enum Cmd {
         out: PathBuf,
         #[arg(long, default_value_t = 64)]
         count: usize,
+        /// also the same trace as an FST (the VCD's name with `.fst`), for GTKWave or Surfer
+        #[arg(long)]
+        fst: bool,
     },
     /// Synthesise and place a unit (through a serial I/O wrapper): LUT, FF, DSP, BRAM, fmax, each as a share of
     /// the part
@@ -315,7 +318,7 @@ pub fn main() -> Result<(), String> {
         Cmd::Verilog { scene: Some(scene), out, .. } => crate::unit_commands::verilog_scene(scene, out)?,
         Cmd::Verilog { unit: None, .. } => return Err("verilog: name a unit or --scene FILE".into()),
         Cmd::Verilog { unit: Some(name), out, .. } => crate::unit_commands::verilog(name, out)?,
-        Cmd::Wave { unit: name, out, count } => crate::unit_commands::wave(name, out, count)?,
+        Cmd::Wave { unit: name, out, count, fst } => crate::unit_commands::wave(name, out, count, fst)?,
         Cmd::Widths { unit: name, budget: Some(b), target, dir, .. } => {
             crate::unit_commands::widths_budget(name, b, target, dir)?
         }

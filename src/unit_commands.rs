@@ -88,9 +88,15 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
 }
 
 /// A unit traced in rust-hdl to a VCD.
-pub fn wave(name: String, out: PathBuf, count: usize) -> Result<(), String> {
+pub fn wave(name: String, out: PathBuf, count: usize, fst: bool) -> Result<(), String> {
     let unit = sim::units::unit(&name)?;
     let u = unit.model;
+    if fst && out.as_os_str() == "-" {
+        return Err("wave --fst: an FST is written to a file (it is seeked), so --out must name the VCD file".into());
+    }
+    if fst && out.extension().is_some_and(|e| e == "fst") {
+        return Err(format!("wave --fst: --out {} is the VCD's name; the FST goes beside it as .fst", out.display()));
+    }
     let inputs = vectors::unit::generate(u, false, count, 1)?;
     if out.as_os_str() == "-" {
         let w = Box::new(std::io::BufWriter::new(std::io::stdout()));
@@ -98,6 +104,11 @@ pub fn wave(name: String, out: PathBuf, count: usize) -> Result<(), String> {
     } else {
         unit.rtl.write_vcd(u, &inputs, &out)?;
         println!("{} ({} vectors)", out.display(), inputs.len());
+        if fst {
+            let f = out.with_extension("fst");
+            let changes = sim::fst::vcd_to_fst(&out, &f)?;
+            println!("{} ({changes} value changes)", f.display());
+        }
     }
     Ok(())
 }

@@ -223,6 +223,28 @@ fn non_utf8_output_paths_work_or_fail_cleanly() {
 }
 
 #[test]
+fn wave_fst_writes_the_trace_beside_the_vcd_and_refuses_standard_output_or_an_fst_name() {
+    let d = scratch("fst");
+    let vcd = d.join("gloss.vcd");
+    let (code, out, err) = bumprtl(&["wave", "gloss", "--count", "16", "--fst", "--out", vcd.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let fst = d.join("gloss.fst");
+    assert!(out.lines().any(|l| l.starts_with(&fst.display().to_string()) && l.ends_with("value changes)")), "{out}");
+    // FST's header block: type 0, then its length, 329 bytes, big-endian
+    let bytes = std::fs::read(&fst).unwrap();
+    assert_eq!(bytes[..9], [0, 0, 0, 0, 0, 0, 0, 1, 0x49], "not an FST header");
+    for (args, says) in [
+        (vec!["wave", "gloss", "--fst", "--out", "-"], "--out must name the VCD file"),
+        (vec!["wave", "gloss", "--fst", "--out", "x.fst"], "the FST goes beside it"),
+    ] {
+        let (code, out, err) = bumprtl(&args);
+        assert_eq!((code, out.as_str(), err.lines().count()), (1, "", 1), "{args:?}: {err}");
+        assert!(err.contains(says), "{err}");
+    }
+    assert!(!std::path::Path::new("x.fst").exists() && !std::path::Path::new("x.vcd").exists());
+}
+
+#[test]
 fn verilog_writes_the_module_its_testbench_the_golden_vectors_the_axis_wrapper_and_the_package() {
     let d = scratch("tb");
     let (code, out, err) = bumprtl(&["verilog", "dot3", "--out", d.to_str().unwrap()]);
