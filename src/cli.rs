@@ -37,7 +37,7 @@ enum Cmd {
     Verilog {
         #[arg(required_unless_present = "scene")]
         unit: Option<String>,
-        /// instead of a unit: the pipeline this scene file is rendered by (its module alone)
+        /// instead of a unit: the pipeline this scene file is rendered by, exported as a unit is
         #[arg(long, conflicts_with = "unit")]
         scene: Option<PathBuf>,
         /// output folder; `-` prints the module alone to standard output

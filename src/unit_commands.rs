@@ -20,20 +20,18 @@ pub fn vectors(name: String, exhaustive: bool, count: usize, seed: u64, out: Opt
     Ok(())
 }
 
-/// The Verilog of the pipeline a scene file is rendered by.
+/// The pipeline a scene file is rendered by, exported as `verilog <unit>` exports a unit (to `-`: its module alone).
 pub fn verilog_scene(scene: PathBuf, out: PathBuf) -> Result<(), String> {
     let spec = sim::scene_file::load(&scene)?;
     let row = spec.pipeline;
-    let text = row.rtl().verilog();
     if out.as_os_str() == "-" {
-        print!("{text}");
-    } else {
-        crate::output::writable_folder(&out)?;
-        let p = out.join(format!("{}.v", row.name));
-        synth::export::write_atomic(&p, text.as_bytes())?;
-        println!("{} ({}: {})", p.display(), spec.name, row.units.join(" → "));
+        print!("{}", row.rtl().verilog());
+        return Ok(());
     }
-    Ok(())
+    crate::output::writable_folder(&out)?;
+    println!("{}: {} ({})", spec.name, row.name, row.units.join(" → "));
+    // the pipeline is a unit of the table, exported whole: its bench, its wrapper and the package
+    verilog(row.name.to_string(), out)
 }
 
 /// A unit's Verilog with a self-checking testbench of its golden vectors, the same unit behind its AXI4-Stream

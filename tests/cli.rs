@@ -729,18 +729,30 @@ fn synthesis_results_are_cached_under_a_content_hash_and_reused() {
 #[test]
 fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
     let d = scratch("verilog-scene");
-    let (code, out, err) =
-        bumprtl(&["verilog", "--scene", scenes().join("torus.toml").to_str().unwrap(), "--out", d.to_str().unwrap()]);
+    let (code, module, err) =
+        bumprtl(&["verilog", "--scene", scenes().join("torus.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0, "{err}");
     // the torus with one light per triangle and a little gloss: cart_surface, which holds a gloss unit and no
     // light interpolator
-    assert!(
-        out.contains("cart_surface.v") && out.contains("bilinear → cart_decode → normalise → dot3 → gloss → blend)"),
-        "{out}"
-    );
-    let (_, module, _) = bumprtl(&["verilog", "cart_surface", "--out", "-"]);
-    assert_eq!(std::fs::read_to_string(d.join("cart_surface.v")).unwrap(), module);
+    let (_, unit, _) = bumprtl(&["verilog", "cart_surface", "--out", "-"]);
+    assert_eq!(module, unit);
     assert!(!module.contains("l0_x") && !module.contains("$light_norm") && module.contains("module cart_surface("));
+    // into a folder, the scene's pipeline is exported as its unit is: bench, wrapper, waivers, package
+    let (code, out, err) = bumprtl(&[
+        "verilog",
+        "--scene",
+        scenes().join("sphere_polar.toml").to_str().unwrap(),
+        "--out",
+        d.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.lines().next().is_some_and(|l| l.contains(": polar_pipeline (")), "{out}");
+    let files = ["polar_pipeline.v", "polar_pipeline_tb.v", "polar_pipeline_axis.v", "polar_pipeline_axis_tb.v"];
+    for f in files.into_iter().chain(["polar_pipeline.core", "test_polar_pipeline.py", "Makefile"]) {
+        assert!(d.join(f).is_file() && out.lines().any(|l| l.ends_with(f)), "{f}: {out}");
+    }
+    let (_, unit, _) = bumprtl(&["verilog", "polar_pipeline", "--out", "-"]);
+    assert_eq!(std::fs::read_to_string(d.join("polar_pipeline.v")).unwrap(), unit);
     // the demo's torus: on the texture unit (its memory's write port, the bilinear front), lights per vertex (so the
     // light interpolator and its normaliser) and C = 0 (so no gloss unit)
     let (code, text, _) = bumprtl(&["verilog", "--scene", scenes().join("demo.toml").to_str().unwrap(), "--out", "-"]);
