@@ -18,7 +18,9 @@ pub fn accuracy(directions: usize, samples: usize) {
     {
         stat_line(&r.unit, &r.metric, &r.stats);
     }
-    println!("\nheight maps (seed 001): each filter against analytic surfaces, angle to the true normal in degrees");
+    println!(
+        "\nheight maps (US 2004/0207631): each filter against analytic surfaces, angle to the true normal in degrees"
+    );
     println!(
         "(float: the method in reals; codes: 8-bit UQ6.2 heights (4-bit UQ3.1 where named) with scale k; exact: the"
     );

@@ -112,7 +112,8 @@ enum Cmd {
         #[arg(long, default_value = "target/synth/lut-sizes")]
         dir: PathBuf,
     },
-    /// Quantize a normal map (RGB PNG) or a height map (grey PNG) to a palette of N normals (seed 004): the palette,
+    /// Quantize a normal map (RGB PNG) or a height map (grey PNG) to a palette of N normals (Tarini et al.): the
+    /// palette,
     /// the index map and its mip chain into DIR
     Quantize {
         map: PathBuf,

@@ -1,6 +1,7 @@
-//! `bumprtl demo`: the embedded default scene through every pipeline — seed 000's Cartesian (second embodiment,
-//! with the seed's texels and with hemi-octahedral ones) and polar (first embodiment, FIG. 3), seed 001's height
-//! map, seed 004's palette at s_N = 256 and 4,096 — each through four paths (f64 ideal, bit-exact model, rust-hdl, Verilator), with pictures, waveforms, the Verilog, the seed's polar
+//! `bumprtl demo`: the embedded default scene through every pipeline — US 6,819,319's Cartesian (second embodiment,
+//! with the seed's texels and with hemi-octahedral ones) and polar (first embodiment, FIG. 3), US 2004/0207631's height
+//! map, Tarini et al.'s palette at s_N = 256 and 4,096 — each through four paths (f64 ideal, bit-exact model, rust-hdl,
+//! Verilator), with pictures, waveforms, the Verilog, the seed's polar
 //! shortcomings shown, and one table of speed, hardware cost and error. The pipelines do the work
 //! (`sim::pipeline`); this file is the command's flow and its printing.
 
@@ -173,7 +174,7 @@ pub fn run(
     png("below_horizon_cartesian.png", &|k| [to8(sc.low_cx[k]); 3])?;
     png("below_horizon_polar.png", &|k| [to8(sc.low_px[k]); 3])?;
 
-    // seed 001's variants: FIG. 8a/8b on a coarse map of the procedural heights, B-spline colour beside bilinear
+    // US 2004/0207631's variants: FIG. 8a/8b on a coarse map of the procedural heights, B-spline colour beside bilinear
     let d = Scene::default();
     let fig8 = sim::variants::fig8(size, d.relief * sim::variants::FIG8_TEXELS as f64 / d.tex as f64); // the same slopes as the scene's
     png("fig8a_blinn.png", &|k| [fig8.blinn[k]; 3])?;
@@ -320,7 +321,7 @@ pub fn run(
     row(&format!("    polar N·L, the light moved onto it: {}", sc.low_moved), &sc.low_polar);
     println!();
     let n8 = sim::variants::FIG8_TEXELS;
-    println!("seed 001's variants (bit-exact models; {n8}x{n8} maps magnified to {size}x{size})");
+    println!("US 2004/0207631's variants (bit-exact models; {n8}x{n8} maps magnified to {size}x{size})");
     println!(
         "FIG. 8a/8b, largest jump across a texel edge (methods in reals): N·L derivative Blinn {:.4}, B-spline {:.4}; cross tangent derivative Blinn {:.4}, B-spline {:.4}",
         fig8.jumps.blinn.0, fig8.jumps.bspline.0, fig8.jumps.blinn.1, fig8.jumps.bspline.1

@@ -41,7 +41,7 @@ fn case(
 /// The cases run on an rtl block.
 pub fn rtl_cases() -> Vec<Case> {
     let mut v = vec![];
-    // seed 000, the Cartesian texel decode: illegal texels, texel 255
+    // US 6,819,319, the Cartesian texel decode: illegal texels, texel 255
     let legal = |o: &[Vec<i64>]| {
         let b = &o[o.len() - 1];
         (format!("({}, {}, {})", b[0], b[1], b[2]), b[1] >= 1 && b[0].abs() + b[1] + b[2].abs() == 255)
@@ -50,7 +50,7 @@ pub fn rtl_cases() -> Vec<Case> {
         v.push(case(
             "cart_decode",
             &format!("invalid texel ({}, {}): outside the diamond", t[0], t[1]),
-            "a legal hemisphere vector: y ≥ 1, |x| + y + |z| = 255 (seed 000: guard against illegal texels)",
+            "a legal hemisphere vector: y ≥ 1, |x| + y + |z| = 255 (US 6,819,319: guard against illegal texels)",
             vec![t.to_vec()],
             legal,
         ));
@@ -172,7 +172,7 @@ pub fn rtl_cases() -> Vec<Case> {
         vec![at(133, 5), at(5, 5)],
         |o| (format!("shade {} against {}", o[0][1], o[1][1]), o[0][1] < o[1][1]),
     ));
-    // seed 001: the steepest height steps
+    // US 2004/0207631: the steepest height steps
     let step = |w: [i64; 9], ub: i64, vb: i64, s: i64| [w.to_vec(), vec![ub, vb, s]].concat();
     v.push(case(
         "height_pipeline",

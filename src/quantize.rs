@@ -1,4 +1,5 @@
-//! `bumprtl quantize MAP.png --size N`: seed 004's preprocessing on a user's map. An RGB PNG is a tangent-space normal
+//! `bumprtl quantize MAP.png --size N`: Tarini et al.'s preprocessing on a user's map. An RGB PNG is a tangent-space
+//! normal
 //! map (OpenGL: green up; `--green-down` for DirectX's), a grey PNG a height map turned into normals by §4.1's plane
 //! fit. Writes the palette (CSV and a swatch), the index map (16-bit grey PNG and raw little-endian u16) and its mip
 //! chain, and prints what it found and how long each step took. The map is read, and refused in one line, before
@@ -35,7 +36,8 @@ pub fn run(a: &Args) -> Result<(), String> {
     let (normals, what) = if sim::heightmap::is_grey(&img) {
         let relief = a.relief.unwrap_or(w.max(h) as f64 / 16.0);
         let heights: Vec<f64> = sim::heightmap::grey_values(&img).iter().map(|g| g * relief).collect();
-        // the plane fit's frame (x right, y up out of the surface, z down the image) → OpenGL's (x, y up the image, z out)
+        // the plane fit's frame (x right, y up out of the surface, z down the image) → OpenGL's (x, y up the image, z
+        // out)
         let n = plane_fit::normals(&heights, w, h, a.q).into_iter().map(|p| [p[0], -p[2], p[1]]).collect();
         (n, format!("a grey PNG: a height map (white {relief:.2} texels above black), normals by the least-squares plane over {} neighbours", a.q))
     } else {

@@ -31,7 +31,7 @@ pub mod shared {
     pub mod normalise;
 }
 
-/// Seed 000's second embodiment: Cartesian texels, per-pixel lights.
+/// US 6,819,319's second embodiment: Cartesian texels, per-pixel lights.
 pub mod cartesian {
     pub mod cart_decode;
     pub mod cart_decode_hemi_oct;
@@ -42,7 +42,7 @@ pub mod cartesian {
     pub mod wiring;
 }
 
-/// Seed 000's first embodiment (FIG. 3): polar texels, one light per surface.
+/// US 6,819,319's first embodiment (FIG. 3): polar texels, one light per surface.
 pub mod polar {
     pub mod cos_sign;
     pub mod polar_pipeline;
@@ -52,7 +52,7 @@ pub mod polar {
     pub mod tables;
 }
 
-/// Seed 001: normals generated from height maps on the texture filter's bilinear units.
+/// US 2004/0207631: normals generated from height maps on the texture filter's bilinear units.
 pub mod height {
     pub mod blend_adjust;
     pub mod blinn_pipeline;
@@ -66,7 +66,7 @@ pub mod height {
     pub mod texture_filter;
 }
 
-/// Seed 004 (Tarini et al. 2000): quantized normal maps and per-frame colour tables.
+/// Tarini et al.: quantized normal maps and per-frame colour tables.
 pub mod palette {
     pub mod palette_lookup;
     pub mod palette_pipeline;

@@ -1,8 +1,8 @@
 //! A pipeline, as the demo and the renderers see it: its row of the table (`crate::pipelines`: the units it holds,
 //! its model and its rtl block), how it builds its per-pixel inputs from a scene (with the f64 ideal of every pixel
-//! beside them), and how it reads a shade and a colour off its outputs. One implementation per family: seed 000's
-//! Cartesian pipelines (lights per vertex, or one light per surface) and polar pipelines, seed 001's height-map
-//! pipeline and seed 004's palette pipelines; `build` makes a row's.
+//! beside them), and how it reads a shade and a colour off its outputs. One implementation per family: US 6,819,319's
+//! Cartesian pipelines (lights per vertex, or one light per surface) and polar pipelines, US 2004/0207631's height-map
+//! pipeline and Tarini et al.'s palette pipelines; `build` makes a row's.
 
 use crate::pipelines::{self, Choices, Family, Per, Row, Settings};
 use crate::prepared::{Ideal, Prepared};
@@ -77,7 +77,7 @@ pub fn gloss_shade(conc: i64, n: [f64; 3], l: [f64; 3]) -> f64 {
     gloss::ideal_real(conc, x) / 1023.0 * 255.0
 }
 
-/// Seed 000's second embodiment: the height map's normals encoded as Cartesian texels (the seed's offset binary,
+/// US 6,819,319's second embodiment: the height map's normals encoded as Cartesian texels (the seed's offset binary,
 /// or hemi-octahedral with the decode that reads it), bilinear, the vertex lights interpolated per pixel; with the
 /// gloss unit, or for a material with C = 0 without it (`cart_pipeline_matte`, `cart_pipeline_hemi_oct_matte`).
 #[derive(Clone, Copy, Debug)]
@@ -193,7 +193,7 @@ fn cartesian_prepare(scene: &Scene, decode: Decode, ports: usize, fill: FillCart
     p
 }
 
-/// Seed 000's Cartesian pipeline built for a scene with one light per surface (`cart_surface` and its variants):
+/// US 6,819,319's Cartesian pipeline built for a scene with one light per surface (`cart_surface` and its variants):
 /// the surface's light made a unit vector once (as the full pipeline's light path would make it) and sent with
 /// each pixel; no gloss unit when C = 0; the texels bilinear or the nearest one.
 #[derive(Clone, Copy, Debug)]
@@ -435,7 +435,7 @@ impl Pipeline for CartTex {
     }
 }
 
-/// Seed 000's first embodiment (FIG. 3): the same height map's normals polar-encoded (S, R) in `scale`; the texture
+/// US 6,819,319's first embodiment (FIG. 3): the same height map's normals polar-encoded (S, R) in `scale`; the texture
 /// filtered the way the colour filter would, S and R bilinearly blended as plain numbers (the seed's shortcoming 2:
 /// across R's 255 → 0 wrap this is wrong); one light per surface (shortcoming 1: the hardware cannot interpolate
 /// polar lights), the direction at the quad's centre, moved onto the horizon if below it (shortcoming 3), weight
@@ -532,7 +532,8 @@ impl Pipeline for Polar {
     }
 }
 
-/// Seed 001 (FIG. 7): the scene's height map itself, 8-bit UQ6.2 heights (the scale factor k of ¶82 making up the
+/// US 2004/0207631 (FIG. 7): the scene's height map itself, 8-bit UQ6.2 heights (the scale factor k of ¶82 making up
+/// the
 /// range), through the normal generator on the colour filter's bilinear units. The address unit's work (height
 /// mode: no half-texel subtraction, clamped) and the 3×3 fetch are done here, in the set-up; the shade is
 /// max(0, N·L) with the surface's one light (the light at the quad's centre), so that its error against the
@@ -656,7 +657,7 @@ impl Pipeline for Height {
     }
 }
 
-/// Seed 004 (Tarini et al.): the scene's normal map quantized to a palette of `s_n` normals (median cut and k-means
+/// Tarini et al.: the scene's normal map quantized to a palette of `s_n` normals (median cut and k-means
 /// on the sphere), an index per texel, point-sampled (indices cannot be blended: the texel nearest the pixel's
 /// sample point); the frame's colour table built by the table builder from the palette's normals (S10, rounded),
 /// one entry a clock, as the frame's prologue, then one table read a pixel. One light per surface (the light at the

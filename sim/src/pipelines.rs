@@ -6,7 +6,8 @@
 //! row, and `crate::pipeline::build` makes a row's `Pipeline` (the family's behaviour: set-up, shade, colour).
 //!
 //! A new pipeline is its rtl top, its model, its test, its row in the table of units and its row here (and, for a
-//! new family, its `Pipeline` implementation). A test keeps every row reachable from exactly one combination of scene choices.
+//! new family, its `Pipeline` implementation). A test keeps every row reachable from exactly one combination of scene
+//! choices.
 
 use crate::rtl_paths::RtlPaths;
 use crate::scene::Scene;
@@ -17,9 +18,10 @@ use vectors::cart_surface::Variant;
 use vectors::polar_encode::Scale;
 use vectors::UnitModel;
 
-/// The bump map's encoding, which chooses the family: seed 000's Cartesian texels (the seed's, or hemi-oct with
-/// its decode), seed 000's polar texels (the seed's 256 steps or the Dreamcast toolchains' 255), seed 001's 8-bit
-/// heights, seed 004's palette.
+/// The bump map's encoding, which chooses the family: US 6,819,319's Cartesian texels (the seed's, or hemi-oct with
+/// its decode), US 6,819,319's polar texels (the seed's 256 steps or the Dreamcast toolchains' 255), US 2004/0207631's
+/// 8-bit
+/// heights, Tarini et al.'s palette.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
 pub enum Encoding {
@@ -125,17 +127,17 @@ impl Choices {
 /// A pipeline family: the rows that share one `Pipeline` implementation, with the family's own parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Family {
-    /// seed 000's second embodiment, lights per vertex
+    /// US 6,819,319's second embodiment, lights per vertex
     Cartesian(Decode),
-    /// seed 000's Cartesian path with one light per surface
+    /// US 6,819,319's Cartesian path with one light per surface
     CartSurface(Variant),
     /// a Cartesian pipeline (the host-fed row named `host`) on the texture unit, with this filter
     CartTex { host: &'static str, filter: Filter },
-    /// seed 000's first embodiment (FIG. 3)
+    /// US 6,819,319's first embodiment (FIG. 3)
     Polar(Scale),
-    /// seed 001's height map
+    /// US 2004/0207631's height map
     Height,
-    /// seed 004 (Tarini et al.)
+    /// Tarini et al.
     Palette,
 }
 

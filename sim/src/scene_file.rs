@@ -470,7 +470,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                 let loaded = crate::heightmap::load(&file).map_err(map_err)?;
                 if encoding == Encoding::Heights && loaded.depth == 16 {
                     return Err(at.err(p.span(), format!(
-                        "[bump] path: {}: a 16-bit height map where 8 bits are required (seed 001's path stores 8-bit heights); save it as 8-bit",
+                        "[bump] path: {}: a 16-bit height map where 8 bits are required (US 2004/0207631's path stores 8-bit heights); save it as 8-bit",
                         file.display()
                     )));
                 }
@@ -489,7 +489,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
         }
     }
     if encoding == Encoding::Heights && source == Source::NormalMap {
-        return Err(at.err(bump.encoding.as_ref().map_or(bump_span.clone(), |e| e.span()), "[bump] encoding = \"heights\": a normal map has no heights (seed 001's path needs a height map or a procedural one)"));
+        return Err(at.err(bump.encoding.as_ref().map_or(bump_span.clone(), |e| e.span()), "[bump] encoding = \"heights\": a normal map has no heights (US 2004/0207631's path needs a height map or a procedural one)"));
     }
 
     // the light
@@ -713,7 +713,8 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
 
 /// The demo's scene, embedded: `scenes/demo.toml`, a torus.
 pub const DEMO: &str = include_str!("../../scenes/demo.toml");
-/// The quad every pipeline is compared on (the height-map and palette pipelines draw the quad only): `scenes/quad.toml`.
+/// The quad every pipeline is compared on (the height-map and palette pipelines draw the quad only):
+/// `scenes/quad.toml`.
 pub const QUAD: &str = include_str!("../../scenes/quad.toml");
 
 /// The embedded demo scene as read, with the pipeline it names.

@@ -1,4 +1,4 @@
-//! Seed 000's polar shortcomings, measured on a scene: the polar path against an ideal lit by the surface's one
+//! US 6,819,319's polar shortcomings, measured on a scene: the polar path against an ideal lit by the surface's one
 //! light and against its own codes; the pixels filtered across R's 255 → 0 wrap (with the Cartesian path on the same
 //! pixels); a light below the horizon, through both paths' N·L.
 

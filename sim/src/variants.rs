@@ -1,4 +1,5 @@
-//! Seed 001's variants as pictures: FIG. 8a against 8b (the same coarse height map shaded through Blinn's function
+//! US 2004/0207631's variants as pictures: FIG. 8a against 8b (the same coarse height map shaded through Blinn's
+//! function
 //! and through the B-spline, both bit-exact models), and ¶87's bi-quadratic B-spline colour filtering beside the
 //! ordinary bilinear colour filter on the same texture, each against an f64 reference.
 

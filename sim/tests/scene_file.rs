@@ -306,7 +306,8 @@ fn bad_maps_are_one_line_naming_the_scene_line_and_the_map() {
     let cut = dir.join("cut.png");
     std::fs::write(&cut, &whole[..whole.len() / 2]).unwrap();
     refused(&with_map("height_map", &cut, ""), "s.toml:4:8:", &["cut.png", "not a readable PNG"]);
-    // a zero-width PNG: the grey map's bytes with IHDR's width set to 0 (its CRC left as it was: either refusal is right)
+    // a zero-width PNG: the grey map's bytes with IHDR's width set to 0 (its CRC left as it was: either refusal is
+    // right)
     let mut zero = whole.clone();
     zero[16..20].copy_from_slice(&0u32.to_be_bytes());
     let zp = dir.join("zero.png");
@@ -315,7 +316,7 @@ fn bad_maps_are_one_line_naming_the_scene_line_and_the_map() {
     let empty = dir.join("empty.png");
     std::fs::write(&empty, b"").unwrap();
     refused(&with_map("height_map", &empty, ""), "s.toml:4:8:", &["empty.png", "empty file"]);
-    // 16 bits where 8 are required: a normal map, and heights for seed 001's path
+    // 16 bits where 8 are required: a normal map, and heights for US 2004/0207631's path
     let rgb16 = image::ImageBuffer::<image::Rgb<u16>, _>::from_fn(4, 4, |_, _| image::Rgb([32768, 32768, 65535]));
     let p16 = png("normals16.png", image::DynamicImage::ImageRgb16(rgb16));
     refused(&with_map("normal_map", &p16, ""), "s.toml:4:8:", &["normals16.png", "16-bit", "8 bits are required"]);

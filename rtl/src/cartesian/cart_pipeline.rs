@@ -1,4 +1,4 @@
-//! `cart_pipeline`: seed 000's second embodiment, one pixel per clock, built from the unit blocks themselves:
+//! `cart_pipeline`: US 6,819,319's second embodiment, one pixel per clock, built from the unit blocks themselves:
 //! bilinear(TexelX, TexelZ) → cart_decode → normalise ─────────────┐
 //! light_iter → (delay 7) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
 //! Side-band values ride beside the stages they skip: C in a block-RAM delay line (`RamDelay`), the mode and the

@@ -1,4 +1,4 @@
-//! `cart_surface`: seed 000's Cartesian pipeline for a scene with one light per surface (a directional light, or
+//! `cart_surface`: US 6,819,319's Cartesian pipeline for a scene with one light per surface (a directional light, or
 //! a point light taken at the surface's centre): the light arrives already a unit vector, once per surface, so the
 //! pipeline holds no `light_iter` and no light normaliser. The light still travels with each pixel (a curved
 //! surface's triangles each have their own), in one block-RAM delay line to the dot product.

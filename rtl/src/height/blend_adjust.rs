@@ -1,4 +1,5 @@
-//! `blend_adjust`: seed 001's blend-factor adjust unit [153]: `U0 = ½ + U/2`, `U1 = U/2` (V likewise) in 1/512 (U9),
+//! `blend_adjust`: US 2004/0207631's blend-factor adjust unit [153]: `U0 = ½ + U/2`, `U1 = U/2` (V likewise) in 1/512
+//! (U9),
 //! exact: U0 is U with a 1 above it, U1 is U itself. "Completely trivial", as the seed says: wires and one register.
 //! Latency 1.
 

@@ -1,4 +1,4 @@
-//! `blinn_pipeline`: Blinn's height-map function (seed 001 ¶31, ¶85) on the colour filter's own bilinear units:
+//! `blinn_pipeline`: Blinn's height-map function (US 2004/0207631 ¶31, ¶85) on the colour filter's own bilinear units:
 //! the red, green and blue units (`BilinearUnit<8, 9, 1>`) blend the top-left, top-right and bottom-left grids of
 //! a..h at the plain factors doubled to 9 bits (no blend adjust, no alpha unit, no texel k); the tangent unit shrinks
 //! to G − R and B − R, each shifted down to the normal unit's half derivative; then height_normal [156] and the
@@ -96,7 +96,9 @@ impl Logic for BlinnPipeline {
         // the units' exact results (U25 of 32) → G − R and B − R (S26, two's complement in 32, exact)
         self.w_d1.next = self.unit[1].wide.val() - self.unit[0].wide.val(); // S26 in 32, exact
         self.w_d2.next = self.unit[2].wide.val() - self.unit[0].wide.val(); // S26 in 32, exact
-                                                                            // bits 6..26 of the two's complement S26: >> 6, floor, S20 in 21 (as the tangent unit's last stage)
+                                                                            // bits 6..26 of the two's complement S26:
+                                                                            // >> 6, floor, S20 in 21 (as the tangent
+                                                                            // unit's last stage)
         self.s2_t1.d.next = self.w_d1.val().get_bits::<21>(6);
         self.s2_t2.d.next = self.w_d2.val().get_bits::<21>(6);
         // normal [156] and the shared normaliser

@@ -1,4 +1,4 @@
-//! `height_addr`: seed 001's address unit [150], one axis: a UQ8.8 texel coordinate → the integer texel (U8) and
+//! `height_addr`: US 2004/0207631's address unit [150], one axis: a UQ8.8 texel coordinate → the integer texel (U8) and
 //! the blend factor (U8) on a 2^size_log2-texel axis (size_log2 ≥ 8 read as 8), wrapping or clamping at the
 //! border; colour mode subtracts half a texel [51], height mode bypasses it. See `vectors::height_addr`.
 //! Latency 2: the shifted coordinate and the axis's span; the wrap or the clamp, and the split.

@@ -1,4 +1,5 @@
-//! `height_fetch`: seed 001's texel fetch [151] in height mode with the map's memory, 2×2-interleaved (¶55): word
+//! `height_fetch`: US 2004/0207631's texel fetch [151] in height mode with the map's memory, 2×2-interleaved (¶55):
+//! word
 //! (X, Y) holds heights (2X + x, 2Y + y) in byte x + 2y, and the words sit in four banks by (X mod 2, Y mod 2), so
 //! the (at most) two word columns and two word rows that any 3×3 window touches come from four different banks in
 //! one clock. See `vectors::height_fetch` for the ports and the write/read protocol.

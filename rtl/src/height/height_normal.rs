@@ -1,4 +1,4 @@
-//! `height_normal`: seed 001's normal unit [156]: N = 7·(−k·Tang1y, 2, −k·Tang2y) (16 fraction bits), brought to
+//! `height_normal`: US 2004/0207631's normal unit [156]: N = 7·(−k·Tang1y, 2, −k·Tang2y) (16 fraction bits), brought to
 //! S10 for the shared normaliser by one shift for all three components, the smallest that keeps the largest rounded
 //! magnitude ≤ 511. See `vectors::height_normal`. Latency 12: 7k; the two `SmMulWide`s; the larger product; the
 //! largest magnitude; the

@@ -1,4 +1,4 @@
-//! `height_pipeline`: seed 001's normal generation (FIG. 7) from the fetched 3×3 heights, one normal per clock,
+//! `height_pipeline`: US 2004/0207631's normal generation (FIG. 7) from the fetched 3×3 heights, one normal per clock,
 //! built from the unit blocks themselves: replicate [152] and blend adjust [153] side by side → the four bilinear
 //! units [65–68] (`BilinearUnit<8, 9, 1>`, the colour filter's own) → tangent [155] → height_normal [156] →
 //! the shared `normalise`. The unadjusted blend factors ride beside the bilinear units to the tangent unit, the

@@ -1,4 +1,5 @@
-//! `replicate`: seed 001's replicate unit [152]: the 3×3 heights `a b c / d e f / g h k` out as the four bilinear
+//! `replicate`: US 2004/0207631's replicate unit [152]: the 3×3 heights `a b c / d e f / g h k` out as the four
+//! bilinear
 //! units' overlapping 2×2 grids, red `[a b; d e]`, green `[b c; e f]`, blue `[d e; g h]`, alpha `[e f; h k]`, each
 //! in the bilinear unit's texel order (t00, t10, t01, t11). Wires and one register. Latency 1.
 

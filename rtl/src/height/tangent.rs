@@ -1,4 +1,4 @@
-//! `tangent`: seed 001's tangent construction unit [155]: `Tang1y = lerp(V, G − R, A − B)`,
+//! `tangent`: US 2004/0207631's tangent construction unit [155]: `Tang1y = lerp(V, G − R, A − B)`,
 //! `Tang2y = lerp(U, B − R, A − G)` from the four bilinear units' exact results (U25, 17 fraction bits of a height
 //! LSB) and the unadjusted blend factors. See `vectors::tangent` for the recipe. Latency 8: the results truncated to
 //! 12 fraction bits and their differences; d2 − d1 and e2 − e1, d1·256 and e1·256; the two `SmMulWide`s (their

@@ -1,4 +1,4 @@
-//! `texture_filter`: seed 001's texture filter with its mode input: one set of four bilinear units
+//! `texture_filter`: US 2004/0207631's texture filter with its mode input: one set of four bilinear units
 //! (`BilinearUnit<8, 9, 1>`) filters RGBA colour (`mode` = 0) or, fed by the fetch's select [151], replicate [152]
 //! and blend adjust [153], generates a normal from a 2×2-interleaved height map (`mode` = 1) through tangent [155],
 //! normal [156] and the shared normaliser. See `vectors::texture_filter`. Both results leave every clock, the

@@ -1,4 +1,4 @@
-//! `palette_lookup`: seed 004's colour-table read, one pixel per clock, with the next frame's table written beside
+//! `palette_lookup`: Tarini et al.'s colour-table read, one pixel per clock, with the next frame's table written beside
 //! it: one block RAM of two tables (address `{table, index}`), a pixel reading table `frame`, a write going to table
 //! `!frame`, so a frame never reads an entry of the table being built. See `vectors::palette_lookup`.
 //! `A` is the index width (⌈log2 s_N⌉), `R` = A + 1 the RAM's address width (rust-hdl's const generics cannot add).

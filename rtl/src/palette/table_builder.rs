@@ -1,4 +1,4 @@
-//! `table_builder`: seed 004's per-frame colour table built by the project's shading blocks, one palette normal a
+//! `table_builder`: Tarini et al.'s per-frame colour table built by the project's shading blocks, one palette normal a
 //! clock: the shared `Normalise`, two `Dot3`s (N·L, N·H), `Gloss` (the specular power), then the entry of equation
 //! (1): α = N·L >> 2, the colour (P·s + 512) >> 10 per channel. The entry leaves with its index, for the table RAM.
 //! See `vectors::table_builder`.

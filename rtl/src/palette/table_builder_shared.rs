@@ -1,4 +1,4 @@
-//! `TableBuilderShared`: seed 004's per-frame colour table on eight multipliers, the iCE40 UP5K's eight SB_MAC16,
+//! `TableBuilderShared`: Tarini et al.'s per-frame colour table on eight multipliers, the iCE40 UP5K's eight SB_MAC16,
 //! for `palette_pipeline_shared`. It computes `table_builder`'s entry from a normal already normalised, taking one
 //! normal every two clocks:
 //! - the palette changes per map, not per frame (§4 renormalises it once, after the quantizer), so the palette RAM

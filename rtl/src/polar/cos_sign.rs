@@ -1,4 +1,4 @@
-//! `cos_sign`: the cosine unit [18] of seed 000's FIG. 3 on its own, table size and output width as parameters:
+//! `cos_sign`: the cosine unit [18] of US 6,819,319's FIG. 3 on its own, table size and output width as parameters:
 //! d = (R − Q) mod 256 → |cos d| as UNORM_W and the sign bit [26], from 2^TB-entry tables over the full turn (the
 //! ROM widget) addressed by d's top TB bits (truncation). Latency 2: the address; the tables. The unit `cos_sign`
 //! is `CosSign<8, 8>`, the block the polar shade unit holds (there `CosSign<8, 8, DC>`, with the Dreamcast scale's

@@ -1,4 +1,4 @@
-//! `polar_pipeline`: seed 000's first embodiment, one pixel per clock, built from the unit blocks themselves:
+//! `polar_pipeline`: US 6,819,319's first embodiment, one pixel per clock, built from the unit blocks themselves:
 //! polar_shade(S, R, Q, k1, k2, k3) → power(p) → α → blend(src, dst).
 //! p rides beside the shade unit in a DFF chain; the mode and the colours wait in the `DelayedBlend`.
 //! Latency 22 = polar_shade 10 + power 7 + blend 5.

@@ -1,4 +1,4 @@
-//! `polar_shade`: seed 000's FIG. 3 up to the clamp, `k1 + k2·sin S + k3·cos S·cos(R − Q)`, one texel per clock.
+//! `polar_shade`: US 6,819,319's FIG. 3 up to the clamp, `k1 + k2·sin S + k3·cos S·cos(R − Q)`, one texel per clock.
 //! See `vectors::polar_shade` for the recipe. Latency 10:
 //! 1 S, R − Q (mod 256, the subtractor [16]) and the k's registered (S and R − Q as the table blocks' addresses);
 //! 2 the tables: the sine/cosine unit [10] and the cosine unit [18], the tested `sincos` and `cos_sign` blocks;

@@ -1,4 +1,4 @@
-//! `power`: the power unit [30] of seed 000's FIG. 3, `y = 255·(x/255)^p` with p = pw/4 (U6.2), by a log table,
+//! `power`: the power unit [30] of US 6,819,319's FIG. 3, `y = 255·(x/255)^p` with p = pw/4 (U6.2), by a log table,
 //! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 7:
 //! 1 inputs registered; 2 L(x) (table); 3 e = pw·L; 4 g = round(e >> 6), n = min(g >> 8, 9), f = g mod 256;
 //! 5 E(f) (table); 6 w = E >> (n + 6), the barrel shift; 7 y = (w + 1) >> 1, which makes (E + 2^(n+6)) >> (n + 7),

@@ -1,4 +1,4 @@
-//! `sincos`: the sine/cosine unit [10] of seed 000's FIG. 3 on its own, with its table size and output width as
+//! `sincos`: the sine/cosine unit [10] of US 6,819,319's FIG. 3 on its own, with its table size and output width as
 //! parameters: a 10-bit elevation angle (1024 = 90°) → sin and cos as UNORM_W, from two 2^TB-entry tables (the
 //! ROM widget) addressed by the angle's top TB bits (truncation). Latency 2: the address; the tables.
 //! The unit `sincos` is `SinCos<8, 8>`, the block the polar shade unit holds (there `SinCos<8, 8, DC>`, fed S·4,

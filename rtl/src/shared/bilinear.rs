@@ -1,4 +1,4 @@
-//! `bilinear`: the texture filter's bilinear units (seed 001, units 65–68).
+//! `bilinear`: the texture filter's bilinear units (US 2004/0207631, units 65–68).
 //!
 //! `BilinearUnit<W, F, D>` is one unit: one channel of `W` bits (W ≤ 8), `F` blend-factor bits (F ≤ 9), the patent's
 //! "four (usually identical) bilinear units, each of which computes one of the four colour channels". The colour
@@ -70,7 +70,8 @@ crate::block! {
         s6_b: DFF<Bits<17>>,
         w_sa: Signal<Local, Bits<32>>,
         w_sb: Signal<Local, Bits<32>>,
-        // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's 16)
+        // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's
+        // 16)
         s7_e: DFF<SBits<17>>,
         s7_a: DFF<Bits<17>>,
         // stages 8–10: |b − a|·v < 2^(W+2F), a carried

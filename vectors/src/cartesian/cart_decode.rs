@@ -1,4 +1,4 @@
-//! `cart_decode`: seed 000, second embodiment. Two offset-8-bit texel components → a bump vector whose L1 length
+//! `cart_decode`: US 6,819,319, second embodiment. Two offset-8-bit texel components → a bump vector whose L1 length
 //! is 255: `BumpX = (TexelX − 127)·2` (INT9), `BumpZ` likewise, `BumpY = 255 − |BumpX| − |BumpZ|` (UINT8).
 //!
 //! The seed says to guard against illegal texels and leaves the how open. The guard here, in the rtl too:

@@ -1,4 +1,4 @@
-//! `cart_pipeline`: seed 000's second embodiment end to end, one pixel per clock:
+//! `cart_pipeline`: US 6,819,319's second embodiment end to end, one pixel per clock:
 //! bilinear(TexelX, TexelZ) → cart_decode → normalise ─┐
 //! light_iter(l0, l1, l2; w1, w2) → normalise ─────────┴→ dot3 → gloss(C) → α = P >> 2 → blend(src, dst).
 //! Every stage is the unit of the same name; this file only wires them, as the rtl top does.

@@ -1,4 +1,4 @@
-//! `light_iter`: per-vertex light directions, signed 8 bits each (`(int)(LightDir·127) & 0xFF`, seed 000),
+//! `light_iter`: per-vertex light directions, signed 8 bits each (`(int)(LightDir·127) & 0xFF`, US 6,819,319),
 //! interpolated across a triangle from barycentric weights, one pixel per clock.
 //!
 //! exact: `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Sq11.8), then `truncate` 6 bits (floor) to Sq7.2 and

@@ -1,4 +1,5 @@
-//! `blend_adjust`: seed 001's blend-factor adjust unit [153]. From the address unit's blend factors (U8, 1/256) it
+//! `blend_adjust`: US 2004/0207631's blend-factor adjust unit [153]. From the address unit's blend factors (U8, 1/256)
+//! it
 //! makes the four bilinear units' factors, `U0 = ½ + U/2`, `U1 = U/2` (V likewise), in 1/512 (U9): exact, one more
 //! bit rather than a rounding, so `U0 = 256 + U` and `U1 = U`. Red takes (U0, V0), green (U1, V0), blue (U0, V1),
 //! alpha (U1, V1). With the replicated 2×2 grids this is de Casteljau's first step on the Bézier points of the

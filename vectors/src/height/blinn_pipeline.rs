@@ -1,4 +1,4 @@
-//! `blinn_pipeline`: Blinn's height-map function (seed 001 ¶31, ¶85) on the shared units, the variant FIG. 8a
+//! `blinn_pipeline`: Blinn's height-map function (US 2004/0207631 ¶31, ¶85) on the shared units, the variant FIG. 8a
 //! shows: blend adjust unused, the alpha unit unused, texel k not fetched. The red, green and blue bilinear units
 //! (`BilinearUnit<8, 9, 1>`, at the plain factors doubled to 9 bits) blend the top-left [a b; d e], top-right
 //! [b c; e f] and bottom-left [d e; g h] grids; the tangent unit shrinks to G − R and B − R; then the normal unit

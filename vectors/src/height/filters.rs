@@ -1,4 +1,4 @@
-//! Seed 001's variants beside its preferred B-spline path, each a model path: exact in integers on the widths of
+//! US 2004/0207631's variants beside its preferred B-spline path, each a model path: exact in integers on the widths of
 //! the shared units (the bilinear units `BilinearUnit<8, 9, 1>`, the tangent, normal and normaliser units), and
 //! the same method in reals. They read a height map through `Grid` (clamped at its borders) at a height-mode
 //! coordinate (UQ8.8 texels, control point i of the B-spline at i + ½, no half-texel subtraction).

@@ -1,4 +1,5 @@
-//! `height_addr`: seed 001's address unit [150], one axis (the unit is used once for U and once for V). A texture
+//! `height_addr`: US 2004/0207631's address unit [150], one axis (the unit is used once for U and once for V). A
+//! texture
 //! coordinate in texel units (UQ8.8) → the integer texel coordinate (U8) and the blend factor (U8, 1/256), for a
 //! texture of 2^size_log2 texels along the axis (size_log2 ≥ 8 is read as 8), wrapping or clamping at the border.
 //!

@@ -1,4 +1,4 @@
-//! `height_fetch`: seed 001's texel fetch [151] in height mode, with the map's memory. The height map is stored
+//! `height_fetch`: US 2004/0207631's texel fetch [151] in height mode, with the map's memory. The height map is stored
 //! 2×2-interleaved (¶55): the word at (X, Y) holds the four heights (2X, 2Y), (2X + 1, 2Y), (2X, 2Y + 1),
 //! (2X + 1, 2Y + 1) in its bytes 0..3, the "space of a single four-dimensional colour", so the map takes the storage
 //! of a colour texture of half its resolution each way. The words are spread over four banks by (X mod 2, Y mod 2),

@@ -1,11 +1,13 @@
-//! `height_normal`: seed 001's normal unit [156]. The tangents T1 = (1, Tang1y, 0) and T2 = (0, Tang2y, 1) in texel
+//! `height_normal`: US 2004/0207631's normal unit [156]. The tangents T1 = (1, Tang1y, 0) and T2 = (0, Tang2y, 1) in
+//! texel
 //! units give N = T2 × T1 = (−∂h/∂u, 1, −∂h/∂v). With heights in quarter texels (8-bit UQ6.2) and Tang = ½ ∂H/∂u
 //! (H in height LSB), ∂h/∂u = Tang/2, so N ∝ (−k·Tang1y, 2, −k·Tang2y), where k is the per-model scale factor of ¶82
 //! (UQ4.4, 16 = 1.0: the map's own relief). The sign is the seed's left open: this one points out of a raised bump,
 //! so the side of a bump facing the light is lit (proved on an analytic bump in the tests).
 //!
 //! exact: N = 7·(−k·t1, 2, −k·t2) with 16 fraction bits (S32; 7 = 8 − 1, a shift and a subtract), then one shift
-//! s for all three, the smallest that brings the largest magnitude to ≤ 511 after rounding, magnitudes rounded half up: S10 components
+//! s for all three, the smallest that brings the largest magnitude to ≤ 511 after rounding, magnitudes rounded half up:
+//! S10 components
 //! for the shared `normalise` unit, which is scale-free. The factor 7 puts a flat map's (0, 14·2^16, 0) at
 //! (0, 448, 0), which the normaliser returns as exactly (0, 1024, 0); a power of two such as 256 sits at the bottom
 //! of a seed-table bin and comes out as 1023.

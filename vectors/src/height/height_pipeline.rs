@@ -1,4 +1,4 @@
-//! `height_pipeline`: seed 001's normal generation end to end (FIG. 7), from the fetched 3×3 heights on:
+//! `height_pipeline`: US 2004/0207631's normal generation end to end (FIG. 7), from the fetched 3×3 heights on:
 //! replicate [152] → blend adjust [153] → the four bilinear units [65–68] (9 blend bits, one dropped between their
 //! stages: `BilinearUnit<8, 9, 1>`, the colour filter's own units) → tangent [155] → normal [156] → `normalise`.
 //! Every stage is the unit of the same name; this file only wires them. The ideal is the same method in reals,

@@ -1,4 +1,4 @@
-//! `replicate`: seed 001's replicate unit [152]. The fetched 3×3 heights `a b c / d e f / g h k` go out as four
+//! `replicate`: US 2004/0207631's replicate unit [152]. The fetched 3×3 heights `a b c / d e f / g h k` go out as four
 //! overlapping 2×2 grids, one per bilinear unit: red `[a b; d e]`, green `[b c; e f]`, blue `[d e; g h]`, alpha
 //! `[e f; h k]`, each in the bilinear unit's texel order (t00, t10, t01, t11). Wiring only: exact by construction.
 

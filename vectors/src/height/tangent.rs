@@ -1,4 +1,5 @@
-//! `tangent`: seed 001's tangent construction unit [155]. From the four bilinear units' results (red, green, blue,
+//! `tangent`: US 2004/0207631's tangent construction unit [155]. From the four bilinear units' results (red, green,
+//! blue,
 //! alpha: the exact `wide` outputs, U25 with 17 fraction bits of a height LSB) and the unadjusted blend factors:
 //! `Tang1y = lerp(V, G − R, A − B)`, `Tang2y = lerp(U, B − R, A − G)`. With the adjusted factors these are half the
 //! bi-quadratic B-spline's derivatives ∂H/∂u and ∂H/∂v (H in height LSB, u and v in texels), as a test shows

@@ -1,4 +1,4 @@
-//! `texture_filter`: seed 001's texture filter with its mode input (FIG. 4b and FIG. 7 in one): one set of four
+//! `texture_filter`: US 2004/0207631's texture filter with its mode input (FIG. 4b and FIG. 7 in one): one set of four
 //! bilinear units (`BilinearUnit<8, 9, 1>`) filters RGBA colour or generates normals from a height map.
 //!
 //! Both modes read the same four fetched words t00, t10, t01, t11 of four bytes (r, g, b, a):

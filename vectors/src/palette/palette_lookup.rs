@@ -1,4 +1,4 @@
-//! `palette_lookup`: seed 004's paletted texture read (§5, step 2) as hardware: the colour table C in block RAM,
+//! `palette_lookup`: Tarini et al.'s paletted texture read (§5, step 2) as hardware: the colour table C in block RAM,
 //! one entry read per pixel by its normal index, while the next frame's table is written beside it. The RAM holds
 //! two tables: a pixel reads table `frame`, a write goes to the other one, so frame N's pixels never see an entry of
 //! frame N + 1's table, however the writes and reads interleave; flipping `frame` shows the table just written.

@@ -1,4 +1,5 @@
-//! `palette_pipeline`: seed 004's rendering phase as one block: the table builder (`table_builder`) writing the next
+//! `palette_pipeline`: Tarini et al.'s rendering phase as one block: the table builder (`table_builder`) writing the
+//! next
 //! frame's colour table while the pixels of this frame read theirs (`palette_lookup`), one normal and one pixel a
 //! clock. The pixel's index and frame wait beside the builder, so a write and a read meet the table RAM in the order
 //! their vectors came, whatever the idle clocks between them: a pixel sees every entry built by the vectors before

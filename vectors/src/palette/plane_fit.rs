@@ -1,4 +1,5 @@
-//! Seed 004 §4.1: a displacement (height) map to a normal map, each texel's normal that of the plane fitted by least
+//! Tarini et al. §4.1: a displacement (height) map to a normal map, each texel's normal that of the plane fitted by
+//! least
 //! squares through it and q of its neighbours: q = 4 (left, right, above, below) or q = 8 (the whole 3×3). Heights
 //! and positions in texel units; the map's edges repeat (clamp). Software, run once per map.
 //!

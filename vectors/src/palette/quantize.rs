@@ -1,4 +1,4 @@
-//! Seed 004's preprocessing (Tarini et al. 2000, §4): a normal map quantized to a palette of s_N normals chosen
+//! Tarini et al.'s preprocessing (Tarini et al. 2000, §4): a normal map quantized to a palette of s_N normals chosen
 //! only from the normals it uses, and an index map into it; optional error-diffusion dithering; the mip levels of an
 //! index map (§5.2). Software, run once per map.
 //!

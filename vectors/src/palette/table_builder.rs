@@ -1,4 +1,5 @@
-//! `table_builder`: seed 004's per-frame colour table (§5.1, §7.1) built by the shading hardware the project already
+//! `table_builder`: Tarini et al.'s per-frame colour table (§5.1, §7.1) built by the shading hardware the project
+//! already
 //! has, one palette normal a clock: the normal (S10, as a palette stores it) through the shared `normalise`, N·L and
 //! N·H through two `dot3`s, the specular power through `gloss` (concentration C), then the entry of equation (1):
 //! alpha the Lambert shade, the colour the reflected light (the specular colour times P). No new arithmetic besides

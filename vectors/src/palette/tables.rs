@@ -1,4 +1,4 @@
-//! Seed 004 §5.1, §6 and §7: the per-frame colour table C = f(N) over the palette, with the light and view moved
+//! Tarini et al. §5.1, §6 and §7: the per-frame colour table C = f(N) over the palette, with the light and view moved
 //! into object space first (the inverse of the modelling rotation, its transpose), and the three ways of blending
 //! the table's entry with the object's own colour. The functions are the paper's list; each is its own f64
 //! reference. The hardware builder (`table_builder`, to come) computes the Lambert and specular terms through the

@@ -1,4 +1,4 @@
-//! `cos_sign`: the cosine unit [18] of seed 000's FIG. 3 on its own: the rotation difference d = (R − Q) mod 256
+//! `cos_sign`: the cosine unit [18] of US 6,819,319's FIG. 3 on its own: the rotation difference d = (R − Q) mod 256
 //! (U8, 256 = a full turn, the seed's scale) → |cos d| as UNORM_W and its sign bit [26] (set where cos d < 0),
 //! from a 2^TB-entry table over the full turn addressed by d's top TB bits (truncation). The unit `cos_sign` is
 //! TB = 8, W = 8, the table the polar shade unit holds; other sizes go into the LUT-size table.

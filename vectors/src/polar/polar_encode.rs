@@ -1,4 +1,4 @@
-//! `polar_encode` (software only): seed 000's first embodiment stores a bump normal as two angles, S (elevation
+//! `polar_encode` (software only): US 6,819,319's first embodiment stores a bump normal as two angles, S (elevation
 //! from the surface plane, 0 to 90°) and R (rotation about the surface normal, 0 to 360°, R = 0 along +u), each a
 //! U8; a surface's light as T (elevation) and Q (rotation) folded with a weight h into k1 = 1 − h, k2 = h·sin T,
 //! k3 = h·cos T (equation 4). The light cannot be below the horizon (shortcoming 3 of the seed): T < 0 is moved

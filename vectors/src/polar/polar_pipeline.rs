@@ -1,4 +1,4 @@
-//! `polar_pipeline`: seed 000's first embodiment end to end, one pixel per clock (FIG. 1 and FIG. 3):
+//! `polar_pipeline`: US 6,819,319's first embodiment end to end, one pixel per clock (FIG. 1 and FIG. 3):
 //! texel (S, R) + surface (k1, k2, k3, Q, p) → polar_shade → power → α → blend(src, dst).
 //! Every stage is the unit of the same name; this file only wires them, as the rtl top does.
 

@@ -1,4 +1,4 @@
-//! `polar_shade`: seed 000, FIG. 3 and equation 3 up to the clamp: `k1 + k2·sin S + k3·cos S·cos(R − Q)`.
+//! `polar_shade`: US 6,819,319, FIG. 3 and equation 3 up to the clamp: `k1 + k2·sin S + k3·cos S·cos(R − Q)`.
 //! All U8 in, 255 = 1.0 for the k's and the tables (UNORM8, see `sincos`):
 //! - sin/cos unit [10] on S: `sin_s`, `cos_s` (U8);
 //! - multipliers [12] `t12 = div255(k2·sin_s)` and [14] `t14 = div255(k3·cos_s)`: U16 products, /255 rounded to

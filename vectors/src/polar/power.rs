@@ -1,4 +1,4 @@
-//! `power`: the power unit [30] of seed 000's FIG. 3, `y = 255·(x/255)^p` for the clamped U8 shade x and an
+//! `power`: the power unit [30] of US 6,819,319's FIG. 3, `y = 255·(x/255)^p` for the clamped U8 shade x and an
 //! exponent p in U6.2 (`pw` = 4p, so p = 0, 0.25, …, 63.75).
 //!
 //! Method: log and exp tables around one multiplier, y = 2^(−p·L(x)), chosen over the alternatives by cost:

@@ -1,4 +1,4 @@
-//! `sincos`: the sine/cosine unit [10] and the cosine-with-sign unit [18] of seed 000's FIG. 3, as tables.
+//! `sincos`: the sine/cosine unit [10] and the cosine-with-sign unit [18] of US 6,819,319's FIG. 3, as tables.
 //!
 //! Entries are unsigned W-bit fractions with 2^W − 1 = 1.0 (UNORM_W), rounded to nearest: the k's use 255 = 1.0,
 //! so with W = 8 a product k·sin is divided by 255 exactly (`blend::div255`) and k = sin = 255 gives 255.

@@ -1,5 +1,5 @@
 //! `bilinear`: the colour filter's bilinear unit, four 8-bit channels, `F` blend-factor bits (the rtl has F = 8).
-//! The same unit serves the height-map pipeline later (seed 001, units 65–68).
+//! The same unit serves the height-map pipeline later (US 2004/0207631, units 65–68).
 //!
 //! exact: `a = t00·(2^F − u) + t10·u`, `b = t01·(2^F − u) + t11·u` (U(8+F), no rounding), then
 //! `r = round_half_up((a·(2^F − v) + b·v), 2F)` (U8). The rtl computes the same value as `a·2^F + (b − a)·v`.

@@ -1,4 +1,4 @@
-//! `blend`: the shade becomes an alpha (U8) and is combined with colours, seed 000's "alpha output to the blending
+//! `blend`: the shade becomes an alpha (U8) and is combined with colours, US 6,819,319's "alpha output to the blending
 //! unit ... combined with the existing colour". Two modes, per channel, both exact round-to-nearest of a /255:
 //! - `mode = 0`, modulate: `out = round(src·α / 255)`;
 //! - `mode = 1`, alpha-lerp: `out = round((src·α + dst·(255 − α)) / 255)`.

@@ -1,4 +1,4 @@
-//! `gloss`: the seed's quadratic glossiness, the exact integer recipe (seed 000, second embodiment):
+//! `gloss`: the seed's quadratic glossiness, the exact integer recipe (US 6,819,319, second embodiment):
 //! `k = C + 8` (U9, 3 fraction bits); `L = max(0, 1023 − ((k·(1023 − X)) >> 3))`; `Q = (L·L) >> 10`;
 //! `P = L + ((C·(Q − L)) >> 8)` with `>>` arithmetic (Q ≤ L, so C·(Q − L) ≤ 0 and the shift floors it).
 //! X, L, Q, P are 10-bit fractions (Uq0.10); C = 0 gives P = X.
