@@ -4,7 +4,8 @@
 //! The FST holds what the VCD holds: the same scopes and variables in the same order (variables that share a VCD
 //! identifier code become aliases of one FST signal), the same timescale, and every value change at its time, each
 //! vector left-extended to its declared width as VCD's rule says (with 0, or with x or z when the value's first bit
-//! is one). The file is written beside its final name and renamed into place, so a failed run leaves none.
+//! is one). The file is built in memory and written whole (`synth::export::write_atomic`), so a failed run leaves
+//! none.
 
 use fst_writer::{FstFileType, FstInfo, FstScopeType, FstSignalId, FstSignalType, FstVarDirection, FstVarType};
 use std::collections::HashMap;
@@ -63,30 +64,21 @@ pub fn vcd_to_fst(vcd: &Path, fst: &Path) -> Result<usize, String> {
         date: header.date.clone().unwrap_or_default(),
         file_type: FstFileType::Verilog,
     };
-    let name = fst.file_name().map(|f| f.to_string_lossy().into_owned()).unwrap_or_default();
-    let tmp = fst.with_file_name(format!(".{name}.{}.partial", std::process::id()));
-    let result = write(&mut parser, &header, &info, &tmp, vcd);
-    match result {
-        Ok(changes) => {
-            std::fs::rename(&tmp, fst).map_err(|e| format!("cannot write {}: {e}", fst.display()))?;
-            Ok(changes)
-        }
-        Err(e) => {
-            let _ = std::fs::remove_file(&tmp);
-            Err(e)
-        }
-    }
+    // built in memory, then written whole or not at all
+    let (bytes, changes) = write(&mut parser, &header, &info, vcd, fst)?;
+    synth::export::write_atomic(fst, &bytes)?;
+    Ok(changes)
 }
 
 fn write<R: std::io::BufRead>(
     parser: &mut vcd::Parser<R>,
     header: &vcd::Header,
     info: &FstInfo,
-    tmp: &Path,
     vcd: &Path,
-) -> Result<usize, String> {
-    let out_err = |e: fst_writer::FstWriteError| format!("cannot write {}: {e}", tmp.display());
-    let mut h = fst_writer::open_fst(tmp, info).map_err(out_err)?;
+    fst: &Path,
+) -> Result<(Vec<u8>, usize), String> {
+    let out_err = |e: fst_writer::FstWriteError| format!("cannot write {}: {e}", fst.display());
+    let mut h = fst_writer::FstHeaderWriter::write_to_mem(info).map_err(out_err)?;
     // the VCD's identifier code → (the FST signal, its width)
     let mut ids: HashMap<vcd::IdCode, (FstSignalId, usize)> = HashMap::new();
     fn walk<W: std::io::Write + std::io::Seek>(
@@ -141,6 +133,6 @@ fn write<R: std::io::BufRead>(
         body.signal_change(id, &bits(&values, width)).map_err(out_err)?;
         changes += 1;
     }
-    body.finish().map_err(out_err)?;
-    Ok(changes)
+    let bytes = body.finish().map_err(out_err)?.into_inner();
+    Ok((bytes, changes))
 }
