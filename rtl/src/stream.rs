@@ -12,6 +12,10 @@ pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
     const INPUTS: &'static [(&'static str, usize)];
     /// Data output ports (name, width).
     const OUTPUTS: &'static [(&'static str, usize)];
+    /// The memory write port, for a unit whose write beat only writes (its outputs are no one's): the enable (one
+    /// bit) first, then the address and data ports, all among `INPUTS`. The AXI4-Stream wrapper takes it as a
+    /// second stream (`axis::AxisMap`). Empty for every other unit.
+    const MAP: &'static [&'static str] = &[];
     fn build() -> Self;
     fn set_clock(&mut self, level: bool);
     fn clock_level(&self) -> bool;
@@ -47,7 +51,8 @@ pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
 macro_rules! stream_block {
     (
         $(#[$attr:meta])*
-        pub struct $t:ident $(< $(const $g:ident : $gt:ty $(= $gd:literal)?),* >)? : unit($name:expr, $latency:expr) {
+        pub struct $t:ident $(< $(const $g:ident : $gt:ty $(= $gd:literal)?),* >)?
+            : unit($name:expr, $latency:expr $(, map = $map:expr)?) {
             in { $($i:ident : $it:ty),* $(,)? }
             out { $($o:ident : $ot:ty),* $(,)? }
             $($(#[$fa:meta])* $fv:vis $f:ident : $ft:ty),* $(,)?
@@ -70,6 +75,7 @@ macro_rules! stream_block {
             const LATENCY: usize = $latency;
             const INPUTS: &'static [(&'static str, usize)] = &[$((stringify!($i), <$it as Synth>::BITS)),*];
             const OUTPUTS: &'static [(&'static str, usize)] = &[$((stringify!($o), <$ot as Synth>::BITS)),*];
+            $(const MAP: &'static [&'static str] = $map;)?
             fn build() -> Self {
                 Self::default()
             }

@@ -8,6 +8,7 @@
 
 use crate::prepared::Prepared;
 use crate::render::{self, Image, VerilatorRun};
+use rtl::axis::AxisBlock;
 use rtl::StreamUnit;
 use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
@@ -73,6 +74,8 @@ pub trait AxisPaths: Sync {
     /// `<unit>.vlt` is beside them; `scratch`, a folder for yosys's files of the fit check. The paths written, and
     /// why the core has no `synth` target when it has none.
     fn package(&self, dir: &Path, waivers: bool, scratch: &Path) -> Result<(Vec<PathBuf>, Option<String>), String>;
+    /// Whether an input row (the unit's input values) gives an output beat: a map write gives none.
+    fn emits(&self, row: &[u64]) -> bool;
     /// The output FIFO: its places (`rtl::axis::depth`), the RAM's words (2^A) and the word's bits (TDATA's).
     fn fifo(&self) -> (usize, usize, usize);
     /// What the wrapper adds to the unit (its control and output FIFO) in `family`'s cells, from yosys (cached);
@@ -80,38 +83,40 @@ pub trait AxisPaths: Sync {
     fn ctl_cells(&self, dir: &Path, family: Family) -> Result<Cells, String>;
 }
 
-/// The AXI4-Stream paths of unit `U` with its wrapper's widths (`rtl::axis_of!` works them out: see `units`).
-pub struct AxisRtl<U, const IW: usize, const OW: usize, const A: usize, const C: usize>(PhantomData<fn() -> U>);
+/// The AXI4-Stream paths of a wrapper type (`rtl::axis_of!` and `rtl::axis_map_of!` work out its widths: see
+/// `units`).
+pub struct AxisRtl<W>(PhantomData<fn() -> W>);
 
-impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: usize> AxisRtl<U, IW, OW, A, C> {
-    pub const PATHS: AxisRtl<U, IW, OW, A, C> = AxisRtl(PhantomData);
+impl<W: AxisBlock> AxisRtl<W> {
+    pub const PATHS: AxisRtl<W> = AxisRtl(PhantomData);
 }
 
-impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: usize> AxisPaths
-    for AxisRtl<U, IW, OW, A, C>
-{
+impl<W: AxisBlock> AxisPaths for AxisRtl<W> {
     fn module(&self) -> String {
-        rtl::axis::Axis::<U, IW, OW, A, C>::name()
+        W::name()
     }
     fn verilog(&self) -> String {
-        synth::export_axis::<U, IW, OW, A, C>().text
+        synth::export_axis::<W>().text
     }
     fn selfcheck(&self, dir: &Path, n: usize, source: &str) -> Result<Vec<PathBuf>, String> {
-        let v = synth::export_axis::<U, IW, OW, A, C>().write(dir)?;
+        let v = synth::export_axis::<W>().write(dir)?;
         let tb = dir.join(format!("{}_tb.v", self.module()));
-        synth::export::write_atomic(&tb, synth::axis_bench::bench::<U>(n, source).as_bytes())?;
+        synth::export::write_atomic(&tb, synth::axis_bench::bench::<W::Unit>(n, source).as_bytes())?;
         Ok(vec![v, tb])
     }
     fn package(&self, dir: &Path, waivers: bool, scratch: &Path) -> Result<(Vec<PathBuf>, Option<String>), String> {
-        let target = synth::package::synth_target::<U>(scratch);
+        let target = synth::package::synth_target::<W::Unit>(scratch);
         let none = target.as_ref().err().cloned();
-        Ok((synth::package::write::<U>(dir, waivers, target)?, none))
+        Ok((synth::package::write::<W::Unit>(dir, waivers, target)?, none))
+    }
+    fn emits(&self, row: &[u64]) -> bool {
+        W::emits(row)
     }
     fn fifo(&self) -> (usize, usize, usize) {
-        (rtl::axis::depth(U::LATENCY), 1 << A, OW)
+        W::fifo()
     }
     fn ctl_cells(&self, dir: &Path, family: Family) -> Result<Cells, String> {
-        synth::fpga::synth_axis_ctl::<U, OW, A, C>(dir, family)
+        synth::fpga::synth_axis_ctl::<W>(dir, family)
     }
 }
 

@@ -13,17 +13,10 @@ use crate::rtl_paths::{AxisPaths, AxisRtl, Rtl, RtlBlock, RtlPaths};
 /// worked out from `T`'s ports and latency (a const expression needs the concrete type, hence a macro).
 macro_rules! unit {
     ($model:expr, $t:ty) => {
-        Unit::new(
-            $model,
-            &Rtl::<$t>::PATHS,
-            &AxisRtl::<
-                $t,
-                { rtl::axis::word(<$t as rtl::StreamUnit>::INPUTS) },
-                { rtl::axis::word(<$t as rtl::StreamUnit>::OUTPUTS) },
-                { rtl::axis::addr_bits(<$t as rtl::StreamUnit>::LATENCY) },
-                { rtl::axis::addr_bits(<$t as rtl::StreamUnit>::LATENCY) + 1 },
-            >::PATHS,
-        )
+        Unit::new($model, &Rtl::<$t>::PATHS, &AxisRtl::<rtl::axis_of!($t)>::PATHS)
+    };
+    (map: $model:expr, $t:ty) => {
+        Unit::new($model, &Rtl::<$t>::PATHS, &AxisRtl::<rtl::axis_map_of!($t)>::PATHS)
     };
 }
 use vectors::UnitModel;
@@ -109,7 +102,7 @@ pub static UNITS: &[Unit] = &[
     unit!(&vectors::cart_surface::MODEL_NEAREST_HEMI_OCT, rtl::cart_surface::CartSurfaceNearestHemiOct),
     unit!(&vectors::cart_surface::MODEL_NEAREST_HEMI_OCT_MATTE, rtl::cart_surface::CartSurfaceNearestHemiOctMatte),
     unit!(&vectors::height_addr::MODEL, rtl::height_addr::HeightAddr),
-    unit!(&vectors::height_fetch::MODEL, rtl::height_fetch::HeightFetch),
+    unit!(map: &vectors::height_fetch::MODEL, rtl::height_fetch::HeightFetch),
     unit!(&vectors::replicate::MODEL, rtl::replicate::Replicate),
     unit!(&vectors::blend_adjust::MODEL, rtl::blend_adjust::BlendAdjust),
     unit!(&vectors::tangent::MODEL, rtl::tangent::Tangent),
@@ -156,20 +149,20 @@ pub static UNITS: &[Unit] = &[
         .waiving(&[("shader$sum", "as in polar_pipeline")]),
     unit!(&vectors::lod::MODEL, rtl::lod::Lod),
     unit!(&vectors::tex_addr::MODEL, rtl::tex_addr::TexAddr),
-    unit!(&vectors::tex_fetch::MODEL, rtl::tex_fetch::TexFetch),
-    unit!(&vectors::cart_tex::bilinear::MODEL, rtl::cart_tex::CartTexBilinear).waiving(&[
+    unit!(map: &vectors::tex_fetch::MODEL, rtl::tex_fetch::TexFetch),
+    unit!(map: &vectors::cart_tex::bilinear::MODEL, rtl::cart_tex::CartTexBilinear).waiving(&[
         ("filter$0$wide", "the front's bilinear units, read rounded as in cart_pipeline"),
         ("filter$1$wide", "as filter$0$wide"),
         ("light$valid_out", "as in cart_pipeline"),
         ("light_norm$valid_out", "as in cart_pipeline"),
     ]),
-    unit!(&vectors::cart_tex::bilinear_matte::MODEL, rtl::cart_tex::CartTexBilinearMatte).waiving(&[
+    unit!(map: &vectors::cart_tex::bilinear_matte::MODEL, rtl::cart_tex::CartTexBilinearMatte).waiving(&[
         ("filter$0$wide", "as in cart_tex_bilinear"),
         ("filter$1$wide", "as filter$0$wide"),
         ("light$valid_out", "as in cart_pipeline"),
         ("light_norm$valid_out", "as in cart_pipeline"),
     ]),
-    unit!(&vectors::cart_tex::nearest_matte::MODEL, rtl::cart_tex::CartTexNearestMatte).waiving(&[
+    unit!(map: &vectors::cart_tex::nearest_matte::MODEL, rtl::cart_tex::CartTexNearestMatte).waiving(&[
         ("light$valid_out", "as in cart_pipeline"),
         ("light_norm$valid_out", "as in cart_pipeline"),
         ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
@@ -178,7 +171,7 @@ pub static UNITS: &[Unit] = &[
         ("fetch$t01", "as fetch$t10"),
         ("fetch$t11", "as fetch$t10"),
     ]),
-    unit!(&vectors::cart_tex::nearest_mip_matte::MODEL, rtl::cart_tex::CartTexNearestMipMatte).waiving(&[
+    unit!(map: &vectors::cart_tex::nearest_mip_matte::MODEL, rtl::cart_tex::CartTexNearestMipMatte).waiving(&[
         ("light$valid_out", "as in cart_pipeline"),
         ("light_norm$valid_out", "as in cart_pipeline"),
         (
@@ -192,7 +185,7 @@ pub static UNITS: &[Unit] = &[
         ("fetch$t01", "as fetch$t10"),
         ("fetch$t11", "as fetch$t10"),
     ]),
-    unit!(&vectors::cart_tex::trilinear_matte::MODEL, rtl::cart_tex::CartTexTrilinearMatte).waiving(&[
+    unit!(map: &vectors::cart_tex::trilinear_matte::MODEL, rtl::cart_tex::CartTexTrilinearMatte).waiving(&[
         ("light$valid_out", "as in cart_pipeline"),
         ("light_norm$valid_out", "as in cart_pipeline"),
         ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),

@@ -15,11 +15,45 @@
 use rtl::StreamUnit;
 use std::fmt::Write as _;
 
+/// Where each stream's fields sit in a row of `<unit>_in.hex`: (bit, width) of the pixel stream's fields and of the
+/// map stream's, in port order, and the bit of the map write enable (a unit without a map port: every field on the
+/// pixel stream, no enable).
+pub struct Fields {
+    pub pixel: Vec<(usize, usize)>,
+    pub map: Vec<(usize, usize)>,
+    pub we: Option<usize>,
+}
+
+pub fn fields<U: StreamUnit>() -> Fields {
+    let mut f = Fields { pixel: vec![], map: vec![], we: None };
+    let mut at = 0;
+    for &(n, w) in U::INPUTS {
+        match rtl::axis::stream_of(n, U::MAP) {
+            0 => f.pixel.push((at, w)),
+            1 => f.map.push((at, w)),
+            _ => f.we = Some(at),
+        }
+        at += w;
+    }
+    f
+}
+
+/// A stream's TDATA from the row `row` (a Verilog word): its fields side by side, the first in the low bits,
+/// zeros above them to `to` bits.
+fn tdata(row: &str, spec: &[(usize, usize)], to: usize) -> String {
+    let bits: usize = spec.iter().map(|f| f.1).sum();
+    let mut parts: Vec<String> = spec.iter().rev().map(|&(lo, w)| format!("{row}[{}:{lo}]", lo + w - 1)).collect();
+    if to > bits {
+        parts.insert(0, format!("{}'b0", to - bits));
+    }
+    format!("{{{}}}", parts.join(", "))
+}
+
 /// The bench's text for unit `U` behind `<unit>_axis`, with `n` vectors from `source`.
 pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let iw: usize = U::INPUTS.iter().map(|p| p.1).sum();
     let ow: usize = U::OUTPUTS.iter().map(|p| p.1).sum();
-    let (iwp, owp) = (rtl::axis::word(U::INPUTS), rtl::axis::word(U::OUTPUTS));
+    let owp = rtl::axis::word(U::OUTPUTS);
     let u = U::NAME;
     let cut = (n / 3).max(1) + U::LATENCY;
     // a word widened to its TDATA bytes (no zero-width replication where it is whole bytes already)
@@ -31,7 +65,15 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
         }
     };
     let want = pad("want_mem[seen]", ow, owp);
-    let stim = pad("stim_mem[sent]", iw, iwp);
+    let f = fields::<U>();
+    let (iwp, mwp) = (rtl::axis::stream_word(U::INPUTS, U::MAP, 0), rtl::axis::stream_word(U::INPUTS, U::MAP, 1));
+    let map = f.we.is_some();
+    let stim = if map { tdata("stim_mem[sent]", &f.pixel, iwp) } else { pad("stim_mem[sent]", iw, iwp) };
+    // a map unit's: the map stream's handshake beside the pixel stream's, in each place the bench reads them
+    let (or_map_took, or_map_ready) =
+        if map { (" | (s_axis_map_tvalid & s_axis_map_tready)", " | s_axis_map_tready") } else { ("", "") };
+    let drop_map = if map { " s_axis_map_tvalid = 1'b0;" } else { "" };
+    let skip = if map { " skip_writes;" } else { "" };
     let mut s = String::new();
     let w = &mut s;
     let _ = writeln!(
@@ -52,6 +94,13 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
         w,
         "// nothing out until new input, then every vector again, each output checked in order, none missing or extra."
     );
+    if map {
+        let _ = writeln!(w, "// A row that sets the map write enable goes on s_axis_map_* (its address and data), the rest on s_axis_*, one");
+        let _ = writeln!(
+            w,
+            "// row at a time in the file's order; a write gives no output beat, so `N passed` counts the other rows."
+        );
+    }
     let _ = writeln!(w, "`timescale 1ns/1ps\nmodule {u}_axis_tb;");
     let _ = writeln!(
         w,
@@ -63,17 +112,31 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
         w,
         "  reg s_axis_tvalid = 1'b0;\n  reg [IWP-1:0] s_axis_tdata = {{IWP{{1'b0}}}};\n  wire s_axis_tready;"
     );
+    if map {
+        let _ = writeln!(
+            w,
+            "  localparam MWP = {mwp};\n  reg s_axis_map_tvalid = 1'b0;\n  reg [MWP-1:0] s_axis_map_tdata = {{MWP{{1'b0}}}};\n  wire s_axis_map_tready;"
+        );
+    }
     let _ = writeln!(w, "  wire m_axis_tvalid;\n  wire [OWP-1:0] m_axis_tdata;\n  reg m_axis_tready = 1'b1;");
     let _ = writeln!(w, "  reg [IW-1:0] stim_mem [0:N-1];\n  reg [OW-1:0] want_mem [0:N-1];");
     let _ = writeln!(
         w,
-        "  {u}_axis dut(\n    .aclk(aclk), .aresetn(aresetn),\n    .s_axis_tdata(s_axis_tdata), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),\n    .m_axis_tdata(m_axis_tdata), .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready)\n  );"
+        "  {u}_axis dut(\n    .aclk(aclk), .aresetn(aresetn),\n    .s_axis_tdata(s_axis_tdata), .s_axis_tvalid(s_axis_tvalid), .s_axis_tready(s_axis_tready),\n{}    .m_axis_tdata(m_axis_tdata), .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready)\n  );",
+        if map {
+            "    .s_axis_map_tdata(s_axis_map_tdata), .s_axis_map_tvalid(s_axis_map_tvalid), .s_axis_map_tready(s_axis_map_tready),\n"
+        } else {
+            ""
+        }
     );
     let _ = writeln!(w, "  // what the rising edge saw, sampled as a register samples it");
     let _ = writeln!(w, "  reg took = 1'b0, gave = 1'b0, e_valid = 1'b0, e_ready = 1'b0, e_reset = 1'b0;\n  reg [OWP-1:0] e_data = {{OWP{{1'b0}}}};");
     let _ = writeln!(w, "  always @(posedge aclk) begin");
-    let _ = writeln!(w, "    took <= s_axis_tvalid & s_axis_tready;\n    gave <= m_axis_tvalid & m_axis_tready;");
-    let _ = writeln!(w, "    e_valid <= m_axis_tvalid;\n    e_ready <= s_axis_tready;\n    e_reset <= ~aresetn;\n    e_data <= m_axis_tdata;");
+    let _ = writeln!(
+        w,
+        "    took <= (s_axis_tvalid & s_axis_tready){or_map_took};\n    gave <= m_axis_tvalid & m_axis_tready;"
+    );
+    let _ = writeln!(w, "    e_valid <= m_axis_tvalid;\n    e_ready <= s_axis_tready{or_map_ready};\n    e_reset <= ~aresetn;\n    e_data <= m_axis_tdata;");
     let _ = writeln!(w, "  end");
     let _ = writeln!(w, "  reg [31:0] rng = 32'd1;\n  integer seed = 1, cut = CUT_AT;");
     let _ = writeln!(
@@ -81,8 +144,16 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
         "  integer cycle = 0, phase = 0, phase_at = 0, sent = 0, seen = 0, passed = 0, failed = 0, stall = 0;"
     );
     let _ = writeln!(w, "  reg held = 1'b0;\n  reg [OWP-1:0] held_data = {{OWP{{1'b0}}}};");
+    if let Some(we) = f.we {
+        let _ =
+            writeln!(w, "  // a map write gives no output beat: the expected word to check next is the next pixel's");
+        let _ = writeln!(
+            w,
+            "  task skip_writes;\n    begin\n      while (seen < N && stim_mem[seen][{we}]) seen = seen + 1;\n    end\n  endtask"
+        );
+    }
     let _ = writeln!(w, "  initial begin");
-    let _ = writeln!(w, "    $readmemh(\"{u}_in.hex\", stim_mem);\n    $readmemh(\"{u}_out.hex\", want_mem);");
+    let _ = writeln!(w, "    $readmemh(\"{u}_in.hex\", stim_mem);\n    $readmemh(\"{u}_out.hex\", want_mem);{skip}");
     let _ =
         writeln!(w, "    if ($value$plusargs(\"seed=%d\", seed)) rng = seed;\n    if (rng == 0) rng = 32'd1;\n    if ($value$plusargs(\"cut=%d\", cut) && cut < 1) cut = 1;\n  end");
     let _ = writeln!(w, "  always #5 aclk = ~aclk;");
@@ -102,14 +173,14 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(w, "        if (seen >= N) begin failed = failed + 1; $display(\"FAIL: cycle %0d: an output past the last vector\", cycle); end");
     let _ = writeln!(w, "        else if (e_data !== {want}) begin failed = failed + 1; $display(\"FAIL: output %0d: got %h, expected %h\", seen, e_data, want_mem[seen]); end");
     let _ = writeln!(w, "        else if (phase == 3) passed = passed + 1;");
-    let _ = writeln!(w, "        seen = seen + 1;\n      end");
-    let _ = writeln!(w, "      if (took) begin sent = sent + 1; s_axis_tvalid = 1'b0; end");
+    let _ = writeln!(w, "        seen = seen + 1;{skip}\n      end");
+    let _ = writeln!(w, "      if (took) begin sent = sent + 1; s_axis_tvalid = 1'b0;{drop_map} end");
     let _ = writeln!(w, "    end");
     // the phases
     let _ = writeln!(w, "    cycle = cycle + 1;");
     let _ = writeln!(w, "    if (phase == 0 & cycle == cut) begin phase = 1; phase_at = cycle; aresetn = 1'b0; end");
-    let _ = writeln!(w, "    else if (phase == 1 & cycle == phase_at + RESET) begin phase = 2; phase_at = cycle; aresetn = 1'b1; s_axis_tvalid = 1'b0; end");
-    let _ = writeln!(w, "    else if (phase == 2 & cycle == phase_at + QUIET) begin phase = 3; phase_at = cycle; sent = 0; seen = 0; end");
+    let _ = writeln!(w, "    else if (phase == 1 & cycle == phase_at + RESET) begin phase = 2; phase_at = cycle; aresetn = 1'b1; s_axis_tvalid = 1'b0;{drop_map} end");
+    let _ = writeln!(w, "    else if (phase == 2 & cycle == phase_at + QUIET) begin phase = 3; phase_at = cycle; sent = 0; seen = 0;{skip} end");
     let _ = writeln!(w, "    else if (phase == 3 & seen == N) begin phase = 4; phase_at = cycle; end");
     let _ = writeln!(w, "    else if (phase == 4 & cycle == phase_at + QUIET) begin");
     let _ = writeln!(w, "      $display(\"%0d passed, %0d failed\", passed, failed);");
@@ -118,12 +189,23 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(w, "    if (cycle > LIMIT) begin\n      $display(\"FAIL: %0d of %0d vectors out after %0d clocks\", seen, N, cycle);\n      $fatal(1, \"{u}_axis: stuck\");\n    end");
     // the source and the sink for the next edge
     let _ = writeln!(w, "    rng = rng ^ (rng << 13);\n    rng = rng ^ (rng >> 17);\n    rng = rng ^ (rng << 5);");
-    let _ = writeln!(
-        w,
-        "    if (aresetn & ~s_axis_tvalid & sent < N & (phase == 0 | phase == 3) & rng[1:0] != 2'd0) begin"
-    );
-    let _ = writeln!(w, "      s_axis_tvalid = 1'b1;\n      s_axis_tdata = {stim};\n    end");
-    let _ = writeln!(w, "    if (~aresetn) s_axis_tvalid = rng[20];");
+    let idle = if map { "~s_axis_tvalid & ~s_axis_map_tvalid" } else { "~s_axis_tvalid" };
+    let _ = writeln!(w, "    if (aresetn & {idle} & sent < N & (phase == 0 | phase == 3) & rng[1:0] != 2'd0) begin");
+    match f.we {
+        Some(we) => {
+            let m = tdata("stim_mem[sent]", &f.map, mwp);
+            let _ = writeln!(
+                w,
+                "      if (stim_mem[sent][{we}]) begin s_axis_map_tvalid = 1'b1; s_axis_map_tdata = {m}; end"
+            );
+            let _ = writeln!(w, "      else begin s_axis_tvalid = 1'b1; s_axis_tdata = {stim}; end\n    end");
+            let _ = writeln!(w, "    if (~aresetn) begin s_axis_tvalid = rng[20]; s_axis_map_tvalid = rng[21]; end");
+        }
+        None => {
+            let _ = writeln!(w, "      s_axis_tvalid = 1'b1;\n      s_axis_tdata = {stim};\n    end");
+            let _ = writeln!(w, "    if (~aresetn) s_axis_tvalid = rng[20];");
+        }
+    }
     let _ = writeln!(w, "    if (stall > 0) begin stall = stall - 1; m_axis_tready = 1'b0; end");
     let _ = writeln!(
         w,

@@ -1,6 +1,7 @@
 //! Verilog export: rust-hdl's `generate_verilog`, with the top module (and its DFF submodules' prefix) renamed
 //! from rust-hdl's `top` to the unit's name, so that several units can be read into one tool run.
 
+use rtl::axis::AxisBlock;
 use rtl::StreamUnit;
 use rust_hdl::prelude::*;
 use std::path::{Path, PathBuf};
@@ -16,15 +17,15 @@ pub fn export<U: StreamUnit>() -> Exported {
 
 /// A unit behind its AXI4-Stream wrapper, as the module `<unit>_axis` (its unit inside, under that prefix, so the
 /// file stands alone and can be read beside `<unit>.v`).
-pub fn export_axis<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: usize>() -> Exported {
-    named(rtl::axis::Axis::<U, IW, OW, A, C>::build(), &rtl::axis::Axis::<U, IW, OW, A, C>::name())
+pub fn export_axis<W: AxisBlock>() -> Exported {
+    named(W::build(), &W::name())
 }
 
-/// The wrapper's own logic around `U`, its control and output FIFO (`rtl::axis::AxisCtl`) at the depth the wrapper
-/// builds, as the module `<unit>_axis_ctl`: what the wrapper adds to the unit, synthesised alone.
-pub fn export_axis_ctl<U: StreamUnit, const OW: usize, const A: usize, const C: usize>() -> Exported {
-    let ctl = rtl::axis::AxisCtl::<OW, A, C>::new(rtl::axis::depth(U::LATENCY), U::LATENCY);
-    named(ctl, &format!("{}_axis_ctl", U::NAME))
+/// The wrapper's own logic around its unit, its control and output FIFO (`rtl::axis::AxisCtl`, and a map unit's
+/// `AxisMapCtl` around it) at the depth the wrapper builds, as the module `<unit>_axis_ctl`: what the wrapper adds to
+/// the unit, synthesised alone.
+pub fn export_axis_ctl<W: AxisBlock>() -> Exported {
+    named(W::ctl(), &format!("{}_ctl", W::name()))
 }
 
 /// Any block's Verilog with rust-hdl's `top` renamed `module`.

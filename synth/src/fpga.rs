@@ -426,11 +426,8 @@ pub fn synth_unit_hard<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cell
 
 /// yosys figures of what the AXI4-Stream wrapper adds to `U` (`export_axis_ctl`: its control and output FIFO,
 /// which hold no product), synthesised alone in one pass.
-pub fn synth_axis_ctl<U: StreamUnit, const OW: usize, const A: usize, const C: usize>(
-    dir: &Path,
-    family: Family,
-) -> Result<Cells, String> {
-    let v = crate::export::export_axis_ctl::<U, OW, A, C>();
+pub fn synth_axis_ctl<W: rtl::axis::AxisBlock>(dir: &Path, family: Family) -> Result<Cells, String> {
+    let v = crate::export::export_axis_ctl::<W>();
     cached_cells(dir, family, &v, "the AXI4-Stream wrapper's control alone", |top, file| {
         one_pass(dir, family, top, file)
     })

@@ -53,7 +53,8 @@ pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY;)?
 
 crate::stream_block! {
     #[derive(Default)]
-    pub struct $t: unit($name, LATENCY) {
+    // with the texture unit, its memory's write port is the map stream (the block only ties the group to it)
+    pub struct $t: unit($name, LATENCY $(, map = { let _ = stringify!($pu); crate::texture::tex_fetch::MAP })?) {
         in {
             $(t00_x: U8,
             t00_z: U8,

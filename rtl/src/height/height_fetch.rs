@@ -20,10 +20,12 @@ use crate::prim::q::{SBits, U8};
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 5;
+/// The write port (`StreamUnit::MAP`): a write beat writes one word of four heights and reads nothing.
+pub const MAP: &[&str] = &["we", "waddr", "wdata"];
 
 crate::stream_block! {
     #[derive(Default)]
-    pub struct HeightFetch: unit("height_fetch", LATENCY) {
+    pub struct HeightFetch: unit("height_fetch", LATENCY, map = MAP) {
         in {
             i: U8,
             j: U8,

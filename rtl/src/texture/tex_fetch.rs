@@ -14,10 +14,12 @@ use rust_hdl::prelude::*;
 pub const LATENCY: usize = 6;
 /// A bank's address bits: 8,192 words, of which a 128 × 128 map's chain takes 5,462 (`vectors::tex_fetch`).
 pub const ADDR_BITS: usize = 13;
+/// The write port (`StreamUnit::MAP`): a write beat writes one texel and reads nothing.
+pub const MAP: &[&str] = &["we", "w_log2", "wx", "wy", "wdata"];
 
 crate::stream_block! {
     #[derive(Default)]
-    pub struct TexFetch: unit("tex_fetch", LATENCY) {
+    pub struct TexFetch: unit("tex_fetch", LATENCY, map = MAP) {
         in {
             level_log2: Bits<4>,
             x0: U8,
