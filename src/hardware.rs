@@ -79,6 +79,7 @@ pub fn mode_views(unit: &str, family: synth::fpga::Family, synth_tied: TiedSynth
                 bram: sum.bram + c.bram,
                 carry: sum.carry + c.carry,
                 soft: sum.soft + c.soft,
+                spram: sum.spram + c.spram,
             };
         }
     }

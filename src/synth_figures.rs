@@ -14,6 +14,9 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
     println!("  {ff:<12} {}", share(r.cells.ff, p.ff));
     println!("  {dsp:<12} {}", share(r.cells.dsp, p.dsp));
     println!("  {bram:<12} {}", share(r.cells.bram, p.bram));
+    if let Some(sp) = p.family.spram_cell() {
+        println!("  {sp:<12} {}", share(r.cells.spram, p.spram));
+    }
     println!("  {carry:<12} {:>6}", r.cells.carry);
     if r.cells.soft > 0 {
         println!("  {} of its products built in logic, the smallest first, to fit the {} {dsp}", r.cells.soft, p.dsp);

@@ -418,7 +418,7 @@ mod tests {
             mean: max / 2.0,
             max,
             also: None,
-            cells: synth::fpga::Cells { lut4, ff: 10, dsp: 0, bram, carry: 0, soft: 0 },
+            cells: synth::fpga::Cells { lut4, ff: 10, dsp: 0, bram, carry: 0, soft: 0, spram: 0 },
         }
     }
 

@@ -9,14 +9,15 @@
 //! - Every stage boundary is a `DFF`; `LATENCY` is the number of clock edges from an input to its output.
 
 /// The primitives apart from the units, as OpenTitan keeps `prim/`: the fixed-point types (`q`), the delay lines
-/// (`delay` in registers, `ram_delay` in block RAM), the sign-magnitude multiplier (`sm_mul`), and what every block
-/// declaration records for the width report (`declared`, with the `block!` macro).
+/// (`delay` in registers, `ram_delay` in block RAM), the single-port RAM (`sp_ram`), the sign-magnitude multiplier
+/// (`sm_mul`), and what every block declaration records for the width report (`declared`, with the `block!` macro).
 pub mod prim {
     pub mod declared;
     pub mod delay;
     pub mod q;
     pub mod ram_delay;
     pub mod sm_mul;
+    pub mod sp_ram;
 }
 
 /// Blocks more than one family uses: the colour filter, the normaliser, N·L, glossiness, the blend (and the blend

@@ -1,4 +1,4 @@
-//! Synthesis and placement for the open flow's two families: iCE40 UP5K (yosys `synth_ice40 -dsp`,
+//! Synthesis and placement for the open flow's two families: iCE40 UP5K (yosys `synth_ice40 -dsp -spram`,
 //! nextpnr-ice40) and Lattice ECP5 25F / 45F / 85F (yosys `synth_ecp5`, nextpnr-ecp5).
 //!
 //! A unit is first synthesised alone, for its own cell counts; those decide whether it fits a part. It is then
@@ -29,9 +29,18 @@ impl Family {
         }
     }
 
-    fn synth_command(self) -> &'static str {
+    /// The single-port RAM block the family has beside its block RAM: the UP5K's SPRAM (16,384 × 16 bits).
+    pub fn spram_cell(self) -> Option<&'static str> {
         match self {
-            Family::Ice40 => "synth_ice40 -dsp",
+            Family::Ice40 => Some("SB_SPRAM256KA"),
+            Family::Ecp5 => None,
+        }
+    }
+
+    /// yosys's synthesis command; `-spram` puts a single-port memory (`rtl::prim::sp_ram`) in SPRAM.
+    pub fn synth_command(self) -> &'static str {
+        match self {
+            Family::Ice40 => "synth_ice40 -dsp -spram",
             Family::Ecp5 => "synth_ecp5",
         }
     }
@@ -48,6 +57,8 @@ pub struct Part {
     pub ff: u64,
     pub dsp: u64,
     pub bram: u64,
+    /// single-port RAM blocks (the UP5K's SPRAM; none on the ECP5)
+    pub spram: u64,
     pub pnr: &'static [&'static str],
 }
 
@@ -59,6 +70,7 @@ pub const UP5K: Part = Part {
     ff: 5280,
     dsp: 8,
     bram: 30,
+    spram: 4,
     pnr: &["--up5k", "--package", "sg48", "--pcf-allow-unconstrained"],
 };
 pub const ECP5_25F: Part = Part {
@@ -69,6 +81,7 @@ pub const ECP5_25F: Part = Part {
     ff: 24288,
     dsp: 28,
     bram: 56,
+    spram: 0,
     pnr: &["--25k", "--package", "CABGA381", "--speed", "6", "--lpf-allow-unconstrained"],
 };
 pub const ECP5_45F: Part = Part {
@@ -79,6 +92,7 @@ pub const ECP5_45F: Part = Part {
     ff: 43848,
     dsp: 72,
     bram: 108,
+    spram: 0,
     pnr: &["--45k", "--package", "CABGA381", "--speed", "6", "--lpf-allow-unconstrained"],
 };
 pub const ECP5_85F: Part = Part {
@@ -89,6 +103,7 @@ pub const ECP5_85F: Part = Part {
     ff: 83640,
     dsp: 156,
     bram: 208,
+    spram: 0,
     pnr: &["--85k", "--package", "CABGA381", "--speed", "6", "--lpf-allow-unconstrained"],
 };
 
@@ -134,6 +149,7 @@ impl Part {
         [
             (dsp.to_string(), r.dsp, self.dsp),
             (bram.to_string(), r.bram, self.bram),
+            (self.family.spram_cell().unwrap_or("SPRAM").to_string(), r.spram, self.spram),
             (lut_name, luts, self.lut4),
             (ff.to_string(), r.ff, self.ff),
         ]
@@ -157,6 +173,8 @@ pub struct Cells {
     pub carry: u64,
     /// products built in logic rather than DSP blocks (`FABRIC_PRODUCTS`)
     pub soft: u64,
+    /// single-port RAM blocks (`Family::spram_cell`)
+    pub spram: u64,
 }
 
 /// The hard blocks (DSP, block RAM) synthesis kept inside each of a design's top-level instances, read from the
@@ -296,6 +314,7 @@ fn cells(family: Family, log: &str) -> Cells {
         bram: stat_count(log, bram, false),
         carry: stat_count(log, carry, false),
         soft: 0,
+        spram: family.spram_cell().map_or(0, |c| stat_count(log, c, false)),
     }
 }
 
@@ -413,7 +432,7 @@ pub fn synth_unit<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, St
 
 /// yosys figures of the unit alone with every product in a DSP block, however many the part has: one synthesis
 /// pass (`synth_unit` adds passes that move products into logic when an iCE40 has too few blocks). This is what a
-/// plain `synth_ice40 -dsp` / `synth_ecp5` flow, such as a FuseSoC target, makes of the unit.
+/// plain `synth_ice40 -dsp -spram` / `synth_ecp5` flow, such as a FuseSoC target, makes of the unit.
 pub fn synth_unit_hard<U: StreamUnit>(dir: &Path, family: Family) -> Result<Cells, String> {
     if family == Family::Ecp5 {
         // the project's flow moves no product into logic on the ECP5, so the two are one synthesis (and one cache entry)
@@ -454,10 +473,12 @@ fn cached_cells(
     );
     let saved = dir.join(format!("{family:?}.cells"));
     let read = |t: &str| match t.split_whitespace().filter_map(|x| x.parse().ok()).collect::<Vec<u64>>()[..] {
-        [lut4, ff, dsp, bram, carry, soft] => Some(Cells { lut4, ff, dsp, bram, carry, soft }),
+        [lut4, ff, dsp, bram, carry, soft, spram] => Some(Cells { lut4, ff, dsp, bram, carry, soft, spram }),
+        // an entry from before SPRAM was counted (its key holds the synthesis command, which then had no -spram)
+        [lut4, ff, dsp, bram, carry, soft] => Some(Cells { lut4, ff, dsp, bram, carry, soft, spram: 0 }),
         _ => None,
     };
-    let text = |c: &Cells| format!("{} {} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft);
+    let text = |c: &Cells| format!("{} {} {} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, c.spram);
     if let Some(c) = cache::get(&key, "cells").as_deref().and_then(read) {
         write_atomic(&saved, text(&c).as_bytes())?;
         return Ok(c);
@@ -639,8 +660,8 @@ impl SynthReport {
         let o = |x: Option<String>| x.unwrap_or_default();
         let c = &self.cells;
         format!(
-            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nblocks={}\n",
-            self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, self.latency, self.choice.replace('\n', " "),
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nblocks={}\n",
+            self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, c.spram, self.latency, self.choice.replace('\n', " "),
             o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
             o(self.critical.clone()), o(self.place_error.clone()), self.blocks.to_text()
         )
@@ -661,6 +682,7 @@ impl SynthReport {
                 bram: get("bram")?.parse().ok()?,
                 carry: get("carry")?.parse().ok()?,
                 soft: get("soft")?.parse().ok()?,
+                spram: get("spram").and_then(|v| v.parse().ok()).unwrap_or(0),
             },
             latency: get("latency")?.parse().ok()?,
             choice: get("choice")?.to_string(),
@@ -709,7 +731,7 @@ mod tests {
         let r = SynthReport {
             unit: "u".into(),
             part: "ecp5-45f".into(),
-            cells: Cells { lut4: 1, ff: 3, dsp: 4, bram: 5, carry: 2, soft: 9 },
+            cells: Cells { lut4: 1, ff: 3, dsp: 4, bram: 5, carry: 2, soft: 9, spram: 10 },
             latency: 8,
             choice: "not up5k: it needs 9 SB_MAC16".into(),
             lc: Some(6),
@@ -743,7 +765,7 @@ mod tests {
 
     #[test]
     fn overflow_names_the_first_resource_past_the_part() {
-        let c = Cells { lut4: 2269, ff: 3341, dsp: 36, bram: 4, carry: 300, soft: 0 };
+        let c = Cells { lut4: 2269, ff: 3341, dsp: 36, bram: 4, carry: 300, soft: 0, spram: 0 };
         let o = ECP5_25F.overflow(&c).unwrap();
         assert!(o.contains("36 MULT18X18D") && o.contains("has 28"), "{o}");
         assert_eq!(ECP5_45F.overflow(&c), None);
@@ -751,6 +773,11 @@ mod tests {
         assert!(o.contains("5281 SB_LUT4") && o.contains("has 5280"), "{o}");
         let o = UP5K.overflow(&Cells { ff: 6000, ..Default::default() }).unwrap();
         assert!(o.contains("6000 SB_DFF,"), "{o}");
+        // the UP5K's four SPRAMs, and none on the ECP5
+        assert_eq!(UP5K.overflow(&Cells { spram: 4, ..Default::default() }), None);
+        let o = UP5K.overflow(&Cells { spram: 5, ..Default::default() }).unwrap();
+        assert!(o.contains("5 SB_SPRAM256KA") && o.contains("has 4"), "{o}");
+        assert!(ECP5_85F.overflow(&Cells { spram: 1, ..Default::default() }).is_some());
         // two CCU2C are four LUT4s of the part
         assert!(ECP5_25F.overflow(&Cells { lut4: 24285, carry: 2, ..Default::default() }).is_some());
         assert_eq!(ECP5_25F.overflow(&Cells { lut4: 24284, carry: 2, ..Default::default() }), None);

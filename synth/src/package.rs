@@ -108,7 +108,7 @@ pub fn core<U: StreamUnit>(waivers: bool, synth: &Result<SynthTarget, String>) -
     match synth {
         Ok(t) => {
             let (flow, synth_options) = match t.part.family {
-                Family::Ice40 => ("icestorm", "[-dsp]"),
+                Family::Ice40 => ("icestorm", "[-dsp, -spram]"),
                 Family::Ecp5 => ("trellis", "[]"),
             };
             let _ = writeln!(w, "  synth:");
@@ -136,7 +136,7 @@ fn quoted(text: &str) -> String {
 }
 
 /// The part the `synth` target places `U` on: the first of `fpga::PARTS` its cells fit with every product in a DSP
-/// block (the plain `synth_ice40 -dsp` / `synth_ecp5` a FuseSoC flow runs does not move products into logic, as
+/// block (the plain `synth_ice40 -dsp -spram` / `synth_ecp5` a FuseSoC flow runs does not move products into logic, as
 /// the project's own flow does when a part has too few DSP blocks). `dir` holds yosys's files (its results are
 /// cached, as every synthesis is).
 pub fn synth_target<U: StreamUnit>(dir: &Path) -> Result<SynthTarget, String> {

@@ -10,6 +10,7 @@
 //! enclosing block's generic arguments along a path. A signal or constant also carries the width the compiler gives
 //! it (`Synth::BITS`), exact whatever names its type was written with (`Bits<ANGLE_BITS>`).
 
+use crate::prim::sp_ram::SpRam;
 use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::{RAM, ROM};
 
@@ -82,7 +83,7 @@ impl<T: Declared, const N: usize> Declared for [T; N] {
 }
 
 /// rust-hdl's own blocks, their signals as rust-hdl 0.46 declares them (`rust-hdl-widgets`: `dff.rs`,
-/// `ramrom/rom.rs`, `ramrom/ram.rs`); the width tests hold every signal of every unit to a declared format, so a
+/// `ramrom/rom.rs`, `ramrom/ram.rs`), and `SpRam`, a memory with its own Verilog as those are; the width tests hold every signal of every unit to a declared format, so a
 /// field missing here fails them.
 macro_rules! library {
     ($t:ident < $($p:ident),* > where [$($bounds:tt)*] { $($f:ident : $ft:ty),* $(,)? }) => {
@@ -101,6 +102,13 @@ macro_rules! library {
 
 library!(DFF<T> where [T: Synth] { d: Signal<In, T>, q: Signal<Out, T>, clock: Signal<In, Clock> });
 library!(ROM<D, N> where [D: Synth, const N: usize] { address: Signal<In, Bits<N>>, data: Signal<Out, D> });
+library!(SpRam<D, N> where [D: Synth, const N: usize] {
+    address: Signal<In, Bits<N>>,
+    clock: Signal<In, Clock>,
+    read_data: Signal<Out, D>,
+    write_data: Signal<In, D>,
+    write_enable: Signal<In, bool>,
+});
 library!(RAM<D, N> where [D: Synth, const N: usize] {
     read_address: Signal<In, Bits<N>>,
     read_clock: Signal<In, Clock>,

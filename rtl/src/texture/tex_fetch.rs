@@ -6,9 +6,13 @@
 //! row shifted to the level's row length, with the level's base; the bank addresses (and the write's address and
 //! bank); the banks' read (their own register); the four words registered (a block RAM's output straight into a
 //! select is slow: `height_fetch` measured it); each texel picked from the four words.
+//!
+//! The banks are single-port (`SpRam`): `synth_ice40 -spram` puts each in one of the UP5K's four SPRAMs, so a
+//! 128 × 128 map and its chain (43.7 KB) fit a part whose 30 EBR hold 15 KB.
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{U16, U8};
+use crate::prim::sp_ram::SpRam;
 use rust_hdl::prelude::*;
 
 pub const LATENCY: usize = 6;
@@ -38,8 +42,8 @@ crate::stream_block! {
             t01: U16,
             t11: U16,
         }
-        /// the four banks, (x mod 2) + 2·(y mod 2)
-        pub bank: [RAM<U16, 13>; 4],
+        /// the four banks, (x mod 2) + 2·(y mod 2), each single-port: a clock reads it or writes it
+        pub bank: [SpRam<U16, 13>; 4],
         // stage 1: the level's side log2 (saturated to 7), the coordinates modulo its side; the write's likewise
         s1_m: DFF<Bits<4>>,
         s1_x: [DFF<U8>; 2],
@@ -134,8 +138,7 @@ impl Logic for TexFetch {
             self.wr_en[n].clock.next = self.clock.val();
             self.s5_word[n].clock.next = self.clock.val();
             self.s6_t[n].clock.next = self.clock.val();
-            self.bank[n].read_clock.next = self.clock.val();
-            self.bank[n].write_clock.next = self.clock.val();
+            self.bank[n].clock.next = self.clock.val();
         }
         self.valid.d.next = self.valid_in.val();
 
@@ -295,10 +298,10 @@ impl Logic for TexFetch {
         }
         self.s3_rd.d.next = self.s2_rd.q.val();
 
-        // stage 4: the banks read the addresses and write the write (a read sees the writes of the clocks before)
+        // stage 4: each bank writes the write or reads its address (a read sees the writes of the clocks before;
+        // the written bank's word is not read, and a writing vector's outputs are zero)
         for n in 0..4 {
-            self.bank[n].read_address.next = self.s3_addr[n].q.val();
-            self.bank[n].write_address.next = self.s3_addr[n].q.val();
+            self.bank[n].address.next = self.s3_addr[n].q.val();
             self.bank[n].write_data.next = self.wr_data.q.val();
             self.bank[n].write_enable.next = self.wr_en[n].q.val();
         }
