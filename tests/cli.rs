@@ -531,10 +531,11 @@ fn render_runs_a_scene_file_on_every_path_and_the_rtl_equals_the_model() {
     let (code, out, err) =
         bumprtl(&["render", scene.to_str().unwrap(), "--out", d.to_str().unwrap(), "--window", "100,60,6,5"]);
     assert_eq!(code, 0, "{err}");
-    // one directional light per surface and C = 0: no light interpolator, no light normaliser, no gloss unit
+    // one directional light per surface and C = 0: no light interpolator, no light normaliser, no gloss unit, the
+    // texels from the texture unit
     assert!(
-        out.contains("pipeline: cart_surface_matte")
-            && out.contains("units: bilinear → cart_decode → normalise → dot3 → blend\n"),
+        out.contains("pipeline: cart_tex_bilinear_surface_matte")
+            && out.contains("units: tex_addr → tex_fetch → bilinear → cart_decode → normalise → dot3 → blend\n"),
         "{out}"
     );
     assert!(out.contains("rust-hdl, window 6×5 at (100, 60)"), "{out}");
@@ -732,11 +733,15 @@ fn verilog_exports_the_pipeline_a_scene_is_rendered_by() {
     let (code, module, err) =
         bumprtl(&["verilog", "--scene", scenes().join("torus.toml").to_str().unwrap(), "--out", "-"]);
     assert_eq!(code, 0, "{err}");
-    // the torus with one light per triangle and a little gloss: cart_surface, which holds a gloss unit and no
-    // light interpolator
-    let (_, unit, _) = bumprtl(&["verilog", "cart_surface", "--out", "-"]);
+    // the torus with one light per triangle and a little gloss, on the texture unit: cart_tex_bilinear_surface,
+    // which holds a gloss unit and no light interpolator
+    let (_, unit, _) = bumprtl(&["verilog", "cart_tex_bilinear_surface", "--out", "-"]);
     assert_eq!(module, unit);
-    assert!(!module.contains("l0_x") && !module.contains("$light_norm") && module.contains("module cart_surface("));
+    assert!(
+        !module.contains("l0_x")
+            && !module.contains("$light_norm")
+            && module.contains("module cart_tex_bilinear_surface(")
+    );
     // into a folder, the scene's pipeline is exported as its unit is: bench, wrapper, waivers, package
     let (code, out, err) = bumprtl(&[
         "verilog",

@@ -273,11 +273,14 @@ pub struct CartTex {
     row: &'static Row,
     host: Box<dyn Pipeline>,
     filter: pipelines::Filter,
+    /// the front with the last prepared frame's prologue written into its memory: what `normal` reads
+    loaded: std::sync::RwLock<Option<std::sync::Arc<vectors::texture::front::Front>>>,
 }
 
 impl CartTex {
     pub fn new(row: &'static Row, host: &'static Row, filter: pipelines::Filter) -> CartTex {
-        CartTex { row, host: build(host, &Scene::default(), &Settings::default()), filter }
+        let host = build(host, &Scene::default(), &Settings::default());
+        CartTex { row, host, filter, loaded: Default::default() }
     }
 
     /// The texel decode of the host-fed pipeline it is built on.
@@ -384,6 +387,13 @@ impl Pipeline for CartTex {
             }
         }
         let prologue = inputs.len();
+        let mut loaded = front::Front::new(self.filter.front());
+        for v in &inputs {
+            loaded.step(v, &at);
+        }
+        if let Ok(mut l) = self.loaded.write() {
+            *l = Some(std::sync::Arc::new(loaded));
+        }
         let frame = raster::frame(scene, &scene.normals());
         assert_eq!(frame.pixels.len(), host.pixels().len(), "the host's frame and the rasteriser's");
         for (px, h) in frame.pixels.iter().zip(host.pixels()) {
@@ -432,6 +442,17 @@ impl Pipeline for CartTex {
     }
     fn colour(&self, out: &[i64]) -> [u8; 3] {
         self.host.colour(out)
+    }
+    /// The host's normal for the texel the front reads from the prepared frame's memory.
+    fn normal(&self, input: &[i64]) -> Option<[f64; 3]> {
+        use vectors::texture::front::At;
+        let front = self.loaded.read().ok()?.clone()?;
+        let model = self.model();
+        let t = front.read(input, &At::of(model.inputs, self.filter.front().mip()));
+        self.host.normal(&vectors::cart_tex::host_vector(self.host.model(), model.inputs, input, t))
+    }
+    fn surface_ideal(&self, scene: &Scene, ideal: &Ideal) -> Option<f64> {
+        self.host.surface_ideal(scene, ideal)
     }
 }
 

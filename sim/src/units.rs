@@ -195,6 +195,23 @@ pub static UNITS: &[Unit] = &[
         ("filter$3$wide", "as filter$0$wide"),
         ("fetch$1$valid_out", "the two fetches run in step: the valid chain follows the first's"),
     ]),
+    unit!(map: &vectors::cart_tex::bilinear_hemi_oct::MODEL, rtl::cart_tex::CartTexBilinearHemiOct).waiving(&[
+        ("filter$0$wide", "as in cart_tex_bilinear"),
+        ("filter$1$wide", "as filter$0$wide"),
+        ("light$valid_out", "as in cart_pipeline"),
+        ("light_norm$valid_out", "as in cart_pipeline"),
+    ]),
+    unit!(map: &vectors::cart_tex::bilinear_surface::MODEL, rtl::cart_tex::CartTexBilinearSurface)
+        .waiving(&[("filter$0$wide", "as in cart_tex_bilinear"), ("filter$1$wide", "as filter$0$wide")]),
+    unit!(map: &vectors::cart_tex::bilinear_surface_matte::MODEL, rtl::cart_tex::CartTexBilinearSurfaceMatte)
+        .waiving(&[("filter$0$wide", "as in cart_tex_bilinear"), ("filter$1$wide", "as filter$0$wide")]),
+    unit!(map: &vectors::cart_tex::nearest_surface_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceMatte).waiving(&[
+        ("addr$ublend", "as in cart_tex_nearest_matte"),
+        ("addr$vblend", "as addr$ublend"),
+        ("fetch$t10", "as in cart_tex_nearest_matte"),
+        ("fetch$t01", "as fetch$t10"),
+        ("fetch$t11", "as fetch$t10"),
+    ]),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -11,6 +11,10 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("seed", false, "nearest", false),
     ("seed", false, "nearest_mip", false),
     ("seed", false, "trilinear", false),
+    ("hemi_oct", false, "bilinear", true),
+    ("seed", true, "bilinear", true),
+    ("seed", true, "bilinear", false),
+    ("seed", true, "nearest", false),
 ];
 
 /// The pipeline a scene's choices name, by the project's naming of its rtl tops; None where the reader refuses.
@@ -171,6 +175,11 @@ mod built {
             assert!(ou.outs.len() > 1000, "{what}: {} pixels", ou.outs.len());
             let differ = ou.outs.iter().zip(&oh.outs).filter(|(a, b)| a != b).count();
             assert_eq!((differ, ou.outs.len()), (0, oh.outs.len()), "{what}");
+            // the normal read through the unit's memory is the host's from its four texels
+            let normals = |p: &dyn Pipeline, x: &sim::prepared::Prepared| -> Vec<_> {
+                x.pixels().iter().map(|v| p.normal(v).expect("a normal")).collect()
+            };
+            assert!(normals(u.as_ref(), &pu) == normals(h.as_ref(), &ph), "{what}: normals");
         }
     }
 

@@ -61,7 +61,7 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     assert!(matches!(demo.scene.curved.map(|c| c.shape), Some(sim::surface::Shape::Torus { .. })));
     // each pipeline has its scene
     let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline.name;
-    assert_eq!(kind("hemi_oct.toml"), cart(Decode::HemiOct, true));
+    assert_eq!(kind("hemi_oct.toml"), "cart_tex_bilinear_hemi_oct");
     assert_eq!(kind("polar.toml"), "polar_pipeline");
     assert_eq!(scene_file::load(&scenes_dir().join("polar.toml")).unwrap().settings.pw, 16);
     assert_eq!(kind("height.toml"), "height_pipeline");
@@ -72,7 +72,7 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     let c = torus.curved.expect("a torus");
     assert_eq!(c.shape, sim::surface::Shape::Torus { minor: 0.32 });
     assert_eq!((c.segments, c.repeat), ([72, 36], [6, 2]));
-    assert_eq!(kind("torus.toml"), surface(Decode::Seed, false, true));
+    assert_eq!(kind("torus.toml"), "cart_tex_bilinear_surface");
     assert!(scene_file::load(&scenes_dir().join("sphere_polar.toml")).unwrap().scene.curved.is_some());
 }
 
@@ -146,22 +146,32 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         "s.toml:5:10:",
         &["only the texture unit has MIP levels"],
     );
-    refused(&scene("hemi_oct", "fetch = \"unit\"\n", "vertex", ""), "s.toml:5:9:", &["fetch = \"unit\"", "hemi_oct"]);
+    refused(
+        &scene("hemi_oct", "fetch = \"unit\"\n", "vertex", "gloss = 0\n"),
+        "s.toml:5:9:",
+        &["fetch = \"unit\"", "hemi_oct", "gloss = 0"],
+    );
     refused(
         "size = 64\n[bump]\nsource = \"procedural\"\ntexels = 256\nfetch = \"unit\"\n[material]\ngloss = 0\n",
         "s.toml:5:9:",
         &["1, 2, 4 … 128", "256"],
     );
-    assert_eq!(kind(scene("hemi_oct", "", "vertex", "")), cart(Decode::HemiOct, true), "the default gloss is 96");
+    assert_eq!(kind(scene("hemi_oct", "", "vertex", "")), "cart_tex_bilinear_hemi_oct", "the default gloss is 96");
+    let host = "fetch = \"host\"\n";
+    assert_eq!(kind(scene("hemi_oct", host, "vertex", "")), cart(Decode::HemiOct, true));
     assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), cart(Decode::HemiOct, false));
-    assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
-    assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
-    assert_eq!(kind(scene("seed", "", "surface", "")), v(Decode::Seed, false, true), "the default gloss is 96");
+    // one light per surface: on the texture unit where it serves the material, the host's on asking
+    assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), "cart_tex_bilinear_surface_matte");
+    assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), "cart_tex_bilinear_surface");
+    assert_eq!(kind(scene("seed", "", "surface", "")), "cart_tex_bilinear_surface", "the default gloss is 96");
+    assert_eq!(kind(scene("seed", host, "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
+    assert_eq!(kind(scene("seed", host, "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
+    assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 12\n")), v(Decode::HemiOct, false, true));
     assert_eq!(
         kind(scene("hemi_oct", "filter = \"nearest\"\n", "surface", "gloss = 0\n")),
         v(Decode::HemiOct, true, false)
     );
-    assert_eq!(kind(scene("seed", "filter = \"bilinear\"\n", "surface", "gloss = 5\n")), v(Decode::Seed, false, true));
+    assert_eq!(kind(scene("seed", "filter = \"bilinear\"\n", "surface", "gloss = 5\n")), "cart_tex_bilinear_surface");
     refused(
         &scene("seed", "filter = \"nearest\"\n", "vertex", ""),
         "s.toml:5:10:",
@@ -174,9 +184,12 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     );
     refused(&scene("seed", "filter = \"cubic\"\n", "surface", ""), "s.toml:5:10:", &["bilinear", "nearest"]);
     assert_eq!(scene_file::load(&scenes_dir().join("up5k.toml")).unwrap().pipeline.name, v(Decode::Seed, true, false));
+    // its map of 128 texels in the texture unit's memory: the nearest texel, one light per surface, matte
+    let textured = scene_file::load(&scenes_dir().join("up5k_textured.toml")).unwrap().pipeline.name;
+    assert_eq!(textured, "cart_tex_nearest_surface_matte");
     assert_eq!(
         scene_file::load(&scenes_dir().join("directional.toml")).unwrap().pipeline.name,
-        v(Decode::Seed, false, false)
+        "cart_tex_bilinear_surface_matte"
     );
 }
 

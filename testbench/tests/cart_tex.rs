@@ -3,11 +3,15 @@
 //! loaded first); random streams through rust-hdl, and through Verilator after the hard cases have loaded the chain
 //! they read.
 use rtl::cart_tex::{
-    CartTexBilinear, CartTexBilinearMatte, CartTexNearestMatte, CartTexNearestMipMatte, CartTexTrilinearMatte,
+    CartTexBilinear, CartTexBilinearHemiOct, CartTexBilinearMatte, CartTexBilinearSurface, CartTexBilinearSurfaceMatte,
+    CartTexNearestMatte, CartTexNearestMipMatte, CartTexNearestSurfaceMatte, CartTexTrilinearMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
-use vectors::cart_tex::{bilinear, bilinear_matte, nearest_matte, nearest_mip_matte, trilinear_matte};
+use vectors::cart_tex::{
+    bilinear, bilinear_hemi_oct, bilinear_matte, bilinear_surface, bilinear_surface_matte, nearest_matte,
+    nearest_mip_matte, nearest_surface_matte, trilinear_matte,
+};
 use vectors::UnitModel;
 
 unit_tests!(cart_tex_bilinear, CartTexBilinear, bilinear::MODEL);
@@ -15,6 +19,10 @@ unit_tests!(cart_tex_bilinear_matte, CartTexBilinearMatte, bilinear_matte::MODEL
 unit_tests!(cart_tex_nearest_matte, CartTexNearestMatte, nearest_matte::MODEL);
 unit_tests!(cart_tex_nearest_mip_matte, CartTexNearestMipMatte, nearest_mip_matte::MODEL);
 unit_tests!(cart_tex_trilinear_matte, CartTexTrilinearMatte, trilinear_matte::MODEL);
+unit_tests!(cart_tex_bilinear_hemi_oct, CartTexBilinearHemiOct, bilinear_hemi_oct::MODEL);
+unit_tests!(cart_tex_bilinear_surface, CartTexBilinearSurface, bilinear_surface::MODEL);
+unit_tests!(cart_tex_bilinear_surface_matte, CartTexBilinearSurfaceMatte, bilinear_surface_matte::MODEL);
+unit_tests!(cart_tex_nearest_surface_matte, CartTexNearestSurfaceMatte, nearest_surface_matte::MODEL);
 
 /// Random streams through rust-hdl (from an empty memory, which both read as zero), the hard cases with bubbles,
 /// and a long random stream under Verilator after the hard cases have loaded the chain it reads.
@@ -52,4 +60,24 @@ fn cart_tex_nearest_mip_matte_streams() {
 #[test]
 fn cart_tex_trilinear_matte_streams() {
     three_streams::<CartTexTrilinearMatte>(&trilinear_matte::MODEL, 27);
+}
+
+#[test]
+fn cart_tex_bilinear_hemi_oct_streams() {
+    three_streams::<CartTexBilinearHemiOct>(&bilinear_hemi_oct::MODEL, 28);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_streams() {
+    three_streams::<CartTexBilinearSurface>(&bilinear_surface::MODEL, 29);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_matte_streams() {
+    three_streams::<CartTexBilinearSurfaceMatte>(&bilinear_surface_matte::MODEL, 30);
+}
+
+#[test]
+fn cart_tex_nearest_surface_matte_streams() {
+    three_streams::<CartTexNearestSurfaceMatte>(&nearest_surface_matte::MODEL, 31);
 }

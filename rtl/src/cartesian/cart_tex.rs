@@ -1,10 +1,12 @@
 //! The Cartesian pipelines on the texture unit: the pipelines of `cart_pipeline` with the map in the unit's memory,
 //! fed by what a rasteriser gives (u, v, and for a MIP filter their screen derivatives) in place of four texels
 //! and two blend factors the host fetched: front (`texture::front`) → cart_decode → normalise ─┐ … as there.
-//! Named `cart_tex_<filter>[_matte]`; the front's latency comes before the decode, and the side-band lines grow by
-//! it (their lengths follow from the `AT_` constants the wiring derives).
+//! Named `cart_tex_<filter>[_surface][_hemi_oct][_matte]` after the host-fed pipeline each replaces (`_surface`:
+//! `cart_surface`'s one light per surface); the front's latency comes before the decode, and the side-band lines
+//! grow by it (their lengths follow from the `AT_` constants the wiring derives).
 
 use crate::cart_decode::CartDecode;
+use crate::cart_decode_hemi_oct::CartDecodeHemiOct;
 use crate::cartesian::wiring::cartesian_pipeline;
 use rust_hdl::prelude::*;
 
@@ -54,4 +56,45 @@ cartesian_pipeline! {
     texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
     mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    module: bilinear_hemi_oct,
+    block: CartTexBilinearHemiOct,
+    unit: "cart_tex_bilinear_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinear, module: bilinear, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+// one light per surface: the light word waits AT_DOT = 37 clocks (front 22 + decode 4 + normalise 11), 2^6 words
+cartesian_pipeline! {
+    module: bilinear_surface,
+    block: CartTexBilinearSurface,
+    unit: "cart_tex_bilinear_surface",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexBilinear, module: bilinear, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: bilinear_surface_matte,
+    block: CartTexBilinearSurfaceMatte,
+    unit: "cart_tex_bilinear_surface_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexBilinear, module: bilinear, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+// one light per surface, the nearest texel: the light word waits AT_DOT = 26 clocks (front 11 + decode 4 +
+// normalise 11), 2^5 words; the pipeline with its map memory (in the UP5K's SPRAM) that places on the UP5K
+cartesian_pipeline! {
+    module: nearest_surface_matte,
+    block: CartTexNearestSurfaceMatte,
+    unit: "cart_tex_nearest_surface_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearest, module: nearest, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }

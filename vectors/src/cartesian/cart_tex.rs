@@ -46,19 +46,22 @@ pub fn run(filter: Filter, host: &UnitModel, ports: &[Port], inputs: &[Vec<i64>]
     let at = At::of(ports, filter.mip());
     let src = sources(host, ports);
     let mut f = Front::new(filter);
-    inputs
-        .iter()
-        .map(|v| {
-            let t = f.step(v, &at);
-            let h: Vec<i64> = src
-                .iter()
-                .map(|s| match *s {
-                    Source::Byte(c) => t[c],
-                    Source::Zero => 0,
-                    Source::Port(k) => v[k],
-                })
-                .collect();
-            (host.exact)(&h)
+    inputs.iter().map(|v| (host.exact)(&host_of(&src, v, f.step(v, &at)))).collect()
+}
+
+/// The host's vector for a vector `v` of the textured pipeline whose front gave the texel (lo, hi): every texel
+/// port of the host that texel (a footprint of four equal texels, which the bilinear unit returns unchanged at
+/// blend factors of zero), its other ports `v`'s of the same name.
+pub fn host_vector(host: &UnitModel, ports: &[Port], v: &[i64], t: [i64; 2]) -> Vec<i64> {
+    host_of(&sources(host, ports), v, t)
+}
+
+fn host_of(src: &[Source], v: &[i64], t: [i64; 2]) -> Vec<i64> {
+    src.iter()
+        .map(|s| match *s {
+            Source::Byte(c) => t[c],
+            Source::Zero => 0,
+            Source::Port(k) => v[k],
         })
         .collect()
 }
@@ -282,14 +285,48 @@ textured!(trilinear_matte, "cart_tex_trilinear_matte", Filter::Trilinear, crate:
     w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
+textured!(
+    bilinear_hemi_oct, "cart_tex_bilinear_hemi_oct", Filter::Bilinear, crate::cart_pipeline::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    bilinear_surface, "cart_tex_bilinear_surface", Filter::Bilinear, crate::cart_surface::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1,
+    src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    bilinear_surface_matte, "cart_tex_bilinear_surface_matte", Filter::Bilinear, crate::cart_surface::MODEL_MATTE,
+    inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1,
+    src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    nearest_surface_matte, "cart_tex_nearest_surface_matte", Filter::Nearest, crate::cart_surface::MODEL_MATTE,
+    inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1,
+    src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 5] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 9] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
         (&nearest_matte::MODEL, nearest_matte::FILTER, nearest_matte::host()),
         (&nearest_mip_matte::MODEL, nearest_mip_matte::FILTER, nearest_mip_matte::host()),
         (&trilinear_matte::MODEL, trilinear_matte::FILTER, trilinear_matte::host()),
+        (&bilinear_hemi_oct::MODEL, bilinear_hemi_oct::FILTER, bilinear_hemi_oct::host()),
+        (&bilinear_surface::MODEL, bilinear_surface::FILTER, bilinear_surface::host()),
+        (&bilinear_surface_matte::MODEL, bilinear_surface_matte::FILTER, bilinear_surface_matte::host()),
+        (&nearest_surface_matte::MODEL, nearest_surface_matte::FILTER, nearest_surface_matte::host()),
     ]
 }
 

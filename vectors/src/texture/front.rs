@@ -163,6 +163,11 @@ impl Front {
             self.mem.write(v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
             return [0, 0];
         }
+        self.read(v, at)
+    }
+
+    /// A read vector's (lo, hi) from the memory as it stands (`step` without its writes).
+    pub fn read(&self, v: &[i64], at: &At) -> [i64; 2] {
         let (levels, frac) = self.levels(v, at);
         let b = levels.iter().map(|&l| self.sample(v, at, l)).collect::<Vec<_>>();
         match b[..] {
