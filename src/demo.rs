@@ -1,19 +1,18 @@
 //! `bumprtl demo`: the embedded default scene through every pipeline — US 6,819,319's Cartesian (second embodiment,
-//! with the seed's texels and with hemi-octahedral ones) and polar (first embodiment, FIG. 3), US 2004/0207631's height
+//! with the seed's texels and with hemi-octahedral ones, on the texture unit where its memory holds the map) and polar (first embodiment, FIG. 3), US 2004/0207631's height
 //! map, Tarini et al.'s palette at s_N = 256 and 4,096 — each through four paths (f64 ideal, bit-exact model, rust-hdl,
 //! Verilator), with pictures, waveforms, the Verilog, the seed's polar
 //! shortcomings shown, and one table of speed, hardware cost and error. The pipelines do the work
 //! (`sim::pipeline`); this file is the command's flow and its printing.
 
 use indicatif::{ProgressBar, ProgressStyle};
-use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar};
+use sim::pipeline::{Height, Palette, Pipeline, Polar};
 use sim::prepared::Prepared;
 use sim::render::{self, Image};
 use sim::scene::Scene;
 use sim::shortcomings::Shortcomings;
 use std::path::Path;
 use std::time::Instant;
-use vectors::cart_pipeline::Decode;
 use vectors::polar_encode::Scale;
 use vectors::stats::ErrorStats;
 
@@ -115,11 +114,27 @@ pub fn run(
     // the polar surface: a scene's default (h = 1, p = 4)
     let own = sim::pipelines::Settings::default();
     let polar = Polar::new(scale, own.pw, own.h);
-    let (cart, hemi) = (Cartesian::glossy(Decode::Seed), Cartesian::glossy(Decode::HemiOct));
+    // the Cartesian pipelines on the texture unit (the map and its MIP chain in its memory, each pixel's u, v); a
+    // user's map whose side the memory does not hold (a power of two up to 128) through the host-fed ones
+    let cartesian = |on_unit: &str, host: &str| {
+        let unit = sim::pipelines::named(on_unit).expect("a row of the table");
+        let row = if unit.renders(&scene) { unit } else { sim::pipelines::named(host).expect("a row of the table") };
+        sim::pipeline::build(row, &scene, &own)
+    };
+    let (cart, hemi) = (
+        cartesian("cart_tex_bilinear", "cart_pipeline"),
+        cartesian("cart_tex_bilinear_hemi_oct", "cart_pipeline_hemi_oct"),
+    );
     let height = Height::new(&scene);
     let (pal256, pal4096) = (Palette::new(256, &scene), Palette::new(4096, &scene));
-    let pipes: [(&dyn Pipeline, bool); 6] =
-        [(&cart, true), (&hemi, false), (&polar, true), (&height, true), (&pal256, true), (&pal4096, false)];
+    let pipes: [(&dyn Pipeline, bool); 6] = [
+        (cart.as_ref(), true),
+        (hemi.as_ref(), false),
+        (&polar, true),
+        (&height, true),
+        (&pal256, true),
+        (&pal4096, false),
+    ];
     // the demo's own scene first: the torus through the pipeline its file names (the model and Verilator)
     let torus_pipe = torus_spec.build();
     let on_torus = run_pipeline(torus_pipe.as_ref(), &torus, out, false, no_vl.is_empty())?;
@@ -128,8 +143,13 @@ pub fn run(
         .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
         .collect::<Result<Vec<Run>, String>>()?;
     let polar_setup = polar.set_up(&scene);
-    let sc =
-        Shortcomings::measure(&scene, &polar, &polar_setup, &runs[2].model, (&cart, &runs[0].prep, &runs[0].model));
+    let sc = Shortcomings::measure(
+        &scene,
+        &polar,
+        &polar_setup,
+        &runs[2].model,
+        (cart.as_ref(), &runs[0].prep, &runs[0].model),
+    );
 
     // pictures: per pipeline, then the shortcomings
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;

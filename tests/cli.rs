@@ -112,14 +112,14 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     assert_eq!(bits.split_whitespace().rev().take(6).collect::<Vec<_>>(), ["12", "8", "8", "16", "16", "16"], "{out}");
     assert!(out.contains("palette 256 shade vs the ideal under its one light"), "{out}");
     for f in [
-        "cart_pipeline_model.png",
-        "cart_pipeline_rust_hdl.png",
+        "cart_tex_bilinear_model.png",
+        "cart_tex_bilinear_rust_hdl.png",
         "polar_pipeline_model.png",
-        "cart_pipeline_hemi_oct_model.png",
-        "cart_pipeline.vcd",
+        "cart_tex_bilinear_hemi_oct_model.png",
+        "cart_tex_bilinear.vcd",
         "polar_pipeline.vcd",
-        "cart_pipeline_hemi_oct.vcd",
-        "verilog/cart_pipeline.v",
+        "cart_tex_bilinear_hemi_oct.vcd",
+        "verilog/cart_tex_bilinear.v",
         "fig8a_blinn.png",
         "fig8b_bspline.png",
         "colour_reference.png",
@@ -137,7 +137,7 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     ] {
         assert!(d.join(f).is_file(), "{f} missing");
     }
-    assert!(!d.join("cart_pipeline_verilator.png").exists());
+    assert!(!d.join("cart_tex_bilinear_verilator.png").exists());
     let _ = std::fs::remove_dir_all(&d);
 }
 
@@ -311,7 +311,8 @@ fn a_users_height_map_goes_through_the_height_cartesian_polar_and_palette_paths(
     for f in [
         "height_pipeline_model.png",
         "height_pipeline_rust_hdl.png",
-        "cart_pipeline_model.png",
+        // 8 × 8, a side the texture unit's memory holds
+        "cart_tex_bilinear_model.png",
         "polar_pipeline_model.png",
         "palette_pipeline_model.png",
         "palette_pipeline_12_model.png",
