@@ -74,9 +74,25 @@ fn interpolated(lf: [[f64; 3]; 3], w1: f64, w2: f64) -> [f64; 3] {
     ld.map(|c| c / ll)
 }
 
+/// A texel coordinate x (in map widths; texel centres at (k + 0.5)/t) on an axis of t texels: the corner pair and
+/// the U8 blend factor (truncated), repeating the map or clamped to its edge texels.
+fn axis(x: f64, t: usize, wrap: bool) -> (usize, usize, i64) {
+    let s = x * t as f64 - 0.5;
+    if wrap {
+        let f = s.floor();
+        let i0 = (f as i64).rem_euclid(t as i64) as usize;
+        (i0, (i0 + 1) % t, (((s - f) * 256.0) as i64).min(255))
+    } else {
+        let s = s.clamp(0.0, (t - 1) as f64);
+        let i0 = s.floor() as usize;
+        (i0, (i0 + 1).min(t - 1), (((s - i0 as f64) * 256.0) as i64).min(255))
+    }
+}
+
 /// The quad: the screen is the quad, its four vertices carry the lights, two triangles.
 fn quad(scene: &Scene, normals: &[[f64; 3]]) -> Frame {
     let t = scene.tex;
+    let wrap = scene.wrap.unwrap_or([false, false]);
     let corner = scene.vertex_lights();
     let surface_light = scene.light_dir(0.5, 0.5);
     // the corners of triangles (00, 10, 11) and (00, 11, 01)
@@ -86,13 +102,8 @@ fn quad(scene: &Scene, normals: &[[f64; 3]]) -> Frame {
     for py in 0..n {
         for px in 0..n {
             let (u, v) = ((px as f64 + 0.5) / n as f64, (py as f64 + 0.5) / n as f64);
-            // texture address: texel centres at (i + 0.5)/t, clamped at the borders
-            let su = (u * t as f64 - 0.5).clamp(0.0, (t - 1) as f64);
-            let sv = (v * t as f64 - 0.5).clamp(0.0, (t - 1) as f64);
-            let (i0, j0) = (su.floor() as usize, sv.floor() as usize);
-            let (i1, j1) = ((i0 + 1).min(t - 1), (j0 + 1).min(t - 1));
-            let ub = (((su - i0 as f64) * 256.0) as i64).min(255); // U8 blend factor, truncated
-            let vb = (((sv - j0 as f64) * 256.0) as i64).min(255);
+            // texture address: texel centres at (i + 0.5)/t, clamped at the borders unless the scene repeats
+            let ((i0, i1, ub), (j0, j1, vb)) = (axis(u, t, wrap[0]), axis(v, t, wrap[1]));
             // triangle (00, 10, 11) where u ≥ v, else (00, 11, 01)
             let (tri, w1, w2) = if u >= v { ([0, 1, 2], u - v, v) } else { ([3, 4, 5], u, v - u) };
             let corners = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
@@ -112,7 +123,7 @@ fn quad(scene: &Scene, normals: &[[f64; 3]]) -> Frame {
                 surface: surface_light,
                 pos,
                 deriv: [d, 0.0, 0.0, d],
-                wrap: [false, false],
+                wrap,
             });
         }
     }
@@ -144,20 +155,7 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
             lights.extend(tri.map(|i| light_at(mesh.uv[i][0], mesh.uv[i][1])));
         }
     }
-    let wrap_v = matches!(c.shape, surface::Shape::Torus { .. });
-    // a texel coordinate (texel centres at k + 0.5): the corner pair and the U8 blend factor (truncated)
-    let axis = |x: f64, wrap: bool| -> (usize, usize, i64) {
-        let s = x * t as f64 - 0.5;
-        if wrap {
-            let f = s.floor();
-            let i0 = (f as i64).rem_euclid(t as i64) as usize;
-            (i0, (i0 + 1) % t, (((s - f) * 256.0) as i64).min(255))
-        } else {
-            let s = s.clamp(0.0, (t - 1) as f64);
-            let i0 = s.floor() as usize;
-            (i0, (i0 + 1).min(t - 1), (((s - i0 as f64) * 256.0) as i64).min(255))
-        }
-    };
+    let wrap = scene.wrap.unwrap_or([true, matches!(c.shape, surface::Shape::Torus { .. })]);
     let mut out = vec![];
     for cv in surface::rasterise(&mesh, c.view, scene.size) {
         let tri = mesh.tris[cv.tri];
@@ -166,8 +164,8 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
         let scale = [c.repeat[0] as f64 * t as f64, c.repeat[1] as f64 * t as f64];
         let d = |axis: usize, k: usize| (0..3).map(|i| cv.dbary[axis][i] * mesh.uv[tri[i]][k]).sum::<f64>() * scale[k];
         let (pos, deriv) = ([uv[0] * scale[0], uv[1] * scale[1]], [d(0, 0), d(0, 1), d(1, 0), d(1, 1)]);
-        let (i0, i1, ub) = axis(uv[0] * c.repeat[0] as f64, true);
-        let (j0, j1, vb) = axis(uv[1] * c.repeat[1] as f64, wrap_v);
+        let (i0, i1, ub) = axis(uv[0] * c.repeat[0] as f64, t, wrap[0]);
+        let (j0, j1, vb) = axis(uv[1] * c.repeat[1] as f64, t, wrap[1]);
         let corners = [(i0, j0), (i1, j0), (i0, j1), (i1, j1)];
         let k = 3 * cv.tri;
         let (w1, w2) = (cv.bary[1], cv.bary[2]);
@@ -186,7 +184,7 @@ fn curved(scene: &Scene, c: &crate::scene::Curved, normals: &[[f64; 3]]) -> Fram
             surface: centre[cv.tri],
             pos,
             deriv,
-            wrap: [true, wrap_v],
+            wrap,
         });
     }
     Frame { pixels: out, lights }

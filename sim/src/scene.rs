@@ -33,6 +33,10 @@ pub struct Scene {
     /// The texture unit's LOD bias, levels (a multiple of 1/256, the LOD unit's Sq3.8): what a MIP filter adds to
     /// λ = log2 ρ before it picks its levels. 0: the isotropic rule as it is.
     pub lod_bias: f64,
+    /// How the map is addressed past its edge along u and v, true repeating it and false clamping to the edge
+    /// texel; None: the surface's own (the quad clamps, a sphere repeats round u and clamps at its poles, a torus
+    /// repeats both ways).
+    pub wrap: Option<[bool; 2]>,
 }
 
 /// A curved surface, how finely it is cut, how it is seen and how often the map repeats round it.
@@ -62,6 +66,7 @@ impl Default for Scene {
             per_surface: false,
             curved: None,
             lod_bias: 0.0,
+            wrap: None,
         }
     }
 }

@@ -27,6 +27,7 @@
 //! # filter = "bilinear"           # seed, hemi_oct: nearest | nearest_mip | bilinear | trilinear
 //! # lod_bias = -1.0               # nearest_mip, trilinear: levels added to λ, −8 to 8 − 1/256 in 1/256
 //! # fetch = "unit"                # seed, hemi_oct: unit (the texture unit's memory) | host
+//! # wrap = "repeat"               # repeat | clamp, or [u, v] one each; default: the surface's own (all but heights)
 //!
 //! [light]
 //! kind = "point"                  # point | directional
@@ -218,6 +219,28 @@ impl TryFrom<Vec<f64>> for Direction {
     }
 }
 
+/// How the map is addressed past its edge along u and v: `"repeat"` or `"clamp"` for both, or `[u, v]` one each
+/// (true repeats).
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "toml::Value")]
+pub struct Wrap(pub [bool; 2]);
+
+impl TryFrom<toml::Value> for Wrap {
+    type Error = String;
+    fn try_from(v: toml::Value) -> Result<Self, String> {
+        let one = |x: &toml::Value| match x.as_str() {
+            Some("repeat") => Ok(true),
+            Some("clamp") => Ok(false),
+            _ => Err(format!("the wrap is \"repeat\" or \"clamp\", or one for each axis [u, v], not {x}")),
+        };
+        match &v {
+            toml::Value::Array(a) if a.len() == 2 => Ok(Self([one(&a[0])?, one(&a[1])?])),
+            toml::Value::Array(a) => Err(format!("the wrap for each axis is two words [u, v], not {}", a.len())),
+            x => one(x).map(|w| Self([w, w])),
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq)]
 #[serde(rename_all = "snake_case")]
 pub enum Shape {
@@ -307,6 +330,7 @@ pub struct BumpSpec {
     pub filter: Option<Spanned<Filter>>,
     pub lod_bias: Option<Spanned<LodBias>>,
     pub fetch: Option<Spanned<Fetch>>,
+    pub wrap: Option<Spanned<Wrap>>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -614,6 +638,15 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             ));
         }
         scene.lod_bias = b.get_ref().0;
+    }
+    if let Some(w) = &bump.wrap {
+        if encoding == Encoding::Heights {
+            return Err(at.err(
+                w.span(),
+                "[bump] wrap: the height pipeline's fetch clamps its 3×3 window at the map's borders (US 2004/0207631 [151])",
+            ));
+        }
+        scene.wrap = Some(w.get_ref().0);
     }
     if fetch.is_some() && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
         return Err(at.err(

@@ -168,7 +168,20 @@ mod built {
         let mut sphere = Scene { size: 96, conc: 0, ..demo.clone() };
         sphere.curved = Some(Curved { shape: sim::surface::Shape::Sphere, repeat: [64, 1], ..demo.curved.unwrap() });
         let quad = Scene { size: 64, conc: 0, ..Scene::default() };
-        for (what, scene) in [("quad", quad), ("demo", Scene { size: 128, ..demo }), ("sphere", sphere)] {
+        // the scene's wrap against the surface's own: the quad repeating (at 256 pixels its edge pixels sample
+        // within half a texel of its edge), the torus clamped
+        let repeating = Scene { size: 256, wrap: Some([true, true]), ..quad.clone() };
+        let clamped = Scene { size: 128, wrap: Some([false, false]), ..demo.clone() };
+        let outs = |s: &Scene| sim::render::model(host.model(), &build(host, s, &Settings::default()).prepare(s)).outs;
+        let own = Scene { wrap: None, ..repeating.clone() };
+        assert_ne!(outs(&own), outs(&repeating), "the quad's edge texels blend with the far edge's");
+        for (what, scene) in [
+            ("quad", quad),
+            ("demo", Scene { size: 128, ..demo }),
+            ("sphere", sphere),
+            ("quad, repeating", repeating),
+            ("torus, clamped", clamped),
+        ] {
             let (u, h) = (build(unit, &scene, &Settings::default()), build(host, &scene, &Settings::default()));
             let (pu, ph) = (u.prepare(&scene), h.prepare(&scene));
             let (ou, oh) = (sim::render::model(u.model(), &pu), sim::render::model(h.model(), &ph));

@@ -576,3 +576,15 @@ mod positions {
         assert_eq!(line_col(t, 9), (2, 4));
     }
 }
+
+#[test]
+fn the_wrap_is_one_word_or_one_each_axis_and_not_the_height_pipelines() {
+    let with = |bump: &str| format!("size = 64\n[bump]\nsource = \"procedural\"\n{bump}");
+    assert_eq!(parse(&with("")).unwrap().scene.wrap, None, "the surface's own");
+    assert_eq!(parse(&with("wrap = \"repeat\"\n")).unwrap().scene.wrap, Some([true, true]));
+    assert_eq!(parse(&with("wrap = [\"clamp\", \"repeat\"]\n")).unwrap().scene.wrap, Some([false, true]));
+    refused(&with("wrap = \"mirror\"\n"), "s.toml:4:8:", &["\"repeat\" or \"clamp\"", "mirror"]);
+    refused(&with("wrap = [\"clamp\"]\n"), "s.toml:4:8:", &["two words [u, v], not 1"]);
+    refused(&with("wrap = 3\n"), "s.toml:4:8:", &["\"repeat\" or \"clamp\""]);
+    refused(&with("encoding = \"heights\"\nwrap = \"clamp\"\n"), "s.toml:5:8:", &["height pipeline", "clamps"]);
+}

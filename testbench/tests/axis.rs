@@ -221,8 +221,8 @@ fn random_streams_through_each_familys_wrapper_under_back_pressure_in_verilator(
 ///
 /// The texture unit's random stream is not among them: it reads texels it never wrote, which the model reads as 0
 /// (as the FPGA's block RAM powers up) and two-state Verilator zeroes, but which four-state Icarus reads as x, since
-/// rust-hdl's RAM has no initial contents (4,000 vectors: 207 outputs x). Its golden stream, which loads the map
-/// before it reads it, goes through Icarus instead, the reset in its middle.
+/// the map's banks have no initial contents (measured with the earlier two-port banks: 207 of 4,000 outputs x). Its
+/// golden stream, which loads the map before it reads it, goes through Icarus instead, the reset in its middle.
 #[test]
 fn random_streams_through_each_familys_wrapper_under_back_pressure_in_icarus() {
     let n = std::env::var("BUMPRTL_ICARUS_VECTORS").ok().and_then(|v| v.parse().ok()).unwrap_or(4_000);
