@@ -29,6 +29,8 @@ pub struct PointFigures {
     pub ff: u64,
     pub dsp: u64,
     pub bram: u64,
+    /// the UP5K's single-port RAM blocks (a texture unit's map)
+    pub spram: u64,
     pub soft: u64,
     pub estimated: bool,
     pub lc: Option<u64>,
@@ -78,6 +80,7 @@ impl PointFigures {
             ("ff", self.ff.to_string()),
             ("dsp", self.dsp.to_string()),
             ("bram", self.bram.to_string()),
+            ("spram", self.spram.to_string()),
             ("soft", self.soft.to_string()),
             ("estimated", self.estimated.to_string()),
             ("lc", o(self.lc.map(|x| x.to_string()))),
@@ -123,6 +126,7 @@ impl PointFigures {
             ff: num("ff")?,
             dsp: num("dsp")?,
             bram: num("bram")?,
+            spram: num("spram").unwrap_or(0),
             soft: num("soft")?,
             estimated: get("estimated")? == "true",
             lc: get("lc").filter(|v| !v.is_empty()).and_then(|v| v.parse().ok()),
@@ -159,8 +163,8 @@ mod tests {
     #[test]
     fn a_saved_point_reads_back_whole() {
         let mut a = r("quad.cart_surface.t6n1f8d0", "quad", 1234, 6, 0.75);
-        (a.angle, a.encoding, a.method, a.datapath, a.fmax, a.lc, a.estimated) =
-            (Some((0.1, 2.0)), Some((0.2, 3.0)), None, Some((0.5, 1.5)), Some(37.5), Some(3082), true);
+        (a.angle, a.encoding, a.method, a.datapath, a.fmax, a.lc, a.estimated, a.spram) =
+            (Some((0.1, 2.0)), Some((0.2, 3.0)), None, Some((0.5, 1.5)), Some(37.5), Some(3082), true, 4);
         (a.units, a.knob, a.pipeline, a.part, a.model_mpx) =
             ("x → y".into(), "normalise 2^6 table, 1 Newton".into(), "cart_surface".into(), "up5k".into(), 12.5);
         assert_eq!(PointFigures::from_text(&a.to_text()), Some(a.clone()));

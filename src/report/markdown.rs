@@ -18,14 +18,14 @@ pub fn markdown(rs: &[PointFigures], budgets: &[f64]) -> String {
          `cost` = SB_LUT4 + {LUT4_PER_MAC16}·SB_MAC16; `est.`: the pipeline plus the swept unit's difference. P: on the scene's Pareto set of cost \
          against mean colour error.\n"
     );
-    let _ = writeln!(s, "| point | pipeline | knob | colour | shade | angle ° | encoding | method | datapath | LUT4 | FF | MAC16 | RAM40 | in logic | cost | part | LC | fmax MHz | latency | P | model Mpx/s |");
-    let _ = writeln!(s, "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+    let _ = writeln!(s, "| point | pipeline | knob | colour | shade | angle ° | encoding | method | datapath | LUT4 | FF | MAC16 | RAM40 | SPRAM | in logic | cost | part | LC | fmax MHz | latency | P | model Mpx/s |");
+    let _ = writeln!(s, "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
     for (r, p) in rs.iter().zip(&on) {
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}{} | {} | {} | {} | {} | {} | {:.2} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}{} | {} | {} | {} | {} | {} | {:.2} |",
             r.id, r.pipeline, r.knob, f2(Some(r.colour)), f2(Some(r.shade)), f2(r.angle), f2(r.encoding), f2(r.method), f2(r.datapath),
-            r.lut4, r.ff, r.dsp, r.bram, r.soft, r.cost(), if r.estimated { " est." } else { "" }, r.part,
+            r.lut4, r.ff, r.dsp, r.bram, r.spram, r.soft, r.cost(), if r.estimated { " est." } else { "" }, r.part,
             r.lc.map(|x| x.to_string()).unwrap_or("-".into()), r.fmax.map(|x| format!("{x:.1}")).unwrap_or("-".into()), r.latency,
             if *p { "P" } else { "" }, r.model_mpx
         );

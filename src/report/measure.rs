@@ -137,7 +137,8 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<PointFigures, Str
     }
     (r.lut4, r.ff, r.dsp, r.bram, r.soft) =
         (lut4.max(0) as u64, ff.max(0) as u64, dsp.max(0) as u64, bram.max(0) as u64, soft.max(0) as u64);
-    // the AXI4-Stream wrapper's own cells, the same for every point of a pipeline (cached)
+    r.spram = c.spram; // no swept unit holds a single-port memory
+                       // the AXI4-Stream wrapper's own cells, the same for every point of a pipeline (cached)
     let axis = sim::units::unit(m.name)?.axis;
     let (depth, words, bits) = axis.fifo();
     let a = axis.ctl_cells(&udir.join("axis_ctl"), synth::fpga::Family::Ice40)?;
