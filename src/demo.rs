@@ -1,8 +1,8 @@
 //! `bumprtl demo`: the embedded default scene through every pipeline — US 6,819,319's Cartesian (second embodiment,
-//! with the seed's texels and with hemi-octahedral ones, on the texture unit where its memory holds the map) and polar (first embodiment, FIG. 3), US 2004/0207631's height
-//! map, Tarini et al.'s palette at s_N = 256 and 4,096 — each through four paths (f64 ideal, bit-exact model, rust-hdl,
-//! Verilator), with pictures, waveforms, the Verilog, the seed's polar
-//! shortcomings shown, and one table of speed, hardware cost and error. The pipelines do the work
+//! with the seed's texels and with hemi-octahedral ones, on the texture unit where its memory holds the map) and
+//! polar (first embodiment, FIG. 3), US 2004/0207631's height map, Tarini et al.'s palette at s_N = 256 and 4,096 —
+//! each through four paths (f64 ideal, bit-exact model, rust-hdl, Verilator), with pictures, waveforms, the Verilog,
+//! US 6,819,319's polar shortcomings shown, and one table of speed, hardware cost and error. The pipelines do the work
 //! (`sim::pipeline`); this file is the command's flow and its printing.
 
 use indicatif::{ProgressBar, ProgressStyle};
@@ -333,7 +333,7 @@ pub fn run(
     row("polar shade vs an ideal lit by the surface's light", &sc.surface);
     row("polar shade vs equation 3 + powf on its own codes", &sc.own);
     println!();
-    println!("the seed's polar shortcomings");
+    println!("US 6,819,319's polar shortcomings");
     row(&format!("(b) polar, {} px filtered across R's wrap", sc.wrap.count), &sc.wrap);
     row("    the other pixels (both vs the surface light)", &sc.rest);
     row("    Cartesian shade on the wrap pixels", &sc.wrap_cartesian);

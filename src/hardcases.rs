@@ -95,7 +95,7 @@ pub fn rtl_cases() -> Vec<Case> {
     v.push(case(
         "light_iter",
         "vertex lights 180° apart, at the midpoint",
-        "the seed's warning: the interpolated vector shrinks to zero length (|L| ≤ 1 LSB)",
+        "US 6,819,319's warning: the interpolated vector shrinks to zero length (|L| ≤ 1 LSB)",
         vec![vec![127, 0, 0, -127, 0, 0, 127, 0, 0, 128, 0]],
         |o| (format!("{:?}", o[0]), len3(&o[0]) <= 1.0),
     ));
@@ -235,7 +235,7 @@ pub fn software_rows() -> Vec<Row> {
     rows.push(Row {
         unit: "polar_encode",
         case: "light 18° below the horizon".into(),
-        ask: "the seed's shortcoming: a polar light cannot go below; it is moved onto the horizon (T = 0) and flagged",
+        ask: "US 6,819,319's shortcoming: a polar light cannot go below; it is moved onto the horizon (T = 0) and flagged",
         seen: format!("T = {:.3}°, moved = {}", l.t.to_degrees(), l.moved),
         pass: l.moved && l.t == 0.0,
     });
