@@ -441,6 +441,14 @@ pub static PIPELINES: &[Row] = &[
         Filter::Nearest,
         &["tex_addr", "tex_fetch", "cart_decode", "normalise", "dot3", "blend"],
     ),
+    tex(
+        "cart_tex_nearest_surface_hemi_oct_matte",
+        "hemi-oct, one light, matte, texture unit, nearest",
+        "cart_surface_hemi_oct_matte",
+        surface(v(H, false, false)),
+        Filter::Nearest,
+        &["tex_addr", "tex_fetch", "cart_decode_hemi_oct", "normalise", "dot3", "blend"],
+    ),
     Row {
         name: "polar_pipeline",
         family: Family::Polar(Scale::Seed),

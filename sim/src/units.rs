@@ -212,6 +212,17 @@ pub static UNITS: &[Unit] = &[
         ("fetch$t01", "as fetch$t10"),
         ("fetch$t11", "as fetch$t10"),
     ]),
+    unit!(
+        map: &vectors::cart_tex::nearest_surface_hemi_oct_matte::MODEL,
+        rtl::cart_tex::CartTexNearestSurfaceHemiOctMatte
+    )
+    .waiving(&[
+        ("addr$ublend", "as in cart_tex_nearest_matte"),
+        ("addr$vblend", "as addr$ublend"),
+        ("fetch$t10", "as in cart_tex_nearest_matte"),
+        ("fetch$t01", "as fetch$t10"),
+        ("fetch$t11", "as fetch$t10"),
+    ]),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -15,6 +15,7 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("seed", true, "bilinear", true),
     ("seed", true, "bilinear", false),
     ("seed", true, "nearest", false),
+    ("hemi_oct", true, "nearest", false),
 ];
 
 /// The pipeline a scene's choices name, by the project's naming of its rtl tops; None where the reader refuses.

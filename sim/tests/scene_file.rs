@@ -167,10 +167,10 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     assert_eq!(kind(scene("seed", host, "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
     assert_eq!(kind(scene("seed", host, "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
     assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 12\n")), v(Decode::HemiOct, false, true));
-    assert_eq!(
-        kind(scene("hemi_oct", "filter = \"nearest\"\n", "surface", "gloss = 0\n")),
-        v(Decode::HemiOct, true, false)
-    );
+    let nearest = "filter = \"nearest\"\n";
+    assert_eq!(kind(scene("hemi_oct", nearest, "surface", "gloss = 0\n")), "cart_tex_nearest_surface_hemi_oct_matte");
+    let nearest_host = format!("{nearest}{host}");
+    assert_eq!(kind(scene("hemi_oct", &nearest_host, "surface", "gloss = 0\n")), v(Decode::HemiOct, true, false));
     assert_eq!(kind(scene("seed", "filter = \"bilinear\"\n", "surface", "gloss = 5\n")), "cart_tex_bilinear_surface");
     refused(
         &scene("seed", "filter = \"nearest\"\n", "vertex", ""),

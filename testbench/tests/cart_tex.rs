@@ -4,13 +4,14 @@
 //! they read.
 use rtl::cart_tex::{
     CartTexBilinear, CartTexBilinearHemiOct, CartTexBilinearMatte, CartTexBilinearSurface, CartTexBilinearSurfaceMatte,
-    CartTexNearestMatte, CartTexNearestMipMatte, CartTexNearestSurfaceMatte, CartTexTrilinearMatte,
+    CartTexNearestMatte, CartTexNearestMipMatte, CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte,
+    CartTexTrilinearMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::cart_tex::{
     bilinear, bilinear_hemi_oct, bilinear_matte, bilinear_surface, bilinear_surface_matte, nearest_matte,
-    nearest_mip_matte, nearest_surface_matte, trilinear_matte,
+    nearest_mip_matte, nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear_matte,
 };
 use vectors::UnitModel;
 
@@ -23,6 +24,11 @@ unit_tests!(cart_tex_bilinear_hemi_oct, CartTexBilinearHemiOct, bilinear_hemi_oc
 unit_tests!(cart_tex_bilinear_surface, CartTexBilinearSurface, bilinear_surface::MODEL);
 unit_tests!(cart_tex_bilinear_surface_matte, CartTexBilinearSurfaceMatte, bilinear_surface_matte::MODEL);
 unit_tests!(cart_tex_nearest_surface_matte, CartTexNearestSurfaceMatte, nearest_surface_matte::MODEL);
+unit_tests!(
+    cart_tex_nearest_surface_hemi_oct_matte,
+    CartTexNearestSurfaceHemiOctMatte,
+    nearest_surface_hemi_oct_matte::MODEL
+);
 
 /// Random streams through rust-hdl (from an empty memory, which both read as zero), the hard cases with bubbles,
 /// and a long random stream under Verilator after the hard cases have loaded the chain it reads.
@@ -80,4 +86,9 @@ fn cart_tex_bilinear_surface_matte_streams() {
 #[test]
 fn cart_tex_nearest_surface_matte_streams() {
     three_streams::<CartTexNearestSurfaceMatte>(&nearest_surface_matte::MODEL, 31);
+}
+
+#[test]
+fn cart_tex_nearest_surface_hemi_oct_matte_streams() {
+    three_streams::<CartTexNearestSurfaceHemiOctMatte>(&nearest_surface_hemi_oct_matte::MODEL, 32);
 }

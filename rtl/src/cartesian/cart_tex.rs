@@ -98,3 +98,13 @@ cartesian_pipeline! {
     texture: { block: TexNearest, module: nearest, u: u, v: v },
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }
+
+// the same with hemi-octahedral texels: AT_DOT = 25 (front 11 + the hemi-oct decode 3 + normalise 11), 2^5 words
+cartesian_pipeline! {
+    module: nearest_surface_hemi_oct_matte,
+    block: CartTexNearestSurfaceHemiOctMatte,
+    unit: "cart_tex_nearest_surface_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearest, module: nearest, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
+}

@@ -315,8 +315,16 @@ textured!(
     src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
+textured!(
+    nearest_surface_hemi_oct_matte, "cart_tex_nearest_surface_hemi_oct_matte", Filter::Nearest,
+    crate::cart_surface::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1,
+    src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 9] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 10] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
@@ -327,6 +335,11 @@ pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 9] {
         (&bilinear_surface::MODEL, bilinear_surface::FILTER, bilinear_surface::host()),
         (&bilinear_surface_matte::MODEL, bilinear_surface_matte::FILTER, bilinear_surface_matte::host()),
         (&nearest_surface_matte::MODEL, nearest_surface_matte::FILTER, nearest_surface_matte::host()),
+        (
+            &nearest_surface_hemi_oct_matte::MODEL,
+            nearest_surface_hemi_oct_matte::FILTER,
+            nearest_surface_hemi_oct_matte::host(),
+        ),
     ]
 }
 
