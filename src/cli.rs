@@ -73,6 +73,9 @@ enum Cmd {
         /// the clock target given to nextpnr, MHz (default: 50 for the UP5K, 125 for the ECP5)
         #[arg(long)]
         freq: Option<f64>,
+        /// nextpnr at seeds 1 ..= N, each placement cached: the median, slowest and fastest fmax
+        #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=99))]
+        seeds: u32,
     },
     /// Every signal of a unit's rtl block: its declared format and the range it takes over the unit's vectors in
     /// rust-hdl (every input up to 2^20, else the hard cases and --count random vectors), bits needed and spare
@@ -196,6 +199,9 @@ enum Cmd {
         /// skip nextpnr (yosys cells only; no logic cells or fmax)
         #[arg(long)]
         no_place: bool,
+        /// each fmax is the median of this many nextpnr placements (seeds 1 ..= N), each cached
+        #[arg(long, default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=99), conflicts_with = "no_place")]
+        seeds: u32,
         /// only the points whose id contains this text
         #[arg(long)]
         only: Option<String>,
@@ -324,13 +330,13 @@ pub fn main() -> Result<(), String> {
             crate::unit_commands::widths_budget(name, b, target, dir)?
         }
         Cmd::Widths { unit: name, count, seed, csv, .. } => crate::unit_commands::widths(name, count, seed, csv)?,
-        Cmd::Synth { unit: name, scene, target, dir, freq } => {
-            crate::unit_commands::synth(name, scene, target, dir, freq)?
+        Cmd::Synth { unit: name, scene, target, dir, freq, seeds } => {
+            crate::unit_commands::synth(name, scene, target, dir, freq, seeds)?
         }
-        Cmd::Report { scenes, out, budgets, no_place, only, plan, point, merge } => {
+        Cmd::Report { scenes, out, budgets, no_place, seeds, only, plan, point, merge } => {
             let scenes =
                 if scenes.is_empty() { crate::report::DEFAULT_SCENES.map(String::from).to_vec() } else { scenes };
-            let place = !no_place;
+            let place = (!no_place).then_some(seeds);
             match (plan, point, merge) {
                 (Some(file), _, _) => {
                     crate::output::writable_file(&file)?;

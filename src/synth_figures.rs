@@ -32,12 +32,26 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
                 f.map(|x| format!("{x:.1}")).unwrap_or("-".into()),
                 r.latency
             );
+            println!("               {}", placements(r));
         }
     }
     if let Some(c) = &r.critical {
-        println!("  critical path {c}");
+        println!("  critical path at seed {}: {c}", r.seed);
     }
     blocks_line(&r.blocks, p.family, 2);
+}
+
+/// What an fmax is the median of: "the median of 5 placements (nextpnr seeds), slowest 120.3, fastest 131.0 MHz".
+pub fn placements(r: &synth::fpga::SynthReport) -> String {
+    let n = r.placements;
+    let range = match r.fmax_range {
+        Some((lo, hi)) if n > 1 => format!(", slowest {lo:.1}, fastest {hi:.1} MHz"),
+        _ => String::new(),
+    };
+    match n {
+        1 => format!("one placement (nextpnr seed {})", r.seed),
+        _ => format!("the median of {n} placements (nextpnr seeds){range}"),
+    }
 }
 
 /// The hard blocks by top-level instance: "unit$0 3, unit$1 3, …" DSP, then BRAM.

@@ -137,6 +137,7 @@ pub fn synth(
     target: Option<String>,
     dir: PathBuf,
     freq: Option<f64>,
+    seeds: u32,
 ) -> Result<(), String> {
     let name = match (name, scene) {
         (Some(n), _) => n,
@@ -163,7 +164,8 @@ pub fn synth(
             (p, why)
         }
     };
-    let r = rtl.synth_and_place(&d, part, freq.unwrap_or(part.default_freq()), &choice)?;
+    let r =
+        rtl.synth_and_place(&d, part, freq.unwrap_or(part.default_freq()), &choice, synth::fpga::Seeds::all(seeds))?;
     crate::synth_figures::synth_row(&r);
     let family = r.part().family;
     let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| rtl.synth_tied(&d, family, tag, ties, keep);

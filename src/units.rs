@@ -8,15 +8,19 @@ pub fn synth_cells(name: &str, dir: &std::path::Path) -> Result<synth::fpga::Cel
     sim::units::unit(name)?.rtl.synth_unit(dir, synth::fpga::Family::Ice40)
 }
 
-/// A unit placed on the smallest part it fits at that part's default clock target (cached); None where that part
-/// is an ECP5 and nextpnr-ecp5 is not installed.
-pub fn place_cached(name: &str, dir: &std::path::Path) -> Result<Option<synth::fpga::SynthReport>, String> {
+/// A unit placed on the smallest part it fits at that part's default clock target at `seeds` (each placement
+/// cached); None where that part is an ECP5 and nextpnr-ecp5 is not installed.
+pub fn place_cached(
+    name: &str,
+    dir: &std::path::Path,
+    seeds: synth::fpga::Seeds,
+) -> Result<Option<synth::fpga::SynthReport>, String> {
     let rtl = sim::units::unit(name)?.rtl;
     let (part, _, _) = rtl.choose(dir)?;
     if part.family == synth::fpga::Family::Ecp5 && synth::tools::nextpnr_ecp5().is_none() {
         Ok(None)
     } else {
-        rtl.synth_and_place_cached(dir, part, part.default_freq()).map(Some)
+        rtl.synth_and_place(dir, part, part.default_freq(), "", seeds).map(Some)
     }
 }
 

@@ -207,6 +207,68 @@ fn a_part_too_small_is_named_with_its_resource_and_a_placed_design_reports_its_f
     assert!(err.contains("unknown target `ecp5-12f`") && err.contains("ecp5-45f"), "{err}");
 }
 
+/// `synth`'s fmax line, its placements line ("the median of N placements …, slowest A, fastest B MHz") and the seed
+/// of its critical path.
+fn fmax_figures(out: &str) -> (f64, u32, f64, f64, u32) {
+    let lines: Vec<&str> = out.lines().collect();
+    let k =
+        lines.iter().position(|l| l.trim_start().starts_with("fmax")).unwrap_or_else(|| panic!("no fmax in\n{out}"));
+    let num = |t: &str| t.trim_end_matches([',', ' ']).parse::<f64>().unwrap_or_else(|_| panic!("{t}: {out}"));
+    let median = num(lines[k].split_whitespace().nth(1).unwrap());
+    let words: Vec<&str> = lines[k + 1].split_whitespace().collect();
+    let after = |w: &str| words[words.iter().position(|x| *x == w).unwrap_or_else(|| panic!("{w}: {out}")) + 1];
+    let seed = out.split("critical path at seed ").nth(1).and_then(|r| r.split(':').next()).unwrap();
+    (median, after("of").parse().unwrap(), num(after("slowest")), num(after("fastest")), seed.parse().unwrap())
+}
+
+#[test]
+fn synth_places_at_several_seeds_each_cached_and_reports_their_median() {
+    let d = scratch("seeds");
+    let cache = d.join("cache");
+    let run = |seeds: &str| {
+        let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+            .args(["synth", "gloss", "--target", "up5k", "--seeds", seeds, "--dir", d.join("work").to_str().unwrap()])
+            .env("BUMPRTL_SYNTH_CACHE", &cache)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let placements = || {
+        let mut v: Vec<String> = std::fs::read_dir(&cache)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.ends_with(".placement"))
+            .collect();
+        v.sort();
+        v
+    };
+    let out = run("3");
+    let (median, n, lo, hi, seed) = fmax_figures(&out);
+    assert!(n == 3 && lo <= median && median <= hi && (1..=3).contains(&seed), "{out}");
+    // one cache entry a placement, one nextpnr log a seed
+    let three = placements();
+    assert_eq!(three.len(), 3, "{three:?}");
+    assert!((1..=3).all(|s| d.join("work/gloss").join(format!("nextpnr.seed{s}.log")).is_file()));
+    // five seeds place only the two new ones: the three kept entries are read back, unchanged
+    let kept: Vec<String> = three.iter().map(|n| std::fs::read_to_string(cache.join(n)).unwrap()).collect();
+    std::fs::remove_file(d.join("work/gloss/nextpnr.seed1.log")).unwrap();
+    let out = run("5");
+    let (median, n, lo, hi, _) = fmax_figures(&out);
+    assert!(n == 5 && lo <= median && median <= hi, "{out}");
+    assert_eq!(placements().len(), 5);
+    assert!(!d.join("work/gloss/nextpnr.seed1.log").exists(), "seed 1 was placed again");
+    let again: Vec<String> = three.iter().map(|n| std::fs::read_to_string(cache.join(n)).unwrap()).collect();
+    assert_eq!(again, kept);
+    // the figures are the cached placements': seed 1's entry changed by hand is what one placement reports
+    let first = three.iter().find(|n| std::fs::read_to_string(cache.join(n)).unwrap().contains("\nseed=1\n")).unwrap();
+    let text = std::fs::read_to_string(cache.join(first)).unwrap();
+    let fmax = text.lines().find(|l| l.starts_with("fmax_mhz=")).unwrap();
+    std::fs::write(cache.join(first), text.replace(fmax, "fmax_mhz=999.5")).unwrap();
+    let one = run("1");
+    assert!(one.contains("999.5 MHz") && one.contains("one placement (nextpnr seed 1)"), "{one}");
+}
+
 #[test]
 fn the_default_target_is_the_up5k_for_a_unit_that_fits_and_says_why() {
     let d = scratch("default");

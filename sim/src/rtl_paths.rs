@@ -12,7 +12,7 @@ use rtl::axis::AxisBlock;
 use rtl::StreamUnit;
 use std::marker::PhantomData;
 use std::path::{Path, PathBuf};
-use synth::fpga::{Blocks, Cells, Family, Fit, Part, SynthReport};
+use synth::fpga::{Blocks, Cells, Family, Fit, Part, Seeds, SynthReport};
 use vectors::UnitModel;
 
 /// A block as its Verilog, its cells and its widths.
@@ -45,11 +45,24 @@ pub trait RtlPaths: RtlBlock {
     /// A self-checking testbench of these bit patterns beside the module in `dir`: the files written.
     fn selfcheck(&self, dir: &Path, ins: &[Vec<u64>], outs: &[Vec<u64>], source: &str) -> Result<Vec<PathBuf>, String>;
     /// Cells and, for each part that holds them, placement and timing.
-    fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String>;
+    fn measure(
+        &self,
+        dir: &Path,
+        parts: &[Part],
+        seeds: Seeds,
+        say: &dyn Fn(String),
+    ) -> Result<Vec<(Part, Fit)>, String>;
     /// The part it is placed on when the user names none, its cells there, and why each smaller part was passed over.
     fn choose(&self, dir: &Path) -> Result<(Part, Cells, String), String>;
-    fn synth_and_place(&self, dir: &Path, part: Part, freq_mhz: f64, choice: &str) -> Result<SynthReport, String>;
-    fn synth_and_place_cached(&self, dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String>;
+    /// Placed on `part` at each of `seeds`, each placement cached: the median placement's report.
+    fn synth_and_place(
+        &self,
+        dir: &Path,
+        part: Part,
+        freq: f64,
+        choice: &str,
+        seeds: Seeds,
+    ) -> Result<SynthReport, String>;
     /// Its cells with some inputs tied to constants (a mode's view of the block).
     fn synth_tied(
         &self,
@@ -178,17 +191,27 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
         written.extend(synth::selfcheck::write::<U>(dir, ins, outs, source)?);
         Ok(written)
     }
-    fn measure(&self, dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
-        synth::fpga::measure::<U>(dir, parts, say)
+    fn measure(
+        &self,
+        dir: &Path,
+        parts: &[Part],
+        seeds: Seeds,
+        say: &dyn Fn(String),
+    ) -> Result<Vec<(Part, Fit)>, String> {
+        synth::fpga::measure::<U>(dir, parts, seeds, say)
     }
     fn choose(&self, dir: &Path) -> Result<(Part, Cells, String), String> {
         synth::fpga::choose::<U>(dir)
     }
-    fn synth_and_place(&self, dir: &Path, part: Part, freq_mhz: f64, choice: &str) -> Result<SynthReport, String> {
-        synth::fpga::synth_and_place::<U>(dir, part, freq_mhz, choice)
-    }
-    fn synth_and_place_cached(&self, dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
-        synth::fpga::synth_and_place_cached::<U>(dir, part, freq_mhz)
+    fn synth_and_place(
+        &self,
+        dir: &Path,
+        part: Part,
+        freq: f64,
+        choice: &str,
+        seeds: Seeds,
+    ) -> Result<SynthReport, String> {
+        synth::fpga::synth_and_place::<U>(dir, part, freq, choice, seeds)
     }
     fn synth_tied(
         &self,

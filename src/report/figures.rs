@@ -34,7 +34,10 @@ pub struct PointFigures {
     pub soft: u64,
     pub estimated: bool,
     pub lc: Option<u64>,
+    /// the median placement's fmax, the slowest and fastest placement's, and how many placements (nextpnr seeds)
     pub fmax: Option<f64>,
+    pub fmax_range: Option<(f64, f64)>,
+    pub placements: u32,
     pub latency: usize,
     /// the AXI4-Stream wrapper around the pipeline: its FIFO and what it adds in iCE40 cells
     pub axis: Option<AxisCost>,
@@ -85,6 +88,8 @@ impl PointFigures {
             ("estimated", self.estimated.to_string()),
             ("lc", o(self.lc.map(|x| x.to_string()))),
             ("fmax", o(self.fmax.map(|x| x.to_string()))),
+            ("fmax_range", o(self.fmax_range.map(|(a, b)| format!("{a} {b}")))),
+            ("placements", self.placements.to_string()),
             ("latency", self.latency.to_string()),
             (
                 "axis",
@@ -131,6 +136,11 @@ impl PointFigures {
             estimated: get("estimated")? == "true",
             lc: get("lc").filter(|v| !v.is_empty()).and_then(|v| v.parse().ok()),
             fmax: get("fmax").filter(|v| !v.is_empty()).and_then(|v| v.parse().ok()),
+            fmax_range: get("fmax_range").and_then(|v| {
+                let (a, b) = v.split_once(' ')?;
+                Some((a.parse().ok()?, b.parse().ok()?))
+            }),
+            placements: get("placements").and_then(|v| v.parse().ok()).unwrap_or(0),
             latency: get("latency")?.parse().ok()?,
             axis: get("axis").and_then(|v| {
                 match v.split(' ').filter_map(|x| x.parse::<u64>().ok()).collect::<Vec<_>>()[..] {
@@ -165,6 +175,7 @@ mod tests {
         let mut a = r("quad.cart_surface.t6n1f8d0", "quad", 1234, 6, 0.75);
         (a.angle, a.encoding, a.method, a.datapath, a.fmax, a.lc, a.estimated, a.spram) =
             (Some((0.1, 2.0)), Some((0.2, 3.0)), None, Some((0.5, 1.5)), Some(37.5), Some(3082), true, 4);
+        (a.fmax_range, a.placements) = (Some((36.25, 39.0)), 5);
         (a.units, a.knob, a.pipeline, a.part, a.model_mpx) =
             ("x → y".into(), "normalise 2^6 table, 1 Newton".into(), "cart_surface".into(), "up5k".into(), 12.5);
         assert_eq!(PointFigures::from_text(&a.to_text()), Some(a.clone()));

@@ -8,6 +8,11 @@ use std::fmt::Write as _;
 /// budgets' answers.
 pub fn markdown(rs: &[PointFigures], budgets: &[f64]) -> String {
     let on = pareto(rs);
+    let fmax = |r: &PointFigures| match (r.fmax, r.fmax_range) {
+        (Some(m), Some((lo, hi))) => format!("{m:.1} ({lo:.1}–{hi:.1}, {})", r.placements),
+        (Some(m), None) => format!("{m:.1} ({})", r.placements),
+        (None, _) => "-".into(),
+    };
     let f2 = |x: Option<(f64, f64)>| x.map(|(a, b)| format!("{a:.3} / {b:.2}")).unwrap_or("-".into());
     let mut s = String::new();
     let _ = writeln!(s, "# bumprtl report\n");
@@ -16,9 +21,9 @@ pub fn markdown(rs: &[PointFigures], budgets: &[f64]) -> String {
         "Error against each scene's f64 ideal, 8-bit LSB (mean / max; angle in degrees). The shade's error split: encoding, method, datapath \
          (a palette's quantization is its encoding; a height map's parts are taken through its B-spline). Cost: iCE40 yosys cells (products beyond the UP5K's 8 SB_MAC16 in logic); \
          `cost` = SB_LUT4 + {LUT4_PER_MAC16}·SB_MAC16; `est.`: the pipeline plus the swept unit's difference. P: on the scene's Pareto set of cost \
-         against mean colour error.\n"
+         against mean colour error. fmax: the median of nextpnr's placements at seeds 1 … n, with the slowest and the fastest.\n"
     );
-    let _ = writeln!(s, "| point | pipeline | knob | colour | shade | angle ° | encoding | method | datapath | LUT4 | FF | MAC16 | RAM40 | SPRAM | in logic | cost | part | LC | fmax MHz | latency | P | model Mpx/s |");
+    let _ = writeln!(s, "| point | pipeline | knob | colour | shade | angle ° | encoding | method | datapath | LUT4 | FF | MAC16 | RAM40 | SPRAM | in logic | cost | part | LC | fmax MHz (min–max, placements) | latency | P | model Mpx/s |");
     let _ = writeln!(s, "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
     for (r, p) in rs.iter().zip(&on) {
         let _ = writeln!(
@@ -26,7 +31,7 @@ pub fn markdown(rs: &[PointFigures], budgets: &[f64]) -> String {
             "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}{} | {} | {} | {} | {} | {} | {:.2} |",
             r.id, r.pipeline, r.knob, f2(Some(r.colour)), f2(Some(r.shade)), f2(r.angle), f2(r.encoding), f2(r.method), f2(r.datapath),
             r.lut4, r.ff, r.dsp, r.bram, r.spram, r.soft, r.cost(), if r.estimated { " est." } else { "" }, r.part,
-            r.lc.map(|x| x.to_string()).unwrap_or("-".into()), r.fmax.map(|x| format!("{x:.1}")).unwrap_or("-".into()), r.latency,
+            r.lc.map(|x| x.to_string()).unwrap_or("-".into()), fmax(r), r.latency,
             if *p { "P" } else { "" }, r.model_mpx
         );
     }

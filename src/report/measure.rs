@@ -39,8 +39,9 @@ fn knob_delta(k: Knobs, dir: &Path) -> Result<[i64; 5], String> {
     Ok(total)
 }
 
-/// Compute one point: its errors on its scene, the model's speed, and its cost (`place`: also nextpnr).
-pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<PointFigures, String> {
+/// Compute one point: its errors on its scene, the model's speed, and its cost (`place`: also nextpnr, the median of
+/// that many placements).
+pub fn run_point(p: &Point, dir: &Path, place: Option<u32>) -> Result<PointFigures, String> {
     let scene = scene(&p.scene)?;
     let pipe = build(p, &scene);
     let m = pipe.model();
@@ -144,13 +145,14 @@ pub fn run_point(p: &Point, dir: &Path, place: bool) -> Result<PointFigures, Str
     let a = axis.ctl_cells(&udir.join("axis_ctl"), synth::fpga::Family::Ice40)?;
     r.axis = Some(AxisCost { depth, words, bits, lut4: a.lut4, ff: a.ff, bram: a.bram });
     r.part = "-".into();
-    if place && !r.estimated {
-        if let Some(rep) = crate::units::place_cached(m.name, &udir)? {
+    if let (Some(n), false) = (place, r.estimated) {
+        if let Some(rep) = crate::units::place_cached(m.name, &udir, synth::fpga::Seeds::all(n))? {
             // a design whose cells fit the part but whose placement fails says so where its figures would be
             r.part =
                 if rep.place_error.is_some() { format!("{} (does not place)", rep.part) } else { rep.part.clone() };
             r.lc = rep.lc;
             r.fmax = rep.fmax_mhz;
+            (r.fmax_range, r.placements) = (rep.fmax_range, rep.placements);
         }
     }
     Ok(r)

@@ -44,7 +44,13 @@ use std::path::Path;
 use std::time::Instant;
 
 /// `bumprtl report`: every point in this process, then the report.
-pub fn run(scenes: &[String], out: &Path, budgets: &[f64], place: bool, only: Option<&str>) -> Result<(), String> {
+pub fn run(
+    scenes: &[String],
+    out: &Path,
+    budgets: &[f64],
+    place: Option<u32>,
+    only: Option<&str>,
+) -> Result<(), String> {
     let pts: Vec<Point> = points(scenes)?.into_iter().filter(|p| only.is_none_or(|o| p.id.contains(o))).collect();
     if pts.is_empty() {
         return Err(format!("report: no point matches --only {}", only.unwrap_or("")));
@@ -101,7 +107,7 @@ pub fn merge(scenes: &[String], out: &Path, budgets: &[f64], only: Option<&str>)
 }
 
 /// `bumprtl report --point ID`: one point, saved under `out/points/ID.txt`.
-pub fn one(scenes: &[String], id: &str, out: &Path, place: bool) -> Result<(), String> {
+pub fn one(scenes: &[String], id: &str, out: &Path, place: Option<u32>) -> Result<(), String> {
     let pts = points(scenes)?;
     let p = pts
         .iter()

@@ -12,7 +12,7 @@ pub fn plan(
     file: &Path,
     out: &Path,
     budgets: &[f64],
-    place: bool,
+    place: Option<u32>,
     only: Option<&str>,
 ) -> Result<(), String> {
     let pts: Vec<Point> = points(scenes)?.into_iter().filter(|p| only.is_none_or(|o| p.id.contains(o))).collect();
@@ -33,7 +33,10 @@ pub fn plan(
             "{} report{common} --point {}{}",
             q(&exe),
             shell_quote(&p.id),
-            if place { "" } else { " --no-place" }
+            match place {
+                Some(n) => format!(" --seeds {n}"),
+                None => " --no-place".into(),
+            }
         );
     }
     let mut merge = format!("{} report{common} --merge", q(&exe));

@@ -248,11 +248,17 @@ pub struct SynthReport {
     pub choice: String,
     /// from nextpnr, with the I/O wrapper: logic cells used (ICESTORM_LC, TRELLIS_COMB), fmax of the real clock,
     /// and the critical path as nextpnr reports it (its end points and delay)
+    /// (all of them the median placement's, see `median`)
     pub lc: Option<u64>,
     pub fmax_mhz: Option<f64>,
     pub critical: Option<String>,
     /// why place-and-route failed, when it did
     pub place_error: Option<String>,
+    /// how many placements (nextpnr seeds) the figures are the median of, the seed of the median one, and the
+    /// slowest and the fastest placement's fmax
+    pub placements: u32,
+    pub seed: u32,
+    pub fmax_range: Option<(f64, f64)>,
     /// the hard blocks of each top-level instance (the unit alone, before the wrapper)
     pub blocks: Blocks,
 }
@@ -579,21 +585,38 @@ fn critical_path(log: &str) -> Option<String> {
     Some(format!("{first} → {last} ({total})"))
 }
 
-/// The unit on a part: its own cells (and a fit check that names the resource that overflows), then the wrapped
-/// unit through yosys and nextpnr at a `freq_mhz` target. A placement that fails (a design too big for the part
-/// in a way the cell counts did not show) is reported as a figure, not an error.
-pub fn synth_and_place<U: StreamUnit>(
-    dir: &Path,
-    part: Part,
-    freq_mhz: f64,
-    choice: &str,
-) -> Result<SynthReport, String> {
+/// How many placements an fmax is the median of: nextpnr at seeds 1 ..= `n`, each placement cached under its seed;
+/// at least `least` of them in hand (placed now where the cache does not hold them), and any other of the `n` the
+/// cache holds reused. `synth` and `report` place all five; the demo places one and reuses what the cache holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Seeds {
+    pub n: u32,
+    pub least: u32,
+}
+
+impl Seeds {
+    /// five placements, `synth`'s and `report`'s default
+    pub const FIVE: Seeds = Seeds::all(5);
+
+    /// every seed of 1 ..= n placed, or read from the cache
+    pub const fn all(n: u32) -> Seeds {
+        Seeds { n, least: n }
+    }
+}
+
+/// The unit's own cells (with the fit check that names the resource that overflows), its hard blocks, and the unit
+/// in its I/O wrapper through yosys to `wrapped.json`: what every placement starts from.
+fn wrapped<U: StreamUnit>(dir: &Path, part: Part, choice: &str) -> Result<SynthReport, String> {
     let c = synth_unit::<U>(dir, part.family)?;
     if let Some(o) = part.overflow(&c) {
         return Err(format!("{} does not fit the {}: {o}", U::NAME, part.title));
     }
     let blocks = Blocks::read(dir, U::NAME, part.family);
-    let mut r = SynthReport {
+    let w = format!("{}_io.v", U::NAME);
+    write_atomic(&dir.join(&w), io_wrapper::<U>().as_bytes())?;
+    let top = format!("{}_io", U::NAME);
+    yosys(dir, part.family, &top, &[&format!("{}.v", U::NAME), &w], Some("wrapped.json"))?;
+    Ok(SynthReport {
         unit: U::NAME.into(),
         part: part.name.into(),
         cells: c,
@@ -601,17 +624,20 @@ pub fn synth_and_place<U: StreamUnit>(
         choice: choice.into(),
         blocks,
         ..Default::default()
-    };
-    let w = format!("{}_io.v", U::NAME);
-    write_atomic(&dir.join(&w), io_wrapper::<U>().as_bytes())?;
-    let top = format!("{}_io", U::NAME);
-    yosys(dir, part.family, &top, &[&format!("{}.v", U::NAME), &w], Some("wrapped.json"))?;
-    let freq = format!("{freq_mhz}");
+    })
+}
+
+/// One nextpnr placement of `wrapped.json` in `dir` at `seed` and a `freq_mhz` target: `base` with this placement's
+/// logic cells, fmax and critical path (its log `nextpnr.seed<N>.log`). A placement that fails (a design too big
+/// for the part in a way the cell counts did not show) is a figure, not an error; a tool that cannot run is an error.
+fn place(dir: &Path, part: Part, freq_mhz: f64, seed: u32, base: &SynthReport) -> Result<SynthReport, String> {
+    let mut r = SynthReport { seed, placements: 1, ..base.clone() };
+    let (freq, seed_arg, asc) = (format!("{freq_mhz}"), seed.to_string(), format!("wrapped.seed{seed}.asc"));
     let mut args: Vec<&str> = part.pnr.to_vec();
-    args.extend(["--json", "wrapped.json", "--freq", &freq, "--timing-allow-fail", "--seed", "1"]);
+    args.extend(["--json", "wrapped.json", "--freq", &freq, "--timing-allow-fail", "--seed", &seed_arg]);
     let prog = match part.family {
         Family::Ice40 => {
-            args.extend(["--asc", "wrapped.asc"]);
+            args.extend(["--asc", &asc]);
             "nextpnr-ice40".to_string()
         }
         Family::Ecp5 => tools::nextpnr_ecp5().ok_or_else(tools::nextpnr_ecp5_missing)?,
@@ -638,7 +664,7 @@ pub fn synth_and_place<U: StreamUnit>(
         },
     };
     let text = String::from_utf8_lossy(&out.stderr).to_string();
-    write_atomic(&dir.join("nextpnr.log"), text.as_bytes())?;
+    write_atomic(&dir.join(format!("nextpnr.seed{seed}.log")), text.as_bytes())?;
     for l in text.lines() {
         if let Some(rest) = l.split(lc_name.as_str()).nth(1) {
             // the utilisation table ("  224/ 5280  4%"), not the placer's progress lines
@@ -652,6 +678,105 @@ pub fn synth_and_place<U: StreamUnit>(
     }
     // the last report is the routed design's
     r.critical = text.rfind("Critical path report for clock").and_then(|k| critical_path(&text[k..]));
+    r.fmax_range = r.fmax_mhz.map(|f| (f, f));
+    Ok(r)
+}
+
+/// The placements of `base` at `seeds`, in seed order, on as many threads as the machine has cores (nextpnr places
+/// on one): a cold `synth` of five seeds takes two and a half placements' time on two cores, not five.
+fn place_all(
+    dir: &Path,
+    part: Part,
+    freq_mhz: f64,
+    seeds: &[u32],
+    base: &SynthReport,
+) -> Result<Vec<SynthReport>, String> {
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get()).min(seeds.len()).max(1);
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let done: std::sync::Mutex<Vec<(usize, Result<SynthReport, String>)>> = Default::default();
+    std::thread::scope(|s| {
+        for _ in 0..threads {
+            s.spawn(|| loop {
+                let k = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some(&seed) = seeds.get(k) else { break };
+                let r = place(dir, part, freq_mhz, seed, base);
+                done.lock().unwrap_or_else(|e| e.into_inner()).push((k, r));
+            });
+        }
+    });
+    let mut done = done.into_inner().unwrap_or_else(|e| e.into_inner());
+    done.sort_by_key(|(k, _)| *k);
+    done.into_iter().map(|(_, r)| r).collect()
+}
+
+/// The median of placements of one design (one report a seed): that placement's logic cells, fmax and critical
+/// path, with how many placements it is the median of and their slowest and fastest fmax. With an even count it is
+/// the slower of the two middle placements, so that the critical path shown is one nextpnr reported. A placement
+/// that failed makes the whole a design that does not place, its error naming the seed: a design that places at
+/// some seeds only is not one a user can rely on.
+pub fn median(mut all: Vec<SynthReport>) -> Option<SynthReport> {
+    let n = all.len() as u32;
+    if let Some(k) = all.iter().position(|r| r.place_error.is_some()) {
+        let mut r = all.swap_remove(k);
+        r.place_error = r.place_error.map(|e| format!("{e} (at nextpnr seed {})", r.seed));
+        (r.placements, r.fmax_mhz, r.fmax_range, r.lc, r.critical) = (n, None, None, None, None);
+        return Some(r);
+    }
+    // a placement without an fmax figure (nextpnr printed none) ranks below every one with a figure
+    let rank = |r: &SynthReport| r.fmax_mhz.unwrap_or(f64::NEG_INFINITY);
+    all.sort_by(|a, b| rank(a).total_cmp(&rank(b)).then(a.seed.cmp(&b.seed)));
+    let range = match (all.first()?.fmax_mhz, all.last()?.fmax_mhz) {
+        (Some(lo), Some(hi)) => Some((lo, hi)),
+        _ => None,
+    };
+    let mut r = all.swap_remove((all.len() - 1) / 2);
+    (r.placements, r.fmax_range) = (n, range);
+    Some(r)
+}
+
+/// The unit on a part: its own cells (and the fit check), then the wrapped unit through yosys and nextpnr at a
+/// `freq_mhz` target at each seed `seeds` asks for, each placement reused from the synthesis cache
+/// (`crate::cache`) when the unit's Verilog, the wrapper, the part, the target frequency, the seed and the tools'
+/// versions are all unchanged (a placement takes minutes). The report (`report.txt` in `dir`) is the median
+/// placement's.
+pub fn synth_and_place<U: StreamUnit>(
+    dir: &Path,
+    part: Part,
+    freq_mhz: f64,
+    choice: &str,
+    seeds: Seeds,
+) -> Result<SynthReport, String> {
+    if seeds.n == 0 || seeds.least > seeds.n {
+        return Err(format!("{} placements of seeds 1 ..= {}: nothing to place", seeds.least, seeds.n));
+    }
+    let inputs = format!(
+        "place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\n{freq_mhz}\nblocks by type",
+        export::<U>().text,
+        io_wrapper::<U>(),
+        part.name
+    );
+    let pnr = match part.family {
+        Family::Ice40 => "nextpnr-ice40".to_string(),
+        Family::Ecp5 => tools::nextpnr_ecp5().unwrap_or_else(|| "nextpnr-ecp5".into()),
+    };
+    let key = |seed: u32| cache::key(&format!("{inputs}\nseed {seed}"), &["yosys", &pnr]);
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let mut have: Vec<SynthReport> = (1..=seeds.n)
+        .filter_map(|s| cache::get(&key(s), "placement").as_deref().and_then(SynthReport::from_text))
+        .filter(|r| r.placements == 1)
+        .collect();
+    let want = (seeds.least as usize).saturating_sub(have.len());
+    let missing: Vec<u32> = (1..=seeds.n).filter(|s| !have.iter().any(|r| r.seed == *s)).take(want).collect();
+    if !missing.is_empty() {
+        let base = wrapped::<U>(dir, part, choice)?;
+        for r in place_all(dir, part, freq_mhz, &missing, &base)? {
+            cache::put(&key(r.seed), "placement", &r.to_text())?;
+            have.push(r);
+        }
+    }
+    let mut r = median(have).ok_or("no placement in hand")?;
+    r.choice = choice.into();
+    write_atomic(&dir.join("report.txt"), r.to_text().as_bytes())?;
     Ok(r)
 }
 
@@ -659,11 +784,13 @@ impl SynthReport {
     fn to_text(&self) -> String {
         let o = |x: Option<String>| x.unwrap_or_default();
         let c = &self.cells;
+        let (lo, hi) = (self.fmax_range.map(|r| r.0.to_string()), self.fmax_range.map(|r| r.1.to_string()));
         format!(
-            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nblocks={}\n",
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nplacements={}\nseed={}\nfmax_min={}\nfmax_max={}\nblocks={}\n",
             self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, c.spram, self.latency, self.choice.replace('\n', " "),
             o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
-            o(self.critical.clone()), o(self.place_error.clone()), self.blocks.to_text()
+            o(self.critical.clone()), o(self.place_error.clone()), self.placements, self.seed, o(lo), o(hi),
+            self.blocks.to_text()
         )
     }
 
@@ -690,36 +817,12 @@ impl SynthReport {
             fmax_mhz: opt("fmax_mhz").and_then(|v| v.parse().ok()),
             critical: opt("critical").map(str::to_string),
             place_error: opt("place_error").map(str::to_string),
+            placements: get("placements")?.parse().ok()?,
+            seed: get("seed")?.parse().ok()?,
+            fmax_range: opt("fmax_min").and_then(|v| v.parse().ok()).zip(opt("fmax_max").and_then(|v| v.parse().ok())),
             blocks: Blocks::from_text(get("blocks")?),
         })
     }
-}
-
-/// `synth_and_place`, reusing an earlier run's figures from the synthesis cache (`crate::cache`) when the unit's
-/// Verilog, the wrapper, the part, the target frequency and the tools' versions are all unchanged (place-and-route
-/// takes minutes; the demo asks for it on every run). The report is written into `dir` either way.
-pub fn synth_and_place_cached<U: StreamUnit>(dir: &Path, part: Part, freq_mhz: f64) -> Result<SynthReport, String> {
-    let inputs = format!(
-        "place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\n{freq_mhz}\nblocks by type",
-        export::<U>().text,
-        io_wrapper::<U>(),
-        part.name
-    );
-    let pnr = match part.family {
-        Family::Ice40 => "nextpnr-ice40".to_string(),
-        Family::Ecp5 => tools::nextpnr_ecp5().unwrap_or_else(|| "nextpnr-ecp5".into()),
-    };
-    let key = cache::key(&inputs, &["yosys", &pnr]);
-    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let saved = dir.join("report.txt");
-    if let Some(r) = cache::get(&key, "report").as_deref().and_then(SynthReport::from_text) {
-        write_atomic(&saved, r.to_text().as_bytes())?;
-        return Ok(r);
-    }
-    let r = synth_and_place::<U>(dir, part, freq_mhz, "")?;
-    write_atomic(&saved, r.to_text().as_bytes())?;
-    cache::put(&key, "report", &r.to_text())?;
-    Ok(r)
 }
 
 #[cfg(test)]
@@ -738,14 +841,45 @@ mod tests {
             fmax_mhz: Some(7.5),
             critical: Some("a → b (1 ns logic, 2 ns routing)".into()),
             place_error: Some("ERROR: no BELs".into()),
+            placements: 5,
+            seed: 3,
+            fmax_range: Some((6.25, 8.5)),
             blocks: Blocks { by_instance: vec![("unit$0".into(), 3, 0), ("norm".into(), 6, 1)] },
         };
         let back = SynthReport::from_text(&r.to_text()).unwrap();
         assert_eq!(back.to_text(), r.to_text());
-        let none = SynthReport { lc: None, fmax_mhz: None, critical: None, place_error: None, ..r };
+        let none = SynthReport { lc: None, fmax_mhz: None, critical: None, place_error: None, fmax_range: None, ..r };
         assert_eq!(SynthReport::from_text(&none.to_text()).unwrap().to_text(), none.to_text());
         assert!(SynthReport::from_text("unit=u\nlut4=x\n").is_none());
         assert!(SynthReport::from_text(&none.to_text().replace("ecp5-45f", "ecp5-12f")).is_none());
+    }
+
+    #[test]
+    fn the_median_placement_is_the_middle_fmax_and_the_slower_middle_of_an_even_count() {
+        let at = |seed: u32, f: f64| SynthReport {
+            seed,
+            placements: 1,
+            fmax_mhz: Some(f),
+            fmax_range: Some((f, f)),
+            lc: Some(100 + seed as u64),
+            critical: Some(format!("path {seed}")),
+            ..Default::default()
+        };
+        let m = median(vec![at(1, 120.0), at(2, 101.5), at(3, 110.25)]).unwrap();
+        assert_eq!((m.seed, m.fmax_mhz, m.lc, m.critical.as_deref()), (3, Some(110.25), Some(103), Some("path 3")));
+        assert_eq!((m.placements, m.fmax_range), (3, Some((101.5, 120.0))));
+        let m = median(vec![at(1, 90.0), at(2, 80.0), at(3, 95.0), at(4, 85.0)]).unwrap();
+        assert_eq!((m.seed, m.fmax_mhz, m.placements, m.fmax_range), (4, Some(85.0), 4, Some((80.0, 95.0))));
+        let one = median(vec![at(7, 50.0)]).unwrap();
+        assert_eq!((one.seed, one.placements, one.fmax_range), (7, 1, Some((50.0, 50.0))));
+        // a placement with no fmax figure is the slowest; one that failed makes the design one that does not place
+        let m = median(vec![at(1, 60.0), SynthReport { fmax_mhz: None, ..at(2, 0.0) }, at(3, 70.0)]).unwrap();
+        assert_eq!((m.seed, m.fmax_range), (1, None));
+        let failed = SynthReport { place_error: Some("ERROR: no route".into()), ..at(2, 0.0) };
+        let m = median(vec![at(1, 60.0), failed, at(3, 70.0)]).unwrap();
+        assert_eq!(m.place_error.as_deref(), Some("ERROR: no route (at nextpnr seed 2)"));
+        assert_eq!((m.fmax_mhz, m.placements, m.critical), (None, 3, None));
+        assert!(median(vec![]).is_none());
     }
 
     #[test]
@@ -816,9 +950,14 @@ pub enum Fit {
     DoesNotFit(String),
 }
 
-/// A unit's figures on `parts` (synthesised for each; placed where it fits, the placement cached in `dir`); `say`
-/// tells a progress line what runs now.
-pub fn measure<U: StreamUnit>(dir: &Path, parts: &[Part], say: &dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> {
+/// A unit's figures on `parts` (synthesised for each; placed where it fits at the `seeds` asked for, each placement
+/// cached); `say` tells a progress line what runs now.
+pub fn measure<U: StreamUnit>(
+    dir: &Path,
+    parts: &[Part],
+    seeds: Seeds,
+    say: &dyn Fn(String),
+) -> Result<Vec<(Part, Fit)>, String> {
     let mut v = Vec::new();
     for p in parts {
         let d = dir.join(U::NAME).join(p.name);
@@ -827,8 +966,8 @@ pub fn measure<U: StreamUnit>(dir: &Path, parts: &[Part], say: &dyn Fn(String)) 
         let fit = match p.overflow(&c) {
             Some(o) => Fit::DoesNotFit(o),
             None => {
-                say(format!("{}: nextpnr for the {} (cached after the first run)", U::NAME, p.title));
-                Fit::Placed(synth_and_place_cached::<U>(&d, *p, p.default_freq())?)
+                say(format!("{}: nextpnr for the {} (each placement cached after its first run)", U::NAME, p.title));
+                Fit::Placed(synth_and_place::<U>(&d, *p, p.default_freq(), "", seeds)?)
             }
         };
         v.push((*p, fit));
