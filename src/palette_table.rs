@@ -135,7 +135,7 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
     println!("bit-exact table_builder with the palette's normals normalised once per map (the palette changes per map, not per");
     println!("frame: the same normaliser output the builder computes), chrome and environment in f64 (no rtl);");
     let at = |f: Option<f64>, place: &str| match f {
-        Some(f) => format!("{f:.1} MHz (on the {place}, the median of 5 placements)"),
+        Some(f) => format!("{f:.1} MHz (on the {place}, the median of {} placements)", synth::fpga::Seeds::FIVE.n),
         None => "its fmax (not measured: --no-synth, or the tools missing)".into(),
     };
     println!(
