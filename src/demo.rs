@@ -32,8 +32,11 @@ struct Run<'a> {
     prep: Prepared,
     ideal_s: f64,
     model: Image,
+    /// the model with the frame split across `SPLIT` threads (its pixels must equal `model`'s)
+    split: Image,
     hdl: Option<Image>,
     vl: Option<render::VerilatorRun>,
+    mism_split: usize,
     mism_hdl: usize,
     mism_vl: usize,
     shade: ErrorStats,
@@ -42,6 +45,9 @@ struct Run<'a> {
     /// the shade against the ideal under the pipeline's one light per surface, where it has one
     surface: Option<ErrorStats>,
 }
+
+/// The threads the model's and Verilator's split frames run on, beside their one-thread runs.
+const SPLIT: usize = 2;
 
 fn run_pipeline<'a>(
     pipe: &'a dyn Pipeline,
@@ -54,7 +60,10 @@ fn run_pipeline<'a>(
     let t = Instant::now();
     let prep = pipe.prepare(scene);
     let ideal_s = t.elapsed().as_secs_f64();
-    let model = render::model(m, &prep);
+    // each the fastest of its runs, as Verilator's are
+    let model = render::fastest(|| render::model(m, &prep));
+    let split = render::fastest(|| render::model_on(m, &prep, SPLIT));
+    let mism_split = split.mismatches(&model);
     let hdl = rust_hdl.then(|| {
         let b = bar(prep.inputs.len() as u64, &format!("rust-hdl: {}", m.name));
         let hdl = rtl.rust_hdl(m, &prep, &|k| b.set_position(k as u64));
@@ -65,7 +74,7 @@ fn run_pipeline<'a>(
         let b = ProgressBar::new_spinner();
         b.set_message(format!("Verilator: building and running {}", m.name));
         b.enable_steady_tick(std::time::Duration::from_millis(200));
-        let vl = rtl.verilator(m, &prep, &out.join("verilator").join(m.name), 2);
+        let vl = rtl.verilator(m, &prep, &out.join("verilator").join(m.name), SPLIT);
         b.finish_and_clear();
         Some(vl?)
     } else {
@@ -75,7 +84,22 @@ fn run_pipeline<'a>(
     let mism_vl = vl.as_ref().map(|r| r.image.mismatches(&model) + r.single.mismatches(&model)).unwrap_or(0);
     let mism_hdl = hdl.as_ref().map(|h| h.mismatches(&model)).unwrap_or(0);
     let sim::pipeline::Errors { shade, colour, normal, surface } = sim::pipeline::errors(pipe, scene, &prep, &model);
-    Ok(Run { pipe, prep, ideal_s, model, hdl, vl, mism_hdl, mism_vl, shade, colour, normal, surface })
+    Ok(Run {
+        pipe,
+        prep,
+        ideal_s,
+        model,
+        split,
+        hdl,
+        vl,
+        mism_split,
+        mism_hdl,
+        mism_vl,
+        shade,
+        colour,
+        normal,
+        surface,
+    })
 }
 
 pub fn run(
@@ -276,13 +300,14 @@ pub fn run(
     let pps = |i: &Image, m: usize| format!("{:.0} ({m})", i.pixels_per_second());
     line("bits per texel of the bump source", &|r| format!("{}", r.pipe.bits_per_texel()));
     line("f64 ideal (scene set-up included)", &|r| format!("{:.0}", n as f64 / r.ideal_s));
-    line("bit-exact model", &|r| pps(&r.model, 0));
+    line(&render::on_threads("bit-exact model", 1), &|r| pps(&r.model, 0));
+    line(&render::on_threads("bit-exact model", SPLIT), &|r| pps(&r.split, r.mism_split));
     line("rust-hdl (loop-driven)", &|r| r.hdl.as_ref().map(|h| pps(h, r.mism_hdl)).unwrap_or("in the tests".into()));
     if let Some(c) = &runs[0].vl {
-        line("Verilator, whole frame, 1 thread", &|r| {
+        line(&render::on_threads("Verilator, whole frame", 1), &|r| {
             r.vl.as_ref().map(|v| pps(&v.single, r.mism_vl)).unwrap_or_default()
         });
-        line(&format!("Verilator, whole frame, {} threads", c.threads), &|r| {
+        line(&render::on_threads("Verilator, whole frame", c.threads), &|r| {
             r.vl.as_ref().map(|v| pps(&v.image, r.mism_vl)).unwrap_or_default()
         });
         line("Verilator bare loop (cycles/s)", &|r| {
@@ -360,8 +385,11 @@ pub fn run(
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
     let bad: Vec<String> = std::iter::once(&on_torus)
         .chain(&runs)
-        .filter(|r| r.mism_hdl + r.mism_vl != 0)
-        .map(|r| format!("{} rust-hdl {} / Verilator {}", r.pipe.model().name, r.mism_hdl, r.mism_vl))
+        .filter(|r| r.mism_split + r.mism_hdl + r.mism_vl != 0)
+        .map(|r| {
+            let (name, split) = (r.pipe.model().name, r.mism_split);
+            format!("{name} model on {SPLIT} threads {split} / rust-hdl {} / Verilator {}", r.mism_hdl, r.mism_vl)
+        })
         .collect();
     if !bad.is_empty() {
         return Err(format!("the bit-exact paths disagree with the model (pixels that differ): {}", bad.join("; ")));

@@ -50,7 +50,8 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     let t = Instant::now();
     let prep = pipe.prepare(scene);
     let ideal_s = t.elapsed().as_secs_f64();
-    let model = render::model(m, &prep);
+    let threads = render::cores();
+    let model = render::fastest(|| render::model_on(m, &prep, threads));
     let n = prep.ideal.len();
     // the window: the one asked for, or 8 × 8 round the covered pixel nearest the frame's centre
     let win = window.unwrap_or_else(|| {
@@ -105,11 +106,11 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     println!("{n} pixels of the surface in the {size} × {size} frame");
     println!("{:<44} {:>14} {:>12}", "path", "pixels/s", "mismatches");
     println!("{:<44} {:>14.0} {:>12}", "f64 ideal (set-up included)", n as f64 / ideal_s.max(1e-9), "-");
-    println!("{:<44} {:>14.0} {:>12}", "bit-exact model", model.pixels_per_second(), "-");
+    println!("{:<44} {:>14.0} {:>12}", render::on_threads("bit-exact model", threads), model.pixels_per_second(), "-");
     match &vl {
         Some(v) => println!(
             "{:<44} {:>14.0} {:>12}",
-            format!("Verilator, whole frame, {} threads", v.threads),
+            render::on_threads("Verilator, whole frame", v.threads),
             v.image.pixels_per_second(),
             mism_vl.unwrap_or(0)
         ),

@@ -1,4 +1,5 @@
-//! The bit-exact models against the f64 ideals on the demo scene, every pipeline, in one run.
+//! The bit-exact models against the f64 ideals on the demo scene, every pipeline, in one run, the model on one
+//! thread and on two.
 use criterion::{criterion_group, criterion_main, Criterion};
 use sim::pipeline::{Cartesian, Height, Palette, Pipeline, Polar};
 use sim::scene::Scene;
@@ -22,9 +23,11 @@ fn bench(c: &mut Criterion) {
         g.bench_function(format!("{} ideal (f64, scene set-up included)", p.model().name), |b| {
             b.iter(|| p.prepare(&scene).ideal.len())
         });
-        g.bench_function(format!("{} bit-exact model", p.model().name), |b| {
-            b.iter(|| sim::render::model(p.model(), &prep).outs.len())
-        });
+        for threads in [1, 2] {
+            g.bench_function(format!("{} bit-exact model, {threads} thread(s)", p.model().name), |b| {
+                b.iter(|| sim::render::model_on(p.model(), &prep, threads).outs.len())
+            });
+        }
     }
     g.finish();
 }

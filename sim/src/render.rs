@@ -9,6 +9,7 @@ use rtl::StreamUnit;
 use std::path::Path;
 use std::time::Instant;
 use synth::cosim::{self, Simulator};
+use vectors::fixed::from_pattern;
 use vectors::UnitModel;
 
 /// One path's frame: per pixel the pipeline's output vector (values, signed where the port is), and the time the
@@ -16,8 +17,70 @@ use vectors::UnitModel;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Image {
     pub size: usize,
-    pub outs: Vec<Vec<i64>>,
+    pub outs: Outs,
     pub seconds: f64,
+}
+
+/// A frame's output vectors one after another in one buffer, `width` values a pixel (no allocation a pixel, so a
+/// frame made on several threads does not wait on the allocator); `outs[k]` is pixel k's vector.
+#[derive(Clone, Debug, Default)]
+pub struct Outs {
+    width: usize,
+    values: Vec<i64>,
+}
+
+impl Outs {
+    /// `values` holds a whole number of `width`-value vectors.
+    pub fn new(width: usize, values: Vec<i64>) -> Outs {
+        assert!(width > 0 && values.len().is_multiple_of(width), "{} values are not vectors of {width}", values.len());
+        Outs { width, values }
+    }
+    pub fn len(&self) -> usize {
+        self.values.len().checked_div(self.width).unwrap_or(0)
+    }
+    pub fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+    pub fn iter(&self) -> std::slice::ChunksExact<'_, i64> {
+        self.values.chunks_exact(self.width.max(1))
+    }
+}
+
+impl PartialEq for Outs {
+    fn eq(&self, other: &Outs) -> bool {
+        self.len() == other.len() && self.values == other.values
+    }
+}
+
+impl std::ops::Index<usize> for Outs {
+    type Output = [i64];
+    fn index(&self, k: usize) -> &[i64] {
+        &self.values[k * self.width..(k + 1) * self.width]
+    }
+}
+
+impl<'a> IntoIterator for &'a Outs {
+    type Item = &'a [i64];
+    type IntoIter = std::slice::ChunksExact<'a, i64>;
+    fn into_iter(self) -> Self::IntoIter {
+        self.iter()
+    }
+}
+
+impl<V: AsRef<[i64]>> FromIterator<V> for Outs {
+    /// Vectors of one width (the first's).
+    fn from_iter<I: IntoIterator<Item = V>>(vs: I) -> Outs {
+        let mut o = Outs::default();
+        for v in vs {
+            let v = v.as_ref();
+            if o.width == 0 {
+                o.width = v.len();
+            }
+            assert_eq!(v.len(), o.width, "output vectors of one width");
+            o.values.extend_from_slice(v);
+        }
+        o
+    }
 }
 
 impl Image {
@@ -39,12 +102,41 @@ fn from_outputs(m: &UnitModel, size: usize, outs: &[Vec<u64>], seconds: f64) -> 
     Image { size, outs: outs.iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect(), seconds }
 }
 
-/// The model over the frame (the prologue's time counted: it is the frame's work too).
+/// The model over the frame on one thread (the prologue's time counted: it is the frame's work too).
 pub fn model(m: &UnitModel, p: &Prepared) -> Image {
+    model_on(m, p, 1)
+}
+
+/// The model over the frame, its pixels cut into `threads` runs at once (`UnitModel::frame`: the prologue loaded
+/// once, each run from a copy of the state it left); the same outputs on any number of threads.
+pub fn model_on(m: &UnitModel, p: &Prepared, threads: usize) -> Image {
+    timed(p.size, || Outs::new(m.outputs.len(), m.frame(&p.inputs, p.prologue, threads)))
+}
+
+/// Runs of a path whose speed is reported, the fastest kept: a frame takes milliseconds, and one run may pay alone
+/// for a cold cache or a core that was asleep.
+pub const RUNS: usize = 3;
+
+/// A path run `RUNS` times, its fastest run kept.
+pub fn fastest(path: impl Fn() -> Image) -> Image {
+    (1..RUNS).map(|_| path()).fold(path(), |best, i| if i.seconds < best.seconds { i } else { best })
+}
+
+/// One run of a path, timed: its output vectors and the seconds they took.
+pub fn timed(size: usize, run: impl FnOnce() -> Outs) -> Image {
     let t = Instant::now();
-    let mut outs = m.run(&p.inputs); // vector by vector, or through the unit's state
-    outs.drain(..p.prologue);
-    Image { size: p.size, outs, seconds: t.elapsed().as_secs_f64() }
+    let outs = run();
+    Image { size, outs, seconds: t.elapsed().as_secs_f64() }
+}
+
+/// The machine's cores, for the paths that split a frame (one where the count is not known).
+pub fn cores() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+/// A path's label with its thread count: "bit-exact model, 1 thread", "…, 2 threads".
+pub fn on_threads(path: &str, threads: usize) -> String {
+    format!("{path}, {threads} thread{}", if threads == 1 { "" } else { "s" })
 }
 
 /// rust-hdl, loop-driven; `tick` is called every 1,024 vectors.
@@ -61,10 +153,13 @@ pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)
     from_outputs(m, p.size, &got.outputs[p.prologue..], t.elapsed().as_secs_f64())
 }
 
-/// The frame's records from `skip` on as an image.
-fn from_frame(m: &UnitModel, size: usize, f: &cosim::Frame, skip: usize) -> Image {
-    let outs: Vec<Vec<u64>> = (skip..f.len()).map(|k| (0..m.outputs.len()).map(|j| f.value(k, j)).collect()).collect();
-    from_outputs(m, size, &outs, 0.0)
+/// The frame's records from `skip` on as output vectors (values, signed where the port is), flat.
+fn outs_of(m: &UnitModel, f: &cosim::Frame, skip: usize) -> Vec<i64> {
+    let mut out = Vec::with_capacity(f.len().saturating_sub(skip) * m.outputs.len());
+    for r in f.records.chunks_exact(1 + f.n_out).skip(skip) {
+        out.extend(r[1..].iter().zip(m.outputs).map(|(&x, p)| from_pattern(x, p.bits, p.signed)));
+    }
+    out
 }
 
 /// A frame through the exported Verilog under Verilator, twice, beside the simulator's own speed.
@@ -89,17 +184,15 @@ pub fn verilator<U: StreamUnit>(
     dir: &Path,
     threads: usize,
 ) -> Result<VerilatorRun, String> {
-    const RUNS: usize = 3;
     let built = cosim::build::<U>(Simulator::Verilator, dir)?;
     let slots = patterns(m, &p.inputs);
-    // one run timed from the slots to the image, the fastest of RUNS kept; `skip` records are the prologue's
-    let fastest = |run: &dyn Fn() -> Result<cosim::Frame, String>, skip: usize| -> Result<Image, String> {
+    // one run timed from the slots to the image's output vectors, the fastest of RUNS kept
+    let fastest = |run: &dyn Fn() -> Result<Vec<i64>, String>| -> Result<Image, String> {
         let mut best: Option<Image> = None;
         for _ in 0..RUNS {
             let t = Instant::now();
-            let f = run()?;
-            let mut i = from_frame(m, p.size, &f, skip);
-            i.seconds = t.elapsed().as_secs_f64();
+            let outs = Outs::new(m.outputs.len(), run()?);
+            let i = Image { size: p.size, outs, seconds: t.elapsed().as_secs_f64() };
             if best.as_ref().is_none_or(|b| i.seconds < b.seconds) {
                 best = Some(i);
             }
@@ -110,8 +203,13 @@ pub fn verilator<U: StreamUnit>(
     for _ in 0..RUNS {
         bare_cycles_per_second = bare_cycles_per_second.max(built.bare((slots.len() + U::LATENCY + 1) as u64)?);
     }
-    let single = fastest(&|| built.run_frame(&slots), p.prologue)?;
-    let image = fastest(&|| built.run_split(&slots, threads, p.prologue), 0)?;
+    // the prologue's records left out of the image; on several threads each part's records become output vectors in
+    // its own thread
+    let single = fastest(&|| Ok(outs_of(m, &built.run_frame(&slots)?, p.prologue)))?;
+    let image = fastest(&|| {
+        let parts = built.run_split_with(&slots, threads, p.prologue, |f| outs_of(m, &f, 0))?;
+        Ok(parts.concat())
+    })?;
     Ok(VerilatorRun { image, single, threads, bare_cycles_per_second })
 }
 

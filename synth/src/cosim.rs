@@ -346,12 +346,14 @@ impl Built {
         slots.iter().map(Option::as_ref).chain(std::iter::repeat_n(None, self.latency + 1))
     }
 
-    /// The slots as the library reads them: per slot the valid word, then one word per input; bubbles are zeros.
-    fn encode<W: Copy + Default + TryFrom<u64>>(&self, slots: &[Option<Vec<u64>>]) -> Vec<W> {
+    /// The slots as the library reads them, the pieces one after another: per slot the valid word, then one word
+    /// per input; bubbles are zeros.
+    fn encode<W: Copy + Default + TryFrom<u64>>(&self, pieces: &[&[Option<Vec<u64>>]]) -> Vec<W> {
         let rec = 1 + self.n_in;
-        let mut words = vec![W::default(); slots.len() * rec];
+        let n: usize = pieces.iter().map(|p| p.len()).sum();
+        let mut words = vec![W::default(); n * rec];
         let one = W::try_from(1).unwrap_or_default();
-        for (r, s) in words.chunks_exact_mut(rec).zip(slots) {
+        for (r, s) in words.chunks_exact_mut(rec).zip(pieces.iter().flat_map(|p| p.iter())) {
             if let Some(v) = s {
                 r[0] = one;
                 for (w, &x) in r[1..].iter_mut().zip(v) {
@@ -391,12 +393,14 @@ impl Built {
         Ok(Frame { n_out: self.n_out, records: out })
     }
 
-    fn run_slots(&self, slots: &[Option<Vec<u64>>]) -> Result<Frame, String> {
+    /// The pieces' slots one after another on one model.
+    fn run_slots(&self, pieces: &[&[Option<Vec<u64>>]]) -> Result<Frame, String> {
+        let n = pieces.iter().map(|p| p.len()).sum();
         match self.word_bits {
-            8 => self.run_words(&self.encode::<u8>(slots), slots.len()),
-            16 => self.run_words(&self.encode::<u16>(slots), slots.len()),
-            32 => self.run_words(&self.encode::<u32>(slots), slots.len()),
-            _ => self.run_words(&self.encode::<u64>(slots), slots.len()),
+            8 => self.run_words(&self.encode::<u8>(pieces), n),
+            16 => self.run_words(&self.encode::<u16>(pieces), n),
+            32 => self.run_words(&self.encode::<u32>(pieces), n),
+            _ => self.run_words(&self.encode::<u64>(pieces), n),
         }
     }
 
@@ -406,7 +410,7 @@ impl Built {
         if self.sim != Simulator::Verilator {
             return Err("a frame in this process is Verilator's".into());
         }
-        self.run_slots(slots)
+        self.run_slots(&[slots])
     }
 
     /// The slots after the first `prologue` cut into `parts` runs at once, each on its own model in its own thread
@@ -415,28 +419,53 @@ impl Built {
     /// depend on its inputs and that state); the prologue's outputs are left out of the frame, and its slots out of
     /// the records' slot numbers. A unit whose later slots change its state cannot be split so.
     pub fn run_split(&self, slots: &[Option<Vec<u64>>], parts: usize, prologue: usize) -> Result<Frame, String> {
+        let frames = self.run_split_with(slots, parts, prologue, |f| f)?;
+        let mut all =
+            Frame { n_out: self.n_out, records: Vec::with_capacity(frames.iter().map(|f| f.records.len()).sum()) };
+        for f in frames {
+            all.records.extend_from_slice(&f.records);
+        }
+        Ok(all)
+    }
+
+    /// `run_split`, each part's frame handed to `each` in the part's own thread (so that what the caller makes of
+    /// the records runs split too, not after the join), the parts' results in order. Nothing is copied on the way:
+    /// a part's words are encoded from the prologue's and its own slots where they lie.
+    pub fn run_split_with<T: Send>(
+        &self,
+        slots: &[Option<Vec<u64>>],
+        parts: usize,
+        prologue: usize,
+        each: impl Fn(Frame) -> T + Sync,
+    ) -> Result<Vec<T>, String> {
         if self.sim != Simulator::Verilator {
             return Err("a frame in this process is Verilator's".into());
         }
         let (head, body) = slots.split_at(prologue.min(slots.len()));
         let head_outputs = head.iter().filter(|s| s.is_some()).count();
         let per = body.len().div_ceil(parts.max(1)).max(1);
-        let chunks: Vec<&[Option<Vec<u64>>]> = body.chunks(per).collect();
-        let results: Vec<Result<Frame, String>> = std::thread::scope(|s| {
-            let hs: Vec<_> = chunks.iter().map(|ch| s.spawn(move || self.run_slots(&[head, ch].concat()))).collect();
-            hs.into_iter().map(|h| h.join().unwrap_or_else(|_| Err("a simulator thread panicked".into()))).collect()
-        });
-        let mut all = Frame { n_out: self.n_out, records: Vec::with_capacity(body.len() * (1 + self.n_out)) };
-        let mut offset = 0u64;
-        for (ch, r) in chunks.iter().zip(results) {
-            let f = r?;
-            for rec in f.records.chunks_exact(1 + self.n_out).skip(head_outputs) {
-                all.records.push(rec[0] - head.len() as u64 + offset);
-                all.records.extend_from_slice(&rec[1..]);
+        let rec = 1 + self.n_out;
+        // a part's records without the prologue's, each cycle counted from the body's first slot
+        let part = |k: usize, chunk: &[Option<Vec<u64>>]| -> Result<T, String> {
+            let mut f = self.run_slots(&[head, chunk])?;
+            f.records.drain(..head_outputs * rec);
+            for r in f.records.chunks_exact_mut(rec) {
+                r[0] = r[0] - head.len() as u64 + (k * per) as u64;
             }
-            offset += ch.len() as u64;
-        }
-        Ok(all)
+            Ok(each(f))
+        };
+        let part = &part;
+        let mut chunks: Vec<_> = body.chunks(per).enumerate().collect();
+        let last = chunks.pop();
+        // the last part on this thread, the others on threads of their own
+        std::thread::scope(|s| {
+            let hs: Vec<_> = chunks.into_iter().map(|(k, ch)| s.spawn(move || part(k, ch))).collect();
+            let last = last.map(|(k, ch)| part(k, ch));
+            hs.into_iter()
+                .map(|h| h.join().unwrap_or_else(|_| Err("a simulator thread panicked".into())))
+                .chain(last)
+                .collect()
+        })
     }
 
     /// The bare loop: `cycles` clocks on inputs generated inside the library, no memory traffic and no output.

@@ -28,11 +28,8 @@ fn palette_lookup_random_after_the_hard_cases_verilator() {
     .assert_clean("verilator, random");
 }
 
-fn run_sized<const B: u32>(v: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    pl::run_with(B, v)
-}
 fn exact_sized<const B: u32>(v: &[i64]) -> Vec<i64> {
-    pl::run_with(B, &[v.to_vec()]).remove(0)
+    vectors::unit::run_machine::<pl::Tables<B>>(&[v.to_vec()]).remove(0)
 }
 fn random_sized<const B: u32>(rng: &mut dyn rand::RngCore) -> Vec<i64> {
     pl::random_with(rng, B)
@@ -45,17 +42,14 @@ macro_rules! sized {
     ($name:ident, $b:literal, $ins:ident) => {
         const $ins: &[Port] =
             &[Port::u("frame", 1), Port::u("idx", $b), Port::u("we", 1), Port::u("waddr", $b), Port::u("wdata", 32)];
-        static $name: UnitModel = UnitModel {
-            name: "palette_lookup",
-            inputs: $ins,
-            outputs: pl::OUTPUTS,
-            exact: exact_sized::<$b>,
-            random: random_sized::<$b>,
-            exhaustive: None,
-            hard_cases: hard_sized::<$b>,
-            accuracy: None,
-            stream: Some(run_sized::<$b>),
-        };
+        static $name: UnitModel = UnitModel::new(
+            "palette_lookup",
+            ($ins, pl::OUTPUTS),
+            exact_sized::<$b>,
+            random_sized::<$b>,
+            hard_sized::<$b>,
+        )
+        .with_stream::<pl::Tables<$b>>();
     };
 }
 

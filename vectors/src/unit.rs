@@ -74,8 +74,85 @@ pub struct UnitModel {
     /// `bumprtl accuracy` prints every unit's, in the table's order.
     pub accuracy: Option<fn(usize, u64) -> Vec<Accuracy>>,
     /// A unit with state (a memory written by some vectors and read by later ones): the model over a whole stream,
-    /// from reset. `exact` is then the stream of that one vector.
-    pub stream: Option<fn(&[Vec<i64>]) -> Vec<Vec<i64>>>,
+    /// from reset (`with_stream` makes it from the unit's `Machine`). `exact` is then the stream of that one vector.
+    pub stream: Option<Stream>,
+}
+
+/// A unit with state as a machine: its state (`Default` is the state from reset) and one vector's step. The
+/// stream model is its steps in order; a frame split across threads runs the prologue once and each run from a
+/// copy of the state it left.
+pub trait Machine: Clone + Send {
+    /// One vector: its outputs, the state moved on.
+    fn step(&mut self, v: &[i64]) -> Vec<i64>;
+    /// One vector whose outputs nobody reads (a frame's prologue): the state moved on exactly as `step` moves it.
+    fn load(&mut self, v: &[i64]) {
+        self.step(v);
+    }
+}
+
+/// A stateful unit's model over a stream, from reset: `run` vector by vector; `frame` the outputs of the vectors
+/// after the first `prologue` ones into a flat buffer, on `threads` threads (`frame_on`).
+#[derive(Clone, Copy)]
+pub struct Stream {
+    pub run: fn(&[Vec<i64>]) -> Vec<Vec<i64>>,
+    pub frame: fn(&[Vec<i64>], usize, usize, &mut [i64]),
+}
+
+/// A machine over a whole stream from reset, vector by vector.
+pub fn run_machine<M: Machine + Default>(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
+    let mut m = M::default();
+    inputs.iter().map(|v| m.step(v)).collect()
+}
+
+/// A machine over a frame from reset: the first `prologue` vectors loaded (their outputs not made), then the rest
+/// cut into `threads` runs of consecutive vectors, each on its own thread from a copy of the state the prologue
+/// left, its outputs written one vector after another into its own part of `out` (as many values a vector as the
+/// unit has outputs: no allocation kept a vector, so the threads do not wait on the allocator). Sound for a frame
+/// whose vectors after the prologue read the state and do not change what a later one reads (a frame's pixels);
+/// the tests hold every pipeline's split frame to its one-thread stream.
+pub fn frame_on<M: Machine + Default>(inputs: &[Vec<i64>], prologue: usize, threads: usize, out: &mut [i64]) {
+    frame_from(M::default(), inputs, prologue, threads, out)
+}
+
+fn frame_from<M: Machine>(mut m: M, inputs: &[Vec<i64>], prologue: usize, threads: usize, out: &mut [i64]) {
+    let (head, body) = inputs.split_at(prologue.min(inputs.len()));
+    for v in head {
+        m.load(v);
+    }
+    if body.is_empty() {
+        return;
+    }
+    let width = (out.len() / body.len()).max(1);
+    let per = body.len().div_ceil(threads.max(1));
+    let run = |m: &mut M, vs: &[Vec<i64>], out: &mut [i64]| {
+        for (v, o) in vs.iter().zip(out.chunks_exact_mut(width)) {
+            o.copy_from_slice(&m.step(v));
+        }
+    };
+    if per >= body.len() {
+        return run(&mut m, body, out);
+    }
+    // the last run on this thread, the others on threads of their own
+    let mut runs: Vec<_> = body.chunks(per).zip(out.chunks_mut(per * width)).collect();
+    let (vs, o) = runs.pop().expect("two runs or more");
+    std::thread::scope(|s| {
+        for (vs, o) in runs {
+            let mut m = m.clone();
+            s.spawn(move || run(&mut m, vs, o));
+        }
+        run(&mut m, vs, o);
+    });
+}
+
+/// A unit without state as a machine: each vector through `exact`.
+#[derive(Clone, Copy)]
+struct Exact(fn(&[i64]) -> Vec<i64>);
+
+impl Machine for Exact {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        (self.0)(v)
+    }
+    fn load(&mut self, _: &[i64]) {}
 }
 
 /// One measured error of a unit against its ideal: what is measured, over which inputs, and the statistics.
@@ -141,16 +218,29 @@ impl UnitModel {
         UnitModel { accuracy: Some(f), ..self }
     }
 
-    pub const fn with_stream(self, run: fn(&[Vec<i64>]) -> Vec<Vec<i64>>) -> UnitModel {
-        UnitModel { stream: Some(run), ..self }
+    /// A unit with state: its model over a stream is machine `M`'s steps from reset.
+    pub const fn with_stream<M: Machine + Default>(self) -> UnitModel {
+        UnitModel { stream: Some(Stream { run: run_machine::<M>, frame: frame_on::<M> }), ..self }
     }
 
     /// The model's outputs for a stream of vectors in order: vector by vector, or through the unit's state.
     pub fn run(&self, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
         match self.stream {
-            Some(run) => run(inputs),
+            Some(s) => (s.run)(inputs),
             None => inputs.iter().map(|v| (self.exact)(v)).collect(),
         }
+    }
+
+    /// The model over a frame (`frame_on`): the outputs of the vectors after the first `prologue`, which set up the
+    /// unit's state, on `threads` threads, flat (`outputs.len()` values a vector, one vector after another); equal
+    /// to `run`'s outputs after the prologue.
+    pub fn frame(&self, inputs: &[Vec<i64>], prologue: usize, threads: usize) -> Vec<i64> {
+        let mut out = vec![0; inputs.len().saturating_sub(prologue) * self.outputs.len()];
+        match self.stream {
+            Some(s) => (s.frame)(inputs, prologue, threads, &mut out),
+            None => frame_from(Exact(self.exact), inputs, prologue, threads, &mut out),
+        }
+        out
     }
 
     pub fn header(&self) -> Vec<&'static str> {

@@ -8,7 +8,7 @@
 
 use crate::tex_fetch::pattern;
 use crate::texture::front::{self, At, Filter, Front};
-use crate::unit::{Port, UnitModel};
+use crate::unit::{Machine, Port, UnitModel};
 
 /// Where the host model's input `k` comes from.
 #[derive(Clone, Copy, Debug)]
@@ -41,12 +41,29 @@ fn sources(host: &UnitModel, ports: &[Port]) -> Vec<Source> {
         .collect()
 }
 
-/// The textured pipeline over a stream of vectors, from an empty memory.
-pub fn run(filter: Filter, host: &UnitModel, ports: &[Port], inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    let at = At::of(ports, filter.mip());
-    let src = sources(host, ports);
-    let mut f = Front::new(filter);
-    inputs.iter().map(|v| (host.exact)(&host_of(&src, v, f.step(v, &at)))).collect()
+/// A textured pipeline as a machine: the front with its memory (empty from reset), and the host model it feeds.
+#[derive(Clone)]
+pub struct Textured {
+    front: Front,
+    at: At,
+    src: Vec<Source>,
+    host: &'static UnitModel,
+}
+
+impl Textured {
+    pub fn new(filter: Filter, host: &'static UnitModel, ports: &[Port]) -> Textured {
+        Textured { front: Front::new(filter), at: At::of(ports, filter.mip()), src: sources(host, ports), host }
+    }
+}
+
+impl Machine for Textured {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        (self.host.exact)(&host_of(&self.src, v, self.front.step(v, &self.at)))
+    }
+    /// The front's step alone: the host's outputs are what nobody reads.
+    fn load(&mut self, v: &[i64]) {
+        self.front.step(v, &self.at);
+    }
 }
 
 /// The host's vector for a vector `v` of the textured pipeline whose front gave the texel (lo, hi): every texel
@@ -235,11 +252,24 @@ macro_rules! textured {
             pub fn host() -> &'static UnitModel {
                 &$host
             }
-            fn stream(i: &[Vec<i64>]) -> Vec<Vec<i64>> {
-                run(FILTER, host(), INPUTS, i)
+            /// The pipeline from reset as a machine.
+            #[derive(Clone)]
+            pub struct Unit(Textured);
+            impl Default for Unit {
+                fn default() -> Unit {
+                    Unit(Textured::new(FILTER, host(), INPUTS))
+                }
+            }
+            impl Machine for Unit {
+                fn step(&mut self, v: &[i64]) -> Vec<i64> {
+                    self.0.step(v)
+                }
+                fn load(&mut self, v: &[i64]) {
+                    self.0.load(v)
+                }
             }
             fn exact(v: &[i64]) -> Vec<i64> {
-                stream(&[v.to_vec()]).remove(0)
+                Unit::default().step(v)
             }
             fn random_vector(rng: &mut dyn rand::RngCore) -> Vec<i64> {
                 random(FILTER, host(), INPUTS, rng)
@@ -248,7 +278,7 @@ macro_rules! textured {
                 hard_cases(FILTER, host(), INPUTS)
             }
             pub static MODEL: UnitModel =
-                UnitModel::new($name, (INPUTS, OUTPUTS), exact, random_vector, hard).with_stream(stream);
+                UnitModel::new($name, (INPUTS, OUTPUTS), exact, random_vector, hard).with_stream::<Unit>();
         }
     };
 }

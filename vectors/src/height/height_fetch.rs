@@ -11,7 +11,7 @@
 //! sees every word written by the vectors before it. The memory is stateful, so the unit's model is a stream
 //! (`UnitModel::with_stream`); a lone vector reads an empty (zero) map.
 
-use crate::unit::{Accuracy, UnitModel};
+use crate::unit::{run_machine, Accuracy, Machine, UnitModel};
 
 /// Words along each axis of the largest map (256 texels).
 pub const WORDS: usize = 128;
@@ -97,21 +97,22 @@ impl Map {
     }
 }
 
+/// The unit as a machine: a write vector writes its word (outputs zero), a read vector reads its window.
+impl Machine for Map {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        use input::*;
+        if v[we] == 1 {
+            self.words[v[waddr] as usize] = v[wdata] as u32;
+            vec![0; 9]
+        } else {
+            self.window(v[i], v[j], v[ulog2], v[vlog2], v[uwrap] == 1, v[vwrap] == 1).to_vec()
+        }
+    }
+}
+
 /// The unit over a stream of vectors, from an empty (zero) memory.
 pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    use input::*;
-    let mut m = Map::default();
-    inputs
-        .iter()
-        .map(|v| {
-            if v[we] == 1 {
-                m.words[v[waddr] as usize] = v[wdata] as u32;
-                vec![0; 9]
-            } else {
-                m.window(v[i], v[j], v[ulog2], v[vlog2], v[uwrap] == 1, v[vwrap] == 1).to_vec()
-            }
-        })
-        .collect()
+    run_machine::<Map>(inputs)
 }
 
 fn exact_ports(v: &[i64]) -> Vec<i64> {
@@ -230,7 +231,7 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
 }
 
 pub static MODEL: UnitModel = UnitModel::new("height_fetch", (INPUTS, OUTPUTS), exact_ports, random, hard_cases)
-    .with_stream(run)
+    .with_stream::<Map>()
     .with_accuracy(accuracy);
 
 #[cfg(test)]

@@ -8,7 +8,7 @@
 //! The index is ⌈log2 s_N⌉ bits: this unit is the 8-bit one (s_N up to 256, the paper's smallest palette that
 //! looks right); the tests build 1, 4, 12 and 14 bits (up to 16,384 normals).
 
-use crate::unit::{Accuracy, UnitModel};
+use crate::unit::{run_machine, Accuracy, Machine, UnitModel};
 
 /// Index bits of the unit in the table.
 pub const INDEX_BITS: u32 = 8;
@@ -22,24 +22,34 @@ crate::ports! {
     ],
 }
 
-/// The unit over a stream, for an index of `bits` bits, from empty (zero) tables.
-pub fn run_with(bits: u32, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    use input::*;
-    let mut t = vec![vec![0u32; 1 << bits]; 2];
-    inputs
-        .iter()
-        .map(|v| {
-            let e = t[v[frame] as usize][v[idx] as usize];
-            if v[we] == 1 {
-                t[1 - v[frame] as usize][v[waddr] as usize] = v[wdata] as u32;
-            }
-            (0..4).map(|c| ((e >> (8 * c)) & 0xff) as i64).collect()
-        })
-        .collect()
+/// The two tables of an index of `BITS` bits, from empty (zero): the unit as a machine.
+#[derive(Clone)]
+pub struct Tables<const BITS: u32>(pub [Vec<u32>; 2]);
+
+impl<const BITS: u32> Default for Tables<BITS> {
+    fn default() -> Self {
+        Tables(std::array::from_fn(|_| vec![0; 1 << BITS]))
+    }
 }
 
+impl<const BITS: u32> Machine for Tables<BITS> {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        use input::*;
+        let e = self.0[v[frame] as usize][v[idx] as usize];
+        self.load(v);
+        (0..4).map(|c| ((e >> (8 * c)) & 0xff) as i64).collect()
+    }
+    fn load(&mut self, v: &[i64]) {
+        use input::*;
+        if v[we] == 1 {
+            self.0[1 - v[frame] as usize][v[waddr] as usize] = v[wdata] as u32;
+        }
+    }
+}
+
+/// The unit over a stream, from empty (zero) tables.
 pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    run_with(INDEX_BITS, inputs)
+    run_machine::<Tables<INDEX_BITS>>(inputs)
 }
 
 fn exact_ports(v: &[i64]) -> Vec<i64> {
@@ -145,7 +155,7 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
 }
 
 pub static MODEL: UnitModel = UnitModel::new("palette_lookup", (INPUTS, OUTPUTS), exact_ports, random, hard_cases)
-    .with_stream(run)
+    .with_stream::<Tables<INDEX_BITS>>()
     .with_accuracy(accuracy);
 
 #[cfg(test)]

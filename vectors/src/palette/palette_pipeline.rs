@@ -11,7 +11,7 @@
 //! as `palette_pipeline_12` (module `wide`: the same ports in the same order, the two indices wider).
 
 use crate::palette::{palette_lookup, table_builder};
-use crate::unit::UnitModel;
+use crate::unit::{run_machine, Machine, UnitModel};
 
 crate::ports! {
     inputs: [
@@ -31,28 +31,39 @@ pub fn pack(e: [i64; 4]) -> i64 {
 /// The lookup's vector for one of ours: the pixel, and the built entry packed when building.
 fn lookup_vector(v: &[i64]) -> Vec<i64> {
     use input::*;
-    let e = table_builder::exact(
-        [v[n_x], v[n_y], v[n_z]],
-        [v[l_x], v[l_y], v[l_z]],
-        [v[h_x], v[h_y], v[h_z]],
-        v[conc],
-        [v[spec_r], v[spec_g], v[spec_b]],
-    );
-    vec![v[frame], v[idx], v[build], v[b_idx], if v[build] == 1 { pack(e) } else { 0 }]
+    let e = || {
+        table_builder::exact(
+            [v[n_x], v[n_y], v[n_z]],
+            [v[l_x], v[l_y], v[l_z]],
+            [v[h_x], v[h_y], v[h_z]],
+            v[conc],
+            [v[spec_r], v[spec_g], v[spec_b]],
+        )
+    };
+    vec![v[frame], v[idx], v[build], v[b_idx], if v[build] == 1 { pack(e()) } else { 0 }]
 }
 
-/// The unit over a stream, for indices of `bits` bits, from empty (zero) tables.
-pub fn run_with(bits: u32, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    let l: Vec<Vec<i64>> = inputs.iter().map(|v| lookup_vector(v)).collect();
-    palette_lookup::run_with(bits, &l)
+/// The unit with indices of `BITS` bits, from empty (zero) tables, as a machine: the builder's entry fed to the
+/// lookup's tables.
+#[derive(Clone, Default)]
+pub struct Unit<const BITS: u32>(palette_lookup::Tables<BITS>);
+
+impl<const BITS: u32> Machine for Unit<BITS> {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        self.0.step(&lookup_vector(v))
+    }
+    fn load(&mut self, v: &[i64]) {
+        self.0.load(&lookup_vector(v))
+    }
 }
 
+/// The unit over a stream, from empty (zero) tables.
 pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    run_with(8, inputs)
+    run_machine::<Unit<8>>(inputs)
 }
 
 fn run_12(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    run_with(12, inputs)
+    run_machine::<Unit<12>>(inputs)
 }
 
 fn exact_ports(v: &[i64]) -> Vec<i64> {
@@ -153,10 +164,10 @@ pub mod wide {
 }
 
 pub static MODEL: UnitModel =
-    UnitModel::new("palette_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
+    UnitModel::new("palette_pipeline", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream::<Unit<8>>();
 pub static MODEL_12: UnitModel =
     UnitModel::new("palette_pipeline_12", (wide::INPUTS, wide::OUTPUTS), exact_ports_12, random_12, hard_cases_12)
-        .with_stream(run_12);
+        .with_stream::<Unit<12>>();
 
 #[cfg(test)]
 mod tests {

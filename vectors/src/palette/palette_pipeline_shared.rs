@@ -13,7 +13,7 @@
 //! it, a flip shows a finished table.
 
 use crate::palette::{palette_lookup, palette_pipeline, table_builder};
-use crate::unit::UnitModel;
+use crate::unit::{run_machine, Machine, UnitModel};
 
 crate::ports! {
     inputs: [
@@ -37,28 +37,48 @@ pub fn taken(inputs: &[Vec<i64>]) -> Vec<bool> {
         .collect()
 }
 
+/// The unit from empty (zero) tables as a machine: the tables, and whether the last vector's build was taken.
+#[derive(Clone, Default)]
+pub struct Unit {
+    tables: palette_lookup::Tables<8>,
+    last: bool,
+}
+
+impl Unit {
+    /// The lookup's vector for `v`, the builder's turn moved on.
+    fn lookup_vector(&mut self, v: &[i64]) -> Vec<i64> {
+        use input::*;
+        let take = v[build] == 1 && !self.last;
+        self.last = take;
+        let packed = if take {
+            palette_pipeline::pack(table_builder::exact_normalised(
+                [v[n_x], v[n_y], v[n_z]],
+                [v[l_x], v[l_y], v[l_z]],
+                [v[h_x], v[h_y], v[h_z]],
+                v[conc],
+                [v[spec_r], v[spec_g], v[spec_b]],
+            ))
+        } else {
+            0
+        };
+        vec![v[frame], v[idx], take as i64, v[b_idx], packed]
+    }
+}
+
+impl Machine for Unit {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        let l = self.lookup_vector(v);
+        self.tables.step(&l)
+    }
+    fn load(&mut self, v: &[i64]) {
+        let l = self.lookup_vector(v);
+        self.tables.load(&l)
+    }
+}
+
 /// The unit over a stream, from empty (zero) tables.
 pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    use input::*;
-    let l: Vec<Vec<i64>> = inputs
-        .iter()
-        .zip(taken(inputs))
-        .map(|(v, take)| {
-            let packed = if take {
-                palette_pipeline::pack(table_builder::exact_normalised(
-                    [v[n_x], v[n_y], v[n_z]],
-                    [v[l_x], v[l_y], v[l_z]],
-                    [v[h_x], v[h_y], v[h_z]],
-                    v[conc],
-                    [v[spec_r], v[spec_g], v[spec_b]],
-                ))
-            } else {
-                0
-            };
-            vec![v[frame], v[idx], take as i64, v[b_idx], packed]
-        })
-        .collect();
-    palette_lookup::run_with(8, &l)
+    run_machine::<Unit>(inputs)
 }
 
 fn exact_ports(v: &[i64]) -> Vec<i64> {
@@ -136,7 +156,7 @@ fn random(rng: &mut dyn rand::RngCore) -> Vec<i64> {
 }
 
 pub static MODEL: UnitModel =
-    UnitModel::new("palette_pipeline_shared", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream(run);
+    UnitModel::new("palette_pipeline_shared", (INPUTS, OUTPUTS), exact_ports, random, hard_cases).with_stream::<Unit>();
 
 #[cfg(test)]
 mod tests {

@@ -23,7 +23,7 @@
 //! simulation and the FPGA's block RAM (zero at configuration) do, where Icarus reads an unwritten word as x: the
 //! vectors read only texels they have written.
 
-use crate::unit::{Accuracy, UnitModel};
+use crate::unit::{run_machine, Accuracy, Machine, UnitModel};
 
 crate::ports! {
     inputs: [
@@ -128,21 +128,22 @@ pub fn load(m: i64, texel: impl Fn(i64, i64, i64) -> i64) -> Vec<Vec<i64>> {
     v
 }
 
+/// The unit as a machine: a write vector writes its texel (outputs zero), a read vector reads its footprint.
+impl Machine for Memory {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        use input::*;
+        if v[we] == 1 {
+            self.write(v[w_log2], v[wx], v[wy], v[wdata]);
+            vec![0; 4]
+        } else {
+            self.footprint(v[level_log2], [v[x0], v[x1]], [v[y0], v[y1]]).to_vec()
+        }
+    }
+}
+
 /// The unit over a stream of vectors, from an empty (zero) memory.
 pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
-    use input::*;
-    let mut mem = Memory::default();
-    inputs
-        .iter()
-        .map(|v| {
-            if v[we] == 1 {
-                mem.write(v[w_log2], v[wx], v[wy], v[wdata]);
-                vec![0; 4]
-            } else {
-                mem.footprint(v[level_log2], [v[x0], v[x1]], [v[y0], v[y1]]).to_vec()
-            }
-        })
-        .collect()
+    run_machine::<Memory>(inputs)
 }
 
 fn exact_ports(v: &[i64]) -> Vec<i64> {
@@ -270,7 +271,7 @@ fn accuracy(_samples: usize, _seed: u64) -> Vec<Accuracy> {
 }
 
 pub static MODEL: UnitModel = UnitModel::new("tex_fetch", (INPUTS, OUTPUTS), exact_ports, random, hard_cases)
-    .with_stream(run)
+    .with_stream::<Memory>()
     .with_accuracy(accuracy);
 
 #[cfg(test)]
