@@ -46,6 +46,35 @@ struct Run<'a> {
     surface: Option<ErrorStats>,
 }
 
+/// The bit-exact model against software as a graphics programmer writes it, on the quad's `cart_pipeline` pixels:
+/// each way's speed beside its error against the scene's ideal.
+fn peer_table(scene: &Scene) {
+    let ways = sim::peer::compare(scene, SPLIT);
+    println!(
+        "the bit-exact model beside float software on the quad ({} cart_pipeline pixels, the same input vectors)",
+        ways[0].image.outs.len()
+    );
+    println!("{:<40} {:>12} {:>17} {:>17}", "way", "pixels/s", "shade mean / max", "colour mean / max");
+    for w in &ways {
+        let (s, c) = (&w.errors.shade, &w.errors.colour);
+        println!(
+            "{:<40} {:>12.0} {:>8.3} / {:>6.2} {:>8.3} / {:>6.2}",
+            w.what,
+            w.image.pixels_per_second(),
+            s.mean(),
+            s.max,
+            c.mean(),
+            c.max
+        );
+    }
+    let (peer, lanes, model) = (&ways[1].image, &ways[2].image, &ways[3].image);
+    println!(
+        "  the model takes {:.1}× the f32 peer's time on one thread from the same vectors, {:.1}× from its lanes",
+        model.seconds / peer.seconds.max(1e-9),
+        model.seconds / lanes.seconds.max(1e-9)
+    );
+}
+
 /// The threads the model's and Verilator's split frames run on, beside their one-thread runs.
 const SPLIT: usize = 2;
 
@@ -357,6 +386,8 @@ pub fn run(
     }
     row("polar shade vs an ideal lit by the surface's light", &sc.surface);
     row("polar shade vs equation 3 + powf on its own codes", &sc.own);
+    println!();
+    peer_table(&scene);
     println!();
     println!("US 6,819,319's polar shortcomings");
     row(&format!("(b) polar, {} px filtered across R's wrap", sc.wrap.count), &sc.wrap);

@@ -6,6 +6,7 @@ pub mod fst;
 pub mod gtkw;
 pub mod heightmap;
 pub mod minify;
+pub mod peer;
 pub mod pipeline;
 pub mod pipelines;
 pub mod prepared;

@@ -18,6 +18,7 @@ pub mod cartesian {
     pub mod cart_decode;
     pub mod cart_decode_hemi_oct;
     pub mod cart_encode;
+    pub mod cart_f32;
     pub mod cart_pipeline;
     pub mod cart_surface;
     pub mod cart_tex;
@@ -74,7 +75,7 @@ pub mod unit;
 
 // every unit also at the crate root, by its own name, whatever its family
 pub use cartesian::{
-    cart_decode, cart_decode_hemi_oct, cart_encode, cart_pipeline, cart_surface, cart_tex, light_iter,
+    cart_decode, cart_decode_hemi_oct, cart_encode, cart_f32, cart_pipeline, cart_surface, cart_tex, light_iter,
 };
 pub use height::{
     blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent,
