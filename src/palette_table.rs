@@ -73,7 +73,7 @@ const SHARED_MAX: usize = 256;
 /// are missing), then the table and Figure 3's pictures into `out`.
 pub fn command(no_synth: bool, dir: &std::path::Path, out: &std::path::Path) -> Result<(), String> {
     crate::output::writable_folder(out)?; // before the minutes of work, synthesis included
-    let tools = synth::tools::missing(&["yosys", "nextpnr-ice40"]).is_empty() && synth::tools::nextpnr_ecp5().is_some();
+    let tools = synth::tools::toolchain().missing().is_empty() && synth::tools::nextpnr_ecp5().is_some();
     let fmax = if no_synth || !tools {
         if !no_synth {
             println!("the rtl columns need yosys, nextpnr-ice40 and nextpnr-ecp5 (`bash .ci/run` installs them)");

@@ -39,6 +39,7 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
         println!("  critical path at seed {}: {c}", r.seed);
     }
     blocks_line(&r.blocks, p.family, 2);
+    println!("  tools        {}", synth::tools::toolchain().versions(p.family));
 }
 
 /// What an fmax is the median of: "the median of 5 placements (nextpnr seeds), slowest 120.3, fastest 131.0 MHz".

@@ -363,9 +363,11 @@ pub fn budget(unit: &str, budget: f64, part: synth::fpga::Part, dir: &std::path:
             names.join(", ")
         ));
     };
-    let missing = synth::tools::missing(&["yosys"]);
-    if !missing.is_empty() {
-        return Err("--budget costs each setting with yosys, which is missing (`bash .ci/run` installs it)".into());
+    let yosys = synth::tools::toolchain().yosys();
+    if !synth::tools::runs(&yosys) {
+        return Err(format!(
+            "--budget costs each setting with yosys, and {yosys} is missing (`bash .ci/run` installs it)"
+        ));
     }
     let t = std::time::Instant::now();
     let points = sweep(unit, part.family, dir, &|name| eprintln!("yosys: {name} for {}", part.title))?;

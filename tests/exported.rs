@@ -269,6 +269,55 @@ fn synth_places_at_several_seeds_each_cached_and_reports_their_median() {
     assert!(one.contains("999.5 MHz") && one.contains("one placement (nextpnr seed 1)"), "{one}");
 }
 
+/// Either toolchain synthesises and places: each says which tools made its figures, reads its own yosys's cell
+/// table, and keeps its placement apart from the other's in the cache (the tools' versions are in the key).
+#[test]
+fn synth_runs_on_either_toolchain_and_keeps_their_results_apart() {
+    let d = scratch("toolchains");
+    let cache = d.join("cache");
+    let run = |tc: &str| {
+        let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+            .args(["synth", "gloss", "--target", "up5k", "--seeds", "1", "--toolchain", tc])
+            .args(["--dir", d.join(tc).to_str().unwrap()])
+            .env("BUMPRTL_SYNTH_CACHE", &cache)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{tc}: {}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    let count = |out: &str, cell: &str| -> u64 {
+        let line = out.lines().find(|l| l.trim_start().starts_with(cell)).unwrap_or_else(|| panic!("{cell}: {out}"));
+        line.split_whitespace().nth(1).unwrap().parse().unwrap()
+    };
+    let placements = || {
+        std::fs::read_dir(&cache)
+            .unwrap()
+            .filter(|e| e.as_ref().unwrap().file_name().to_string_lossy().ends_with(".placement"))
+            .count()
+    };
+    let debian = run("debian");
+    assert!(debian.contains("Yosys 0.") && debian.contains("(--toolchain debian)"), "{debian}");
+    assert_eq!(placements(), 1);
+    let pypi = run("pypi");
+    assert!(pypi.contains("Yosys 0.70") && pypi.contains("(--toolchain pypi)"), "{pypi}");
+    assert_eq!(placements(), 2, "the two toolchains' placements are two entries");
+    for out in [&debian, &pypi] {
+        let (lut, mac) = (count(out, "SB_LUT4"), count(out, "SB_MAC16"));
+        let fmax: f64 = out
+            .lines()
+            .find(|l| l.trim_start().starts_with("fmax"))
+            .unwrap()
+            .split_whitespace()
+            .nth(1)
+            .unwrap()
+            .parse()
+            .unwrap();
+        assert!(lut > 20 && (1..=8).contains(&mac) && fmax > 20.0, "{out}");
+    }
+    let (code, _, err) = bumprtl(&["synth", "gloss", "--toolchain", "vivado"]);
+    assert!(code == 2 && err.lines().count() == 1 && err.contains("`debian`") && err.contains("`pypi`"), "{err}");
+}
+
 #[test]
 fn the_default_target_is_the_up5k_for_a_unit_that_fits_and_says_why() {
     let d = scratch("default");

@@ -35,7 +35,8 @@ pub fn version(tool: &str) -> String {
     if let Some(v) = map.get(tool) {
         return v.clone();
     }
-    let flag = if std::path::Path::new(tool).file_name().is_some_and(|n| n == "yosys") { "-V" } else { "--version" };
+    let yosys = std::path::Path::new(tool).file_name().is_some_and(|n| n.to_string_lossy().ends_with("yosys"));
+    let flag = if yosys { "-V" } else { "--version" };
     let v = std::process::Command::new(tool)
         .arg(flag)
         .output()

@@ -297,14 +297,19 @@ pub fn io_wrapper<U: StreamUnit>() -> String {
 }
 
 fn stat_count(text: &str, cell: &str, prefix: bool) -> u64 {
-    // the last `stat` table in the log is the final netlist
-    let start = text.rfind("Number of cells:").unwrap_or(0);
+    // the last `stat` table in the log is the final netlist; yosys 0.23 writes a cell's row as `NAME COUNT`, current
+    // versions as `COUNT NAME`
+    let start = text.rfind("Printing statistics").unwrap_or(0);
     text[start..]
         .lines()
         .filter_map(|l| {
             let mut f = l.split_whitespace();
-            let name = f.next()?;
-            let n: u64 = f.next()?.parse().ok()?;
+            let (a, b) = (f.next()?, f.next()?);
+            let (name, n) = match (a.parse::<u64>(), b.parse::<u64>()) {
+                (Err(_), Ok(n)) => (a, n),
+                (Ok(n), Err(_)) => (b, n),
+                _ => return None,
+            };
             let hit = if prefix { name.starts_with(cell) } else { name == cell };
             hit.then_some(n)
         })
@@ -385,7 +390,7 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
         let _ = write!(script, "read_verilog {f}; ");
     }
     let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; write_rtlil {top}.prepared.il; tee -q -o {top}.products dump t:$mul");
-    tools::run(dir, "yosys", &["-q", "-p", &script])?;
+    tools::run(dir, tools::toolchain().yosys(), &["-q", "-p", &script])?;
     let dump = std::fs::read_to_string(dir.join(format!("{top}.products")))
         .map_err(|e| format!("no yosys product list: {e}"))?;
     let all = products(&dump);
@@ -426,7 +431,7 @@ fn yosys_with(
     let [_, _, dsp, bram, _] = family.cells();
     let _ = write!(script, "; tee -q -o {top}.{family:?}.dsp select -list t:{dsp}; tee -q -o {top}.{family:?}.bram select -list t:{bram}; stat");
     let log = format!("{top}.{}.yosys.log", family.synth_command().split_whitespace().next().unwrap_or("synth"));
-    tools::run(dir, "yosys", &["-q", "-p", &script, "-l", &log])?;
+    tools::run(dir, tools::toolchain().yosys(), &["-q", "-p", &script, "-l", &log])?;
     std::fs::read_to_string(dir.join(&log)).map_err(|e| format!("no yosys log: {e}"))
 }
 
@@ -475,7 +480,7 @@ fn cached_cells(
     v.write(dir)?;
     let key = cache::key(
         &format!("cells\n{}\n{KEEP_OPERAND_COPIES}\n{how}\nblocks by type\n{}", family.synth_command(), v.text),
-        &["yosys"],
+        &[&tools::toolchain().yosys()],
     );
     let saved = dir.join(format!("{family:?}.cells"));
     let read = |t: &str| match t.split_whitespace().filter_map(|x| x.parse().ok()).collect::<Vec<u64>>()[..] {
@@ -638,7 +643,7 @@ fn place(dir: &Path, part: Part, freq_mhz: f64, seed: u32, base: &SynthReport) -
     let prog = match part.family {
         Family::Ice40 => {
             args.extend(["--asc", &asc]);
-            "nextpnr-ice40".to_string()
+            tools::toolchain().nextpnr_ice40()
         }
         Family::Ecp5 => tools::nextpnr_ecp5().ok_or_else(tools::nextpnr_ecp5_missing)?,
     };
@@ -756,10 +761,11 @@ pub fn synth_and_place<U: StreamUnit>(
         part.name
     );
     let pnr = match part.family {
-        Family::Ice40 => "nextpnr-ice40".to_string(),
+        Family::Ice40 => tools::toolchain().nextpnr_ice40(),
         Family::Ecp5 => tools::nextpnr_ecp5().unwrap_or_else(|| "nextpnr-ecp5".into()),
     };
-    let key = |seed: u32| cache::key(&format!("{inputs}\nseed {seed}"), &["yosys", &pnr]);
+    let yosys = tools::toolchain().yosys();
+    let key = |seed: u32| cache::key(&format!("{inputs}\nseed {seed}"), &[&yosys, &pnr]);
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let mut have: Vec<SynthReport> = (1..=seeds.n)
         .filter_map(|s| cache::get(&key(s), "placement").as_deref().and_then(SynthReport::from_text))
@@ -828,6 +834,18 @@ impl SynthReport {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The final `stat` table as yosys 0.23 and 0.70 write it (the same netlist's rows, taken from their logs):
+    /// each read whole, the FFs summed over their kinds, and an earlier table of the log left out.
+    #[test]
+    fn the_cells_are_read_off_the_last_stat_table_of_either_yosys() {
+        let old = "2. Printing statistics.\n\n=== top ===\n   Number of cells:  9\n     SB_LUT4   900\n\n5. Printing statistics.\n\n=== polar_pipeline ===\n\n   Number of wires:               1281\n   Number of cells:               1045\n     SB_CARRY                      165\n     SB_DFF                        558\n     SB_DFFSR                       29\n     SB_DFFSS                        2\n     SB_LUT4                       277\n     SB_MAC16                        7\n     SB_RAM40_4K                     7\n\nWarnings: 3 unique messages, 3 total\n";
+        let new = "4.59. Printing statistics.\n      1009 submodules\n       542   SB_DFF\n       273   SB_LUT4\n\n5. Printing statistics.\n\n=== polar_pipeline ===\n\n        +----------Local Count, excluding submodules.\n        | \n      711 wires\n     1207 cells\n      184   $scopeinfo\n      163   SB_CARRY\n      542   SB_DFF\n       29   SB_DFFSR\n        2   SB_DFFSS\n      273   SB_LUT4\n        7   SB_MAC16\n        7   SB_RAM40_4K\n\nWarnings: 3 unique messages, 3 total\n";
+        let c = cells(Family::Ice40, old);
+        assert_eq!((c.lut4, c.ff, c.dsp, c.bram, c.carry, c.spram), (277, 589, 7, 7, 165, 0));
+        let c = cells(Family::Ice40, new);
+        assert_eq!((c.lut4, c.ff, c.dsp, c.bram, c.carry, c.spram), (273, 573, 7, 7, 163, 0));
+    }
 
     #[test]
     fn a_saved_report_reads_back_whole() {

