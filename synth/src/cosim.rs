@@ -448,7 +448,7 @@ impl Built {
         // a part's records without the prologue's, each cycle counted from the body's first slot
         let part = |k: usize, chunk: &[Option<Vec<u64>>]| -> Result<T, String> {
             let mut f = self.run_slots(&[head, chunk])?;
-            f.records.drain(..head_outputs * rec);
+            f.records.drain(..(head_outputs * rec).min(f.records.len()));
             for r in f.records.chunks_exact_mut(rec) {
                 r[0] = r[0] - head.len() as u64 + (k * per) as u64;
             }
