@@ -424,7 +424,14 @@ fn yosys_with(
     if let Some(il) = rtlil {
         let _ = write!(script, "read_rtlil {il}; ");
     }
-    let _ = write!(script, "hierarchy -top {top}; {before}; {} -top {top}", family.synth_command());
+    let synth = format!("{} -top {top}", family.synth_command());
+    if rtlil.is_some() {
+        // products marked for logic (`$__soft_mul`, iCE40 only) after `synth_ice40`'s `begin` has checked the
+        // hierarchy: current yosys refuses such a cell there, though `synth_ice40` makes them itself later on
+        let _ = write!(script, "hierarchy -top {top}; {synth} -run :flatten; {before}; {synth} -run flatten:");
+    } else {
+        let _ = write!(script, "hierarchy -top {top}; {before}; {synth}");
+    }
     if let Some(j) = json {
         let _ = write!(script, " -json {j}");
     }
