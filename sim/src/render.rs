@@ -115,7 +115,7 @@ pub fn model_on(m: &UnitModel, p: &Prepared, threads: usize) -> Image {
 
 /// Runs of a path whose speed is reported, the fastest kept: a frame takes milliseconds, and one run may pay alone
 /// for a cold cache or a core that was asleep.
-pub const RUNS: usize = 3;
+pub const RUNS: usize = 5;
 
 /// A path run `RUNS` times, its fastest run kept.
 pub fn fastest(path: impl Fn() -> Image) -> Image {
