@@ -40,6 +40,9 @@ fn bench(c: &mut Criterion) {
     g.sample_size(20);
     g.throughput(Throughput::Elements(px.len() as u64));
     g.bench_function("bit-exact model (exact), 1 thread", |b| b.iter(|| sim::render::model(cart.model(), &prep)));
+    g.bench_function("bit-exact model (exact), 2 threads", |b| {
+        b.iter(|| sim::render::model_on(cart.model(), &prep, 2))
+    });
     g.bench_function("f64 method in reals, 1 thread", |b| b.iter(|| vectors::cart_f32::frame_f64(px)));
     g.bench_function("f32 SIMD peer, 1 thread", |b| b.iter(|| vectors::cart_f32::frame(px)));
     let lanes = vectors::cart_f32::lanes(px);
