@@ -819,6 +819,8 @@ fn a_report_plan_run_through_gnu_parallel_merges_into_the_report_run_in_one_proc
     let lines = std::fs::read_to_string(&plan).unwrap();
     assert_eq!(lines.lines().count(), 2, "{lines}");
     assert!(lines.lines().all(|l| l.contains(" report ") && l.contains(" --point ")), "{lines}");
+    // each point synthesises with the toolchain the plan was made with
+    assert!(lines.lines().all(|l| l.contains(" --toolchain debian")), "{lines}");
     let slurm = std::fs::read_to_string(d.join("plan.txt.slurm")).unwrap();
     assert!(slurm.contains("#SBATCH --array=1-2") && slurm.contains("SLURM_ARRAY_TASK_ID"), "{slurm}");
     let p = Command::new("parallel")

@@ -21,8 +21,8 @@ pub struct Image {
     pub seconds: f64,
 }
 
-/// A frame's output vectors one after another in one buffer, `width` values a pixel (no allocation a pixel, so a
-/// frame made on several threads does not wait on the allocator); `outs[k]` is pixel k's vector.
+/// A frame's output vectors one after another in one buffer, `width` values a pixel (no allocation is kept a pixel,
+/// so a frame made on several threads does not wait on the allocator); `outs[k]` is pixel k's vector.
 #[derive(Clone, Debug, Default)]
 pub struct Outs {
     width: usize,

@@ -24,6 +24,8 @@ pub fn plan(
             let _ = write!(c, " --scene {}", shell_quote(s));
         }
         let _ = write!(c, " --out {}", q(out));
+        // the points synthesise with this process's toolchain, as the merge names it
+        let _ = write!(c, " --toolchain {}", synth::tools::toolchain().name());
         c
     };
     let mut lines = String::new();

@@ -458,14 +458,21 @@ impl Built {
         let mut chunks: Vec<_> = body.chunks(per).enumerate().collect();
         let last = chunks.pop();
         // the last part on this thread, the others on threads of their own
-        std::thread::scope(|s| {
+        // every part joined (or its panic caught) before the first error is returned
+        let results: Vec<Result<T, String>> = std::thread::scope(|s| {
             let hs: Vec<_> = chunks.into_iter().map(|(k, ch)| s.spawn(move || part(k, ch))).collect();
-            let last = last.map(|(k, ch)| part(k, ch));
-            hs.into_iter()
+            let last = last.map(|(k, ch)| {
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| part(k, ch)))
+                    .unwrap_or_else(|_| Err("a simulator run panicked".into()))
+            });
+            let mut all: Vec<_> = hs
+                .into_iter()
                 .map(|h| h.join().unwrap_or_else(|_| Err("a simulator thread panicked".into())))
-                .chain(last)
-                .collect()
-        })
+                .collect();
+            all.extend(last);
+            all
+        });
+        results.into_iter().collect()
     }
 
     /// The bare loop: `cycles` clocks on inputs generated inside the library, no memory traffic and no output.

@@ -426,8 +426,10 @@ fn yosys_with(
     }
     let synth = format!("{} -top {top}", family.synth_command());
     if rtlil.is_some() {
-        // products marked for logic (`$__soft_mul`, iCE40 only) after `synth_ice40`'s `begin` has checked the
-        // hierarchy: current yosys refuses such a cell there, though `synth_ice40` makes them itself later on
+        // products marked for logic (`$__soft_mul`) after `synth_ice40`'s `begin` has checked the hierarchy: current
+        // yosys refuses such a cell there, though `synth_ice40` makes them itself later on (`synth_ecp5` has no
+        // `flatten` label: the iCE40 is the only family whose products go to logic)
+        assert_eq!(family, Family::Ice40, "products are built in logic on the iCE40 only");
         let _ = write!(script, "hierarchy -top {top}; {synth} -run :flatten; {before}; {synth} -run flatten:");
     } else {
         let _ = write!(script, "hierarchy -top {top}; {before}; {synth}");

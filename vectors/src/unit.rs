@@ -107,7 +107,7 @@ pub fn run_machine<M: Machine + Default>(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
 /// A machine over a frame from reset: the first `prologue` vectors loaded (their outputs not made), then the rest
 /// cut into `threads` runs of consecutive vectors, each on its own thread from a copy of the state the prologue
 /// left, its outputs written one vector after another into its own part of `out` (as many values a vector as the
-/// unit has outputs: no allocation kept a vector, so the threads do not wait on the allocator). Sound for a frame
+/// unit has outputs: no allocation is kept a vector, so the threads do not wait on the allocator). Sound for a frame
 /// whose vectors after the prologue read the state and do not change what a later one reads (a frame's pixels);
 /// the tests hold every pipeline's split frame to its one-thread stream.
 pub fn frame_on<M: Machine + Default>(inputs: &[Vec<i64>], prologue: usize, threads: usize, out: &mut [i64]) {
@@ -122,7 +122,8 @@ fn frame_from<M: Machine>(mut m: M, inputs: &[Vec<i64>], prologue: usize, thread
     if body.is_empty() {
         return;
     }
-    let width = (out.len() / body.len()).max(1);
+    let width = out.len() / body.len();
+    assert!(width > 0 && out.len() == body.len() * width, "{} outputs for {} vectors", out.len(), body.len());
     let per = body.len().div_ceil(threads.max(1));
     let run = |m: &mut M, vs: &[Vec<i64>], out: &mut [i64]| {
         for (v, o) in vs.iter().zip(out.chunks_exact_mut(width)) {

@@ -82,6 +82,7 @@ pub fn frame(inputs: &[Vec<i64>]) -> Vec<i64> {
 
 /// `frame` on a frame of `n` pixels already in lanes (as a renderer keeps them: structure of arrays, f32).
 pub fn frame_of_lanes(lanes: &[Lanes], n: usize) -> Vec<i64> {
+    assert_eq!(lanes.len(), n.div_ceil(LANES), "{n} pixels in {} steps of {LANES}", lanes.len());
     let mut out = Vec::with_capacity(n * OUTPUTS);
     for (step, l) in lanes.iter().enumerate() {
         let [p, r, g, b] = shade8(l).map(|s| s.round().to_array());

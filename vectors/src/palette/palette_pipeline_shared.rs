@@ -25,16 +25,10 @@ crate::ports! {
     ],
 }
 
-/// Which vectors' builds are taken: a build, unless the vector before it had its build taken.
+/// Which vectors' builds are taken (`Unit::take`): a build, unless the vector before it had its build taken.
 pub fn taken(inputs: &[Vec<i64>]) -> Vec<bool> {
-    let mut last = false;
-    inputs
-        .iter()
-        .map(|v| {
-            last = v[input::build] == 1 && !last;
-            last
-        })
-        .collect()
+    let mut u = Unit::default();
+    inputs.iter().map(|v| u.take(v)).collect()
 }
 
 /// The unit from empty (zero) tables as a machine: the tables, and whether the last vector's build was taken.
@@ -45,11 +39,16 @@ pub struct Unit {
 }
 
 impl Unit {
+    /// Whether `v`'s build is taken: a build, unless the vector before it had its build taken.
+    fn take(&mut self, v: &[i64]) -> bool {
+        self.last = v[input::build] == 1 && !self.last;
+        self.last
+    }
+
     /// The lookup's vector for `v`, the builder's turn moved on.
     fn lookup_vector(&mut self, v: &[i64]) -> Vec<i64> {
         use input::*;
-        let take = v[build] == 1 && !self.last;
-        self.last = take;
+        let take = self.take(v);
         let packed = if take {
             palette_pipeline::pack(table_builder::exact_normalised(
                 [v[n_x], v[n_y], v[n_z]],
