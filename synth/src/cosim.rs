@@ -32,10 +32,6 @@ impl Frame {
     pub fn is_empty(&self) -> bool {
         self.records.is_empty()
     }
-    /// Output `o` of record `k`.
-    pub fn value(&self, k: usize, o: usize) -> u64 {
-        self.records[k * (1 + self.n_out) + 1 + o]
-    }
     pub fn collected(&self) -> rtl::stream::Collected {
         let mut c = rtl::stream::Collected::default();
         for r in self.records.chunks_exact(1 + self.n_out) {
