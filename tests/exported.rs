@@ -202,6 +202,13 @@ fn a_part_too_small_is_named_with_its_resource_and_a_placed_design_reports_its_f
     // a placed design reports an fmax figure (its value goes in the report, never in a test)
     let fmax = out.lines().find_map(|l| l.trim().strip_prefix("fmax")).and_then(|r| r.split_whitespace().next());
     assert!(fmax.is_some_and(|x| x.parse::<f64>().is_ok()), "no fmax figure in\n{out}");
+    // gloss's three products placed with their operand and product flip-flops in the MULT18X18D registers, or,
+    // asked, as yosys left them
+    assert!(out.contains("6 multiplier operands and 3 products through the MULT18X18D registers"), "{out}");
+    let (code, out, err) =
+        bumprtl(&["synth", "gloss", "--target", "ecp5-45f", "--seeds", "1", "--fabric-registers", "--dir", dir]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("every one in the fabric") && !out.contains("MULT18X18D registers"), "{out}");
     let (code, _, err) = bumprtl(&["synth", "cart_pipeline", "--target", "ecp5-12f", "--dir", dir]);
     assert_eq!(code, 1);
     assert!(err.contains("unknown target `ecp5-12f`") && err.contains("ecp5-45f"), "{err}");
@@ -394,4 +401,46 @@ fn the_exported_cocotb_tests_pass_under_icarus_and_fail_on_a_wrong_word() {
     assert_ne!(code, 0, "cocotb passed a wrong word:\n{out}");
     assert!(out.contains("TESTS=2 PASS=0 FAIL=2"), "{out}");
     assert!(out.contains("vector 7: got"), "{out}");
+}
+
+/// Whether the unit's exported bench passes on a netlist `v` (with the ECP5 cell library) under Icarus, as
+/// `N passed, 0 failed`; (passed, the simulator's output).
+fn netlist_passes(d: &Path, u: &str, v: &str, n: usize) -> (bool, String) {
+    let (code, out) = sh(d, &format!("iverilog -g2012 -o {v}.vvp {u}_tb.v {v} ecp5_cells.v && vvp -n {v}.vvp"));
+    (code == 0 && out.lines().any(|l| l == format!("{n} passed, 0 failed")), out)
+}
+
+/// The ECP5 netlist that is placed (its pipeline registers moved into the MULT18X18D and DP16KD registers by
+/// `regpack`) computes the golden vectors, as yosys's own netlist does; a packing that loses a register does not
+/// (one product's or one block RAM's output register switched back off, its fabric flip-flops gone).
+#[test]
+fn the_ecp5_netlist_with_its_registers_in_the_blocks_passes_the_golden_vectors_and_a_wrong_packing_fails() {
+    // (unit, products packed at the output, block RAM reads packed): gloss, three products; polar, a product
+    // whose operand comes from a block RAM; tex_fetch, the map memory's four banks (32 DP16KD) behind their
+    // output flip-flops
+    for (u, products, brams) in [("gloss", 3, 0), ("polar_pipeline", 10, 0), ("tex_fetch", 0, 32)] {
+        let d = scratch(&format!("{u}-ecp5"));
+        let (code, _, err) = bumprtl(&["verilog", u, "--out", d.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+        let p = synth::regpack::netlists(&d, u, &format!("{u}.v")).unwrap();
+        assert_eq!((p.mult_outputs, p.bram_outputs), (products, brams), "{u}: {p}");
+        let n = rows(u);
+        for v in [format!("{u}.ecp5.v"), format!("{u}.packed.v")] {
+            let (ok, out) = netlist_passes(&d, u, &v, n);
+            assert!(ok, "{u}, {v}:\n{out}");
+        }
+        // a register the pass moved into a block, switched back off, its fabric flip-flops still gone
+        let (from, to) = if products > 0 {
+            ("\"REG_OUTPUT_CLK\":\"CLK0\"", "\"REG_OUTPUT_CLK\":\"NONE\"")
+        } else {
+            ("\"REGMODE_A\":\"OUTREG\"", "\"REGMODE_A\":\"NOREG\"")
+        };
+        let base = std::fs::read_to_string(d.join(format!("{u}.packed.json"))).unwrap();
+        assert!(base.contains(from), "{u}: no {from} to change");
+        let wrong = base.replacen(from, to, 1);
+        std::fs::write(d.join("wrong.json"), wrong).unwrap();
+        synth::regpack::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
+        let (ok, out) = netlist_passes(&d, u, "wrong.v", n);
+        assert!(!ok, "{u}: a wrong packing passed:\n{out}");
+    }
 }

@@ -261,6 +261,8 @@ pub struct SynthReport {
     pub fmax_range: Option<(f64, f64)>,
     /// the hard blocks of each top-level instance (the unit alone, before the wrapper)
     pub blocks: Blocks,
+    /// what `regpack` moved into the ECP5's blocks before placement (empty: nothing packed, or an iCE40)
+    pub packed: String,
 }
 
 impl SynthReport {
@@ -630,6 +632,16 @@ fn wrapped<U: StreamUnit>(dir: &Path, part: Part, choice: &str) -> Result<SynthR
     write_atomic(&dir.join(&w), io_wrapper::<U>().as_bytes())?;
     let top = format!("{}_io", U::NAME);
     yosys(dir, part.family, &top, &[&format!("{}.v", U::NAME), &w], Some("wrapped.json"))?;
+    let mut packed = String::new();
+    if part.family == Family::Ecp5 && crate::regpack::packs() {
+        // yosys's netlist kept beside the one placed, for a user to compare
+        let read = |f: &str| std::fs::read_to_string(dir.join(f)).map_err(|e| format!("no yosys netlist {f}: {e}"));
+        let text = read("wrapped.json")?;
+        write_atomic(&dir.join("wrapped.yosys.json"), text.as_bytes())?;
+        let (out, p) = crate::regpack::pack_ecp5(&text, &top)?;
+        write_atomic(&dir.join("wrapped.json"), out.as_bytes())?;
+        packed = p.to_string();
+    }
     Ok(SynthReport {
         unit: U::NAME.into(),
         part: part.name.into(),
@@ -637,6 +649,7 @@ fn wrapped<U: StreamUnit>(dir: &Path, part: Part, choice: &str) -> Result<SynthR
         latency: U::LATENCY,
         choice: choice.into(),
         blocks,
+        packed,
         ..Default::default()
     })
 }
@@ -763,8 +776,13 @@ pub fn synth_and_place<U: StreamUnit>(
     if seeds.n == 0 || seeds.least > seeds.n {
         return Err(format!("{} placements of seeds 1 ..= {}: nothing to place", seeds.least, seeds.n));
     }
+    let packing = match part.family {
+        Family::Ecp5 if crate::regpack::packs() => format!("\n{}", crate::regpack::VERSION),
+        Family::Ecp5 => "\nevery register in the fabric".to_string(),
+        Family::Ice40 => String::new(),
+    };
     let inputs = format!(
-        "place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\n{freq_mhz}\nblocks by type",
+        "place\n{}\n{}\n{}\n{KEEP_OPERAND_COPIES}\n{FABRIC_PRODUCTS}\n{freq_mhz}\nblocks by type{packing}",
         export::<U>().text,
         io_wrapper::<U>(),
         part.name
@@ -801,11 +819,12 @@ impl SynthReport {
         let c = &self.cells;
         let (lo, hi) = (self.fmax_range.map(|r| r.0.to_string()), self.fmax_range.map(|r| r.1.to_string()));
         format!(
-            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nplacements={}\nseed={}\nfmax_min={}\nfmax_max={}\nblocks={}\n",
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nplacements={}\nseed={}\nfmax_min={}\nfmax_max={}\nblocks={}\npacked={}\n",
             self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, c.spram, self.latency, self.choice.replace('\n', " "),
             o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
             o(self.critical.clone()), o(self.place_error.clone()), self.placements, self.seed, o(lo), o(hi),
-            self.blocks.to_text()
+            self.blocks.to_text(),
+            self.packed
         )
     }
 
@@ -836,6 +855,7 @@ impl SynthReport {
             seed: get("seed")?.parse().ok()?,
             fmax_range: opt("fmax_min").and_then(|v| v.parse().ok()).zip(opt("fmax_max").and_then(|v| v.parse().ok())),
             blocks: Blocks::from_text(get("blocks")?),
+            packed: get("packed").unwrap_or_default().to_string(),
         })
     }
 }
@@ -872,6 +892,7 @@ mod tests {
             seed: 3,
             fmax_range: Some((6.25, 8.5)),
             blocks: Blocks { by_instance: vec![("unit$0".into(), 3, 0), ("norm".into(), 6, 1)] },
+            packed: "2 multiplier operands and 1 products through the MULT18X18D registers".into(),
         };
         let back = SynthReport::from_text(&r.to_text()).unwrap();
         assert_eq!(back.to_text(), r.to_text());

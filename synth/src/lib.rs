@@ -10,6 +10,7 @@ pub mod export;
 pub mod fpga;
 pub mod lint;
 pub mod package;
+pub mod regpack;
 pub mod selfcheck;
 pub mod tools;
 
