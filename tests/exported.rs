@@ -415,10 +415,10 @@ fn netlist_passes(d: &Path, u: &str, v: &str, n: usize) -> (bool, String) {
 /// (one product's or one block RAM's output register switched back off, its fabric flip-flops gone).
 #[test]
 fn the_ecp5_netlist_with_its_registers_in_the_blocks_passes_the_golden_vectors_and_a_wrong_packing_fails() {
-    // (unit, products packed at the output, block RAM reads packed): gloss, three products; polar, a product
-    // whose operand comes from a block RAM; tex_fetch, the map memory's four banks (32 DP16KD) behind their
-    // output flip-flops
-    for (u, products, brams) in [("gloss", 3, 0), ("polar_pipeline", 10, 0), ("tex_fetch", 0, 32)] {
+    // (unit, products packed at the output, block RAM reads packed): gloss, three products; polar, ten, and the
+    // power unit's two tables (initial contents) behind their output flip-flops; tex_fetch, the map memory's four
+    // banks (32 DP16KD, written and read) behind theirs
+    for (u, products, brams) in [("gloss", 3, 0), ("polar_pipeline", 10, 2), ("tex_fetch", 0, 32)] {
         let d = scratch(&format!("{u}-ecp5"));
         let (code, _, err) = bumprtl(&["verilog", u, "--out", d.to_str().unwrap()]);
         assert_eq!(code, 0, "{err}");

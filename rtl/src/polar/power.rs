@@ -1,8 +1,11 @@
 //! `power`: the power unit [30] of US 6,819,319's FIG. 3, `y = 255·(x/255)^p` with p = pw/4 (U6.2), by a log table,
-//! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 7:
-//! 1 inputs registered; 2 L(x) (table); 3 e = pw·L; 4 g = round(e >> 6), n = min(g >> 8, 9), f = g mod 256;
-//! 5 E(f) (table); 6 w = E >> (n + 6), the barrel shift; 7 y = (w + 1) >> 1, which makes (E + 2^(n+6)) >> (n + 7),
-//! and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K placed the unit at 43.7 MHz.)
+//! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 9:
+//! 1 inputs registered; 2 L(x) (table); 2b L again; 3 e = pw·L; 4 g = round(e >> 6), n = min(g >> 8, 9),
+//! f = g mod 256; 5 E(f) (table); 5b E again; 6 w = E >> (n + 6), the barrel shift; 7 y = (w + 1) >> 1, which makes
+//! (E + 2^(n+6)) >> (n + 7), and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K placed the
+//! unit at 43.7 MHz.) Stages 2b and 5b compute nothing: on the ECP5 each is a table's DP16KD output register, so
+//! neither the product nor the shift waits on a block RAM read (5.6 ns from the clock without it, 0.97 with it;
+//! polar_pipeline's critical path, 9.1 ns, was that read into the multiplier).
 //!
 //! `Power<LF, EB>`: L with LF fraction bits and an exp table of 2^EB entries (`vectors::power::exact_with`); the
 //! unit and the polar pipeline have the defaults, LF = 12 and EB = 8, the other sizes are the width sweep's. The
@@ -13,7 +16,7 @@ use crate::prim::q::U8;
 use crate::tables::{ExpTable, LogTable};
 use rust_hdl::prelude::*;
 
-pub const LATENCY: usize = 7;
+pub const LATENCY: usize = 9;
 
 crate::stream_block! {
     pub struct Power<const LF: usize = 12, const EB: usize = 8>: unit("power", LATENCY) {
@@ -34,6 +37,9 @@ crate::stream_block! {
         // stage 2: L(x), Uq3.12
         s2_l: DFF<Bits<15>>,
         s2_pw: DFF<U8>,
+        // stage 2b: L again (a DP16KD's output register on the ECP5)
+        s2b_l: DFF<Bits<15>>,
+        s2b_pw: DFF<U8>,
         // stage 3: e = pw·L, Uq9.14 (U23)
         s3_e: DFF<Bits<23>>,
         // stage 4: n (0..9) and f (U(EB))
@@ -42,13 +48,16 @@ crate::stream_block! {
         // stage 5: E(f) (U15) and the shift n + 6
         s5_e: DFF<Bits<15>>,
         s5_sh: DFF<Bits<4>>,
+        // stage 5b: E again (a DP16KD's output register on the ECP5)
+        s5b_e: DFF<Bits<15>>,
+        s5b_sh: DFF<Bits<4>>,
         // stage 6: E >> (n + 6) ≤ 510 (U9)
         s6_w: DFF<Bits<9>>,
         // stage 7
         s7_y: DFF<U8>,
         // x = 0 and pw = 0, beside the stages
-        zero_dly: Delay<Bit, 5>,
-        pw0_dly: Delay<Bit, 5>,
+        zero_dly: Delay<Bit, 7>,
+        pw0_dly: Delay<Bit, 7>,
         valid: Delay<Bit, LATENCY>,
         w_l: Signal<Local, Bits<16>>,
         w_p: Signal<Local, Bits<16>>,
@@ -84,11 +93,15 @@ impl<const LF: usize, const EB: usize> Default for Power<LF, EB> {
             s1_pw: Default::default(),
             s2_l: Default::default(),
             s2_pw: Default::default(),
+            s2b_l: Default::default(),
+            s2b_pw: Default::default(),
             s3_e: Default::default(),
             s4_n: Default::default(),
             s4_f: Default::default(),
             s5_e: Default::default(),
             s5_sh: Default::default(),
+            s5b_e: Default::default(),
+            s5b_sh: Default::default(),
             s6_w: Default::default(),
             s7_y: Default::default(),
             zero_dly: Default::default(),
@@ -109,10 +122,13 @@ impl<const LF: usize, const EB: usize> Default for Power<LF, EB> {
 impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_x, s1_pw, s2_l, s2_pw, s3_e, s4_n, s4_f, s5_e, s5_sh, s6_w, s7_y);
+        dff_setup!(
+            self, clock, s1_x, s1_pw, s2_l, s2_pw, s2b_l, s2b_pw, s3_e, s4_n, s4_f, s5_e, s5_sh, s5b_e, s5b_sh, s6_w,
+            s7_y
+        );
         clock!(self, clock, zero_dly, pw0_dly, valid);
         self.valid.d.next = self.valid_in.val();
-        // stage 1 (x = 0 and pw = 0 are flagged from the registered inputs, so their delay lines are 5 long)
+        // stage 1 (x = 0 and pw = 0 are flagged from the registered inputs, so their delay lines are 7 long)
         self.s1_x.d.next = self.x.val();
         self.s1_pw.d.next = self.pw.val();
         self.zero_dly.d.next = !self.s1_x.q.val().any();
@@ -121,9 +137,12 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         self.log.address.next = self.s1_x.q.val();
         self.s2_l.d.next = self.log.data.val();
         self.s2_pw.d.next = self.s1_pw.q.val();
+        // stage 2b
+        self.s2b_l.d.next = self.s2_l.q.val();
+        self.s2b_pw.d.next = self.s2_pw.q.val();
         // stage 3: pw·L, U8 × U15 → U23
-        self.w_l.next = bit_cast::<16, 15>(self.s2_l.q.val());
-        self.w_p.next = bit_cast::<16, 8>(self.s2_pw.q.val());
+        self.w_l.next = bit_cast::<16, 15>(self.s2b_l.q.val());
+        self.w_p.next = bit_cast::<16, 8>(self.s2b_pw.q.val());
         self.w_e.next = self.w_l.val() * self.w_p.val();
         self.s3_e.d.next = self.w_e.val().get_bits::<23>(0);
         // stage 4: g = (e + 2^(k−1)) >> k (round half up; e ≤ 255·32,745 = 8,349,975 and 2^(k−1) ≤ 128: U23), split
@@ -139,8 +158,11 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         self.exp.address.next = self.s4_f.q.val();
         self.s5_e.d.next = self.exp.data.val();
         self.s5_sh.d.next = self.s4_n.q.val() + 6;
+        // stage 5b
+        self.s5b_e.d.next = self.s5_e.q.val();
+        self.s5b_sh.d.next = self.s5_sh.q.val();
         // stage 6: the shift, E >> (n + 6) (truncating; the next stage rounds)
-        self.w_w.next = self.s5_e.q.val() >> self.s5_sh.q.val();
+        self.w_w.next = self.s5b_e.q.val() >> self.s5b_sh.q.val();
         self.s6_w.d.next = self.w_w.val().get_bits::<9>(0);
         // stage 7: ((E >> (n + 6)) + 1) >> 1, the last bit rounded half up
         self.w_w1.next = self.s6_w.q.val() + 1; // ≤ 511: no wrap
