@@ -1,7 +1,7 @@
 //! `light_iter`: per-vertex S8 light directions interpolated across a triangle from U9 barycentric weights:
 //! `L = l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2` (S20, Sq11.8) → `truncate` 6 (floor) → `saturate` to S10 (Sq7.2).
-//! Each component is a `LightLane`; latency 7: the differences; the two `SmMul`s (|d|, the operand registers, |d|·w);
-//! l0·256 ± |d1|·w1; ± |d2|·w2; the shift and saturation. The operand register feeds nothing but the multiplier, so
+//! Each component is a `LightLane`; latency 8: the differences; the two `SmMul`s (|d|, the operand registers, |d|·w,
+//! the product carried); l0·256 ± |d1|·w1; ± |d2|·w2; the shift and saturation. The operand register feeds nothing but the multiplier, so
 //! the placer can put it beside the DSP: the long route lands on a register-to-register path.
 
 use crate::prim::delay::Delay;
@@ -10,7 +10,7 @@ use crate::prim::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 7;
+pub const LATENCY: usize = 1 + sm_mul::LATENCY + 3;
 
 crate::block! {
     /// One component of the light: `l0·256 + (l1 − l0)·w1 + (l2 − l0)·w2`, floored to Sq7.2 and saturated to S10.
@@ -32,17 +32,17 @@ crate::block! {
         // 4 copies of the sign, which yosys drops and merges; carrying l0 alone and widening at the sum was measured
         // the same (645 SB_LUT4, 688 SB_DFF on the UP5K either way)
         s1_base: DFF<Sq11_8>,
-        // stages 2–4: |d|·w ≤ 255·511 < 2^17, the base beside
+        // stages 2–5: |d|·w ≤ 255·511 < 2^17, the base beside
         mul1: SmMul<9>, // S9: |d| ≤ 255 leaves SmMul as 8 bits, so the DSP's operand is 8 bits wide
         mul2: SmMul<9>,
         base: Delay<Sq11_8, { sm_mul::LATENCY }>,
-        // stage 5: l0·256 ± |d1|·w1 (S20), the second product beside
+        // stage 6: l0·256 ± |d1|·w1 (S20), the second product beside
         s5_part: DFF<Sq11_8>,
         s5_p2: DFF<Sq11_8>,
         s5_n2: DFF<Bit>,
-        // stage 6: the sum (S20; |L| ≤ 127·256 + 2·255·511 = 293,122 < 2^19)
+        // stage 7: the sum (S20; |L| ≤ 127·256 + 2·255·511 = 293,122 < 2^19)
         s6_acc: DFF<Sq11_8>,
-        // stage 7: floor to Sq7.2, saturate to S10
+        // stage 8: floor to Sq7.2, saturate to S10
         s7_out: DFF<Sq7_2>,
         w_e0: Signal<Local, S9>, // l0 sign-extended to S9
         w_e1: Signal<Local, S9>,
@@ -80,13 +80,13 @@ impl Logic for LightLane {
         }
         self.s1_base.d.next = self.w_e20.val() << 8; // l0·256: S16 in S20, exact
 
-        // stages 2–4: the products, the base beside them
+        // stages 2–5: the products, the base beside them
         self.mul1.x.next = self.s1_d1.q.val();
         self.mul1.w.next = self.w1.val();
         self.mul2.x.next = self.s1_d2.q.val();
         self.mul2.w.next = self.w2.val();
         self.base.d.next = self.s1_base.q.val();
-        // stage 5: l0·256 ± |d1|·w1 (S20, exact); the products are < 2^17, so their low 20 bits are all of them
+        // stage 6: l0·256 ± |d1|·w1 (S20, exact); the products are < 2^17, so their low 20 bits are all of them
         self.w_p1.next = self.mul1.p.val().get_bits::<20>(0); // U17 in 20, exact
         if self.mul1.neg.val() {
             self.s5_part.d.next = self.base.q.val() - self.w_p1.val(); // S20, exact
@@ -95,13 +95,13 @@ impl Logic for LightLane {
         }
         self.s5_p2.d.next = self.mul2.p.val().get_bits::<20>(0); // U17 in 20, exact
         self.s5_n2.d.next = self.mul2.neg.val();
-        // stage 6: ± |d2|·w2 (S20, exact)
+        // stage 7: ± |d2|·w2 (S20, exact)
         if self.s5_n2.q.val() {
             self.s6_acc.d.next = self.s5_part.q.val() - self.s5_p2.q.val();
         } else {
             self.s6_acc.d.next = self.s5_part.q.val() + self.s5_p2.q.val();
         }
-        // stage 7: acc >> 6 (floor) keeps its sign in 14 bits; it fits S10 when bits 13..9 are all equal (saturate)
+        // stage 8: acc >> 6 (floor) keeps its sign in 14 bits; it fits S10 when bits 13..9 are all equal (saturate)
         self.w_q.next = self.s6_acc.q.val().get_bits::<14>(6); // S20 → S14, floor
         self.w_hi.next = self.w_q.val().get_bits::<5>(9); // the top 5 bits, a test only
         if self.w_q.val().get_bit(13) {

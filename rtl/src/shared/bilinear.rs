@@ -10,8 +10,8 @@
 //! exact) and `out = (wide + 2^(2F−D−1)) >> (2F − D)` (UW, rounded half up). With D = 0 this is the model's
 //! `a·(2^F − v) + b·v` rounded half up. The colour filter reads `out`; the height-map path reads `wide`, whose
 //! 2F − D fraction bits the tangents need.
-//! Latency 11: widen; differences; the two `SmMul`s (|d|, operand registers, ·u); a and b; b − a; the `SmMul`
-//! (|b − a|, operand registers, ·v); the rounded sum.
+//! Latency 13: widen; differences; the two `SmMul`s (4: |d|, operand registers, ·u, the product carried); a and b;
+//! b − a; the `SmMul` (|b − a|, operand registers, ·v, carried); the rounded sum.
 //!
 //! `Bilinear` is the unit `bilinear`: four `BilinearUnit<8, 8>` on the RGBA channels, with one valid flag.
 //! Values are carried in 16/32-bit containers (rust-hdl multiplies only 16 × 16 → 32); the comments give their real
@@ -23,7 +23,7 @@ use crate::prim::sm_mul::{self, SmMul};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 11;
+pub const LATENCY: usize = 2 + sm_mul::LATENCY + 2 + sm_mul::LATENCY + 1;
 
 crate::block! {
     /// One bilinear unit: `W`-bit texels, `F`-bit blend factors (`u`, `v` ∈ 0..2^F, the second texel's weight u/2^F),
@@ -45,7 +45,7 @@ crate::block! {
         shift_out: Constant<Bits<5>>, // 2F − D, an index into 32 bits
         half: Constant<Bits<32>>,     // 2^(2F−D−1), the rounding constant
         u: Delay<Bits<16>, 2>,        // u, to meet the differences at the multipliers (UF)
-        v: Delay<Bits<16>, 7>,        // v, to meet b − a (UF)
+        v: Delay<Bits<16>, { 4 + sm_mul::LATENCY }>, // v, to meet b − a (UF)
         // stage 1: the texels widened (UW in 16 bits), the two bases (UW in 32)
         s1_t00: DFF<Bits<16>>,
         s1_t10: DFF<Bits<16>>,
@@ -58,23 +58,23 @@ crate::block! {
         s2_d1: DFF<SBits<16>>,
         s2_b0: DFF<Bits<32>>,
         s2_b1: DFF<Bits<32>>,
-        // stages 3–5: |d|·u ≤ (2^W − 1)(2^F − 1) < 2^(W+F), with the bases carried beside the multipliers
+        // stages 3–6: |d|·u ≤ (2^W − 1)(2^F − 1) < 2^(W+F), with the bases carried beside the multipliers
         mul0: SmMul<16>,
         mul1: SmMul<16>,
         b0: Delay<Bits<32>, { sm_mul::LATENCY }>,
         b1: Delay<Bits<32>, { sm_mul::LATENCY }>,
         w_base0: Signal<Local, Bits<32>>, // t00·2^F (U(W+F))
         w_base1: Signal<Local, Bits<32>>, // t01·2^F (U(W+F))
-        // stage 6: a, b ∈ 0..(2^W − 1)·2^F (U(W+F) ≤ U17: W ≤ 8, F ≤ 9), exact; the sums in 32 bits before
+        // stage 7: a, b ∈ 0..(2^W − 1)·2^F (U(W+F) ≤ U17: W ≤ 8, F ≤ 9), exact; the sums in 32 bits before
         s6_a: DFF<Bits<17>>,
         s6_b: DFF<Bits<17>>,
         w_sa: Signal<Local, Bits<32>>,
         w_sb: Signal<Local, Bits<32>>,
-        // stage 7: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's
+        // stage 8: b' − a' (S(W+F−D), two's complement in 32 bits; |b' − a'| ≤ (2^W − 1)·2^(F−D) < 2^16 fits SmMul's
         // 16)
         s7_e: DFF<SBits<17>>,
         s7_a: DFF<Bits<17>>,
-        // stages 8–10: |b − a|·v < 2^(W+2F), a carried
+        // stages 9–12: |b − a|·v < 2^(W+2F), a carried
         mul2: SmMul<17>,
         a: Delay<Bits<17>, { sm_mul::LATENCY }>,
         w_ad: Signal<Local, Bits<17>>,   // a >> D (U(W+F−D)), truncated
@@ -82,7 +82,7 @@ crate::block! {
         w_a: Signal<Local, Bits<32>>,    // a'·2^F (U(W+2F−D))
         w_wide: Signal<Local, Bits<32>>, // a'·2^F ± |b' − a'|·v ∈ 0..2^(W+2F−D) (≤ 25 bits), exact
         w_r: Signal<Local, Bits<32>>,    // that + 2^(2F−D−1), < 2^(W+2F−D), exact
-        // stage 11: the top W bits of W + 2F − D: truncation of the rounded sum, so round half up overall; and wide
+        // stage 13: the top W bits of W + 2F − D: truncation of the rounded sum, so round half up overall; and wide
         s11_out: DFF<Bits<W>>,
         s11_wide: DFF<Bits<32>>,
     }
@@ -165,14 +165,14 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         self.s2_d1.d.next = self.s1_t11.q.val() - self.s1_t01.q.val();
         self.s2_b0.d.next = self.s1_b0.q.val();
         self.s2_b1.d.next = self.s1_b1.q.val();
-        // stages 3–5: |d|·u, the bases beside
+        // stages 3–6: |d|·u, the bases beside
         self.mul0.x.next = self.s2_d0.q.val();
         self.mul0.w.next = self.u.q.val();
         self.mul1.x.next = self.s2_d1.q.val();
         self.mul1.w.next = self.u.q.val();
         self.b0.d.next = self.s2_b0.q.val();
         self.b1.d.next = self.s2_b1.q.val();
-        // stage 6: t·2^F ± |d|·u, exact (U(W+F); the result is a weighted mean of two UW values times 2^F)
+        // stage 7: t·2^F ± |d|·u, exact (U(W+F); the result is a weighted mean of two UW values times 2^F)
         self.w_base0.next = self.b0.q.val() << self.shift_f.val();
         self.w_base1.next = self.b1.q.val() << self.shift_f.val();
         if self.mul0.neg.val() {
@@ -188,16 +188,16 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         self.s6_a.d.next = self.w_sa.val().get_bits::<17>(0); // the weighted mean's U(W+F) ≤ U17: exact
         self.s6_b.d.next = self.w_sb.val().get_bits::<17>(0); // the same
 
-        // stage 7: b − a, wrapping in 32 bits to its two's complement
+        // stage 8: b − a, wrapping in 32 bits to its two's complement
         self.w_ad.next = self.s6_a.q.val() >> self.shift_d.val(); // U(W+F) → U(W+F−D), truncated
         self.w_bd.next = self.s6_b.q.val() >> self.shift_d.val(); // the same
         self.s7_e.d.next = self.w_bd.val() - self.w_ad.val(); // S(W+F−D), |b' − a'| < 2^16: wrapping in 17 bits to its two's complement
         self.s7_a.d.next = self.w_ad.val();
-        // stages 8–10: |b − a|·v, a beside
+        // stages 9–12: |b − a|·v, a beside
         self.mul2.x.next = self.s7_e.q.val();
         self.mul2.w.next = self.v.q.val();
         self.a.d.next = self.s7_a.q.val();
-        // stage 11: a'·2^F ± |b' − a'|·v (wide), + 2^(2F−D−1), then bits 2F − D.. (truncation of the rounded sum:
+        // stage 13: a'·2^F ± |b' − a'|·v (wide), + 2^(2F−D−1), then bits 2F − D.. (truncation of the rounded sum:
         // round half up)
         self.w_a.next = bit_cast::<32, 17>(self.a.q.val()) << self.shift_f.val(); // U17 in 32, widening, then · 2^F
         if self.mul2.neg.val() {
