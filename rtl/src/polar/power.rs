@@ -1,9 +1,11 @@
 //! `power`: the power unit [30] of US 6,819,319's FIG. 3, `y = 255·(x/255)^p` with p = pw/4 (U6.2), by a log table,
-//! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 9:
+//! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 10:
 //! 1 inputs registered; 2 L(x) (table); 2b L again; 3 e = pw·L; 4 g = round(e >> 6), n = min(g >> 8, 9),
-//! f = g mod 256; 5 E(f) (table); 5b E again; 6 w = E >> (n + 6), the barrel shift; 7 y = (w + 1) >> 1, which makes
-//! (E + 2^(n+6)) >> (n + 7), and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K placed the
-//! unit at 43.7 MHz.) Stages 2b and 5b compute nothing: on the ECP5 each is a table's DP16KD output register, so
+//! f = g mod 256; 5 E(f) (table); 5b E again; 6 and 6c the barrel shift w = E >> (n + 6) in two steps, by the
+//! shift's multiple of 4, then by the rest (a floor twice is the floor of the whole shift); 7 y = (w + 1) >> 1, which
+//! makes (E + 2^(n+6)) >> (n + 7), and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K
+//! placed the unit at 43.7 MHz; with the shift in one stage, polar_pipeline's critical path on the UP5K was the
+//! shift, 14 ns.) Stages 2b and 5b compute nothing: on the ECP5 each is a table's DP16KD output register, so
 //! neither the product nor the shift waits on a block RAM read (5.6 ns from the clock without it, 0.97 with it;
 //! polar_pipeline's critical path, 9.1 ns, was that read into the multiplier).
 //!
@@ -16,7 +18,7 @@ use crate::prim::q::U8;
 use crate::tables::{ExpTable, LogTable};
 use rust_hdl::prelude::*;
 
-pub const LATENCY: usize = 9;
+pub const LATENCY: usize = 10;
 
 crate::stream_block! {
     pub struct Power<const LF: usize = 12, const EB: usize = 8>: unit("power", LATENCY) {
@@ -51,13 +53,16 @@ crate::stream_block! {
         // stage 5b: E again (a DP16KD's output register on the ECP5)
         s5b_e: DFF<Bits<15>>,
         s5b_sh: DFF<Bits<4>>,
-        // stage 6: E >> (n + 6) ≤ 510 (U9)
+        // stage 6: E >> ((n + 6) & 12) (U15), and the rest of the shift, (n + 6) & 3
+        s6_t: DFF<Bits<15>>,
+        s6_lo: DFF<Bits<4>>,
+        // stage 6c: E >> (n + 6) ≤ 510 (U9)
         s6_w: DFF<Bits<9>>,
         // stage 7
         s7_y: DFF<U8>,
         // x = 0 and pw = 0, beside the stages
-        zero_dly: Delay<Bit, 7>,
-        pw0_dly: Delay<Bit, 7>,
+        zero_dly: Delay<Bit, 8>,
+        pw0_dly: Delay<Bit, 8>,
         valid: Delay<Bit, LATENCY>,
         w_l: Signal<Local, Bits<16>>,
         w_p: Signal<Local, Bits<16>>,
@@ -102,6 +107,8 @@ impl<const LF: usize, const EB: usize> Default for Power<LF, EB> {
             s5_sh: Default::default(),
             s5b_e: Default::default(),
             s5b_sh: Default::default(),
+            s6_t: Default::default(),
+            s6_lo: Default::default(),
             s6_w: Default::default(),
             s7_y: Default::default(),
             zero_dly: Default::default(),
@@ -123,12 +130,12 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s1_x, s1_pw, s2_l, s2_pw, s2b_l, s2b_pw, s3_e, s4_n, s4_f, s5_e, s5_sh, s5b_e, s5b_sh, s6_w,
-            s7_y
+            self, clock, s1_x, s1_pw, s2_l, s2_pw, s2b_l, s2b_pw, s3_e, s4_n, s4_f, s5_e, s5_sh, s5b_e, s5b_sh, s6_t,
+            s6_lo, s6_w, s7_y
         );
         clock!(self, clock, zero_dly, pw0_dly, valid);
         self.valid.d.next = self.valid_in.val();
-        // stage 1 (x = 0 and pw = 0 are flagged from the registered inputs, so their delay lines are 7 long)
+        // stage 1 (x = 0 and pw = 0 are flagged from the registered inputs, so their delay lines are 8 long)
         self.s1_x.d.next = self.x.val();
         self.s1_pw.d.next = self.pw.val();
         self.zero_dly.d.next = !self.s1_x.q.val().any();
@@ -161,8 +168,11 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         // stage 5b
         self.s5b_e.d.next = self.s5_e.q.val();
         self.s5b_sh.d.next = self.s5_sh.q.val();
-        // stage 6: the shift, E >> (n + 6) (truncating; the next stage rounds)
-        self.w_w.next = self.s5b_e.q.val() >> self.s5b_sh.q.val();
+        // stages 6, 6c: the shift, E >> (n + 6) = (E >> ((n + 6) & 12)) >> ((n + 6) & 3) (each truncating, so the
+        // whole too; the next stage rounds)
+        self.s6_t.d.next = self.s5b_e.q.val() >> (self.s5b_sh.q.val() & 12);
+        self.s6_lo.d.next = self.s5b_sh.q.val() & 3;
+        self.w_w.next = self.s6_t.q.val() >> self.s6_lo.q.val();
         self.s6_w.d.next = self.w_w.val().get_bits::<9>(0);
         // stage 7: ((E >> (n + 6)) + 1) >> 1, the last bit rounded half up
         self.w_w1.next = self.s6_w.q.val() + 1; // ≤ 511: no wrap
