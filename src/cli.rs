@@ -224,8 +224,8 @@ enum Cmd {
         #[arg(long)]
         merge: bool,
     },
-    /// The hard cases the seeds warn about, unit by unit: what they ask, what the rtl does (rust-hdl, held to the
-    /// model), pass or fail, as a Markdown table; fails if any row fails
+    /// The hard cases the patents and the paper warn about, unit by unit: what they ask, what the rtl does
+    /// (rust-hdl, held to the model), pass or fail, as a Markdown table; fails if any row fails
     Hardcases,
     /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
     Demo {
@@ -234,7 +234,7 @@ enum Cmd {
         /// image side in pixels (16..=1024)
         #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(16..=1024))]
         size: u32,
-        /// angle scale of the polar path: the seed's (256 = 90°/360°) or the Dreamcast toolchains' (255)
+        /// angle scale of the polar path: US 6,819,319's (256 = 90°/360°) or the Dreamcast toolchains' (255)
         #[arg(long, value_enum, default_value_t = PolarScale::Seed)]
         polar_scale: PolarScale,
         /// skip yosys and nextpnr (the hardware-cost rows; minutes on the first run, cached after)

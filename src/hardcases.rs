@@ -295,7 +295,7 @@ pub fn rows() -> Result<Vec<Row>, String> {
 /// The table, and an error if a row fails.
 pub fn run() -> Result<(), String> {
     let rows = rows()?;
-    println!("| unit | hard case | what the seeds ask | what the rtl does | |");
+    println!("| unit | hard case | what the sources ask | what the rtl does | |");
     println!("| --- | --- | --- | --- | --- |");
     // a cell's own `|` (|x|, |L|) escaped, so that the Markdown table keeps its columns
     let cell = |t: &str| t.replace('|', "\\|");
