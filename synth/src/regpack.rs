@@ -23,7 +23,7 @@ use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
 
 /// The pass's version, part of every ECP5 placement's cache key: a change to what it packs makes new placements.
-pub const VERSION: &str = "ecp5 block registers packed (bumprtl regpack 2)";
+pub const VERSION: &str = "ecp5 block registers packed (bumprtl regpack 3)";
 
 static FABRIC: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
 
@@ -288,6 +288,8 @@ pub fn pack_ecp5(json: &str, top: &str) -> Result<(String, Packing), String> {
             }
             let mut feeds: Vec<(String, Value, String)> = Vec::new();
             let mut ok = true;
+            // the operand's clock, the block's once the operand is packed
+            let mut side_clock = clock;
             for pin in pins(&side.to_string(), 18) {
                 match conn(c, &pin) {
                     None => {}
@@ -299,8 +301,8 @@ pub fn pack_ecp5(json: &str, top: &str) -> Result<(String, Packing), String> {
                             // fabric beside it: in the multiplier's input register it would add the route to the
                             // DSP to the block's clock-to-out (cart_pipeline's normaliser: 123.5 → 114.4 MHz)
                             Some((_, (_, d, _))) if from_block(cells, &nets, &d) => ok = false,
-                            Some((ff, (clk, d, _))) if clock.is_none_or(|c| c == clk) => {
-                                clock = Some(clk);
+                            Some((ff, (clk, d, _))) if side_clock.is_none_or(|c| c == clk) => {
+                                side_clock = Some(clk);
                                 feeds.push((pin, d, ff));
                             }
                             _ => ok = false,
@@ -316,6 +318,7 @@ pub fn pack_ecp5(json: &str, top: &str) -> Result<(String, Packing), String> {
             }
             set_param(cells, &name, &format!("REG_INPUT{side}_CLK"), "CLK0");
             p.mult_inputs += 1;
+            clock = side_clock;
             // a flip-flop that fed nothing but this operand goes
             let gone: HashSet<&String> = feeds.iter().map(|f| &f.2).collect();
             let nets = Nets::of(module);
