@@ -21,6 +21,20 @@ pub struct NormalMap {
     pub n: Vec<[f64; 3]>,
 }
 
+/// A colour map: `side` × `side` texels (the bump map's side), row-major, each channel in 0..=255 (real where the
+/// file was resampled).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ColourMap {
+    pub side: usize,
+    pub rgb: Vec<[f64; 3]>,
+}
+
+/// A colour map and the lines to tell the user about how it was read.
+pub struct LoadedColour {
+    pub map: ColourMap,
+    pub notes: Vec<String>,
+}
+
 /// The largest side the height path's memory (`height_fetch`) holds.
 pub const MAX_SIDE: usize = 256;
 
@@ -227,4 +241,114 @@ pub fn load_normal_map(path: &Path, green_down: bool) -> Result<LoadedNormals, S
         })
         .collect();
     Ok(LoadedNormals { map: NormalMap { side, n: out }, notes })
+}
+
+const JPEG_SIGNATURE: &[u8] = b"\xff\xd8\xff";
+
+/// A colour map (`[material] colour_map`): an 8-bit RGB(A) or grey PNG (alpha ignored, and said so), brought to the
+/// bump map's side × side (each channel bilinear between texel centres) when it is not that already, and said so.
+/// A JPEG is refused in one line: the project reads PNG only.
+pub fn load_colour_map(path: &Path, side: usize) -> Result<LoadedColour, String> {
+    let name = path.display();
+    let bytes = std::fs::read(path).map_err(|e| format!("{name}: cannot read the colour map: {e}"))?;
+    if bytes.starts_with(JPEG_SIGNATURE) {
+        return Err(format!("{name}: a JPEG; colour maps are read from PNG files only (save it as an 8-bit RGB PNG)"));
+    }
+    let img = png_from_bytes(&bytes, &name.to_string(), "colour map")?;
+    if depth(&img) != 8 {
+        return Err(format!(
+            "{name}: a {}-bit colour map where 8 bits are required (the blend's colours are 8 bits a channel); save it as 8-bit",
+            depth(&img)
+        ));
+    }
+    let mut notes = vec![];
+    if img.color().has_alpha() {
+        notes.push(format!("{name}: its alpha channel is ignored"));
+    }
+    let (w, h) = (img.width() as usize, img.height() as usize);
+    let rgb: Vec<[f64; 3]> = img.to_rgb8().pixels().map(|p| p.0.map(f64::from)).collect();
+    if w == side && h == side {
+        return Ok(LoadedColour { map: ColourMap { side, rgb }, notes });
+    }
+    notes.push(format!(
+        "{name}: {w} × {h} resampled (bilinear) to {side} × {side}: the colour map takes the bump map's side"
+    ));
+    let comp: Vec<Vec<f64>> =
+        (0..3).map(|c| resample(&rgb.iter().map(|v| v[c]).collect::<Vec<_>>(), w, h, side)).collect();
+    let rgb = (0..side * side).map(|k| [comp[0][k], comp[1][k], comp[2][k]]).collect();
+    Ok(LoadedColour { map: ColourMap { side, rgb }, notes })
+}
+
+impl ColourMap {
+    /// A built-in colour map of `side` × `side` texels for the tests and the tables that run every pipeline on one
+    /// scene: 4 × 4 tiles of six glazes, each shaded from its top-left corner to its bottom-right (so a filter
+    /// has gradients to blend as well as edges), and one-texel grey joints where the side allows.
+    pub fn tiles(side: usize) -> ColourMap {
+        const GLAZES: [[f64; 3]; 6] = [
+            [176.0, 64.0, 48.0],
+            [40.0, 112.0, 160.0],
+            [224.0, 184.0, 72.0],
+            [64.0, 144.0, 88.0],
+            [136.0, 80.0, 152.0],
+            [232.0, 224.0, 208.0],
+        ];
+        let tile = (side / 4).max(1);
+        let rgb = (0..side * side)
+            .map(|k| {
+                let (x, y) = (k % side, k / side);
+                let (tx, ty, ix, iy) = (x / tile, y / tile, x % tile, y % tile);
+                if tile >= 4 && (ix == 0 || iy == 0) {
+                    return [120.0, 116.0, 110.0];
+                }
+                let g = GLAZES[(tx + 2 * ty + ty / 2) % GLAZES.len()];
+                let shade = 1.0 - 0.35 * (ix + iy) as f64 / (2 * tile) as f64;
+                g.map(|c| (c * shade).round())
+            })
+            .collect();
+        ColourMap { side, rgb }
+    }
+
+    /// The colour at (x, y) in texels (centres at i + ½), bilinear, each axis repeating (`wrap`) or clamped.
+    pub fn at(&self, x: f64, y: f64, wrap: [bool; 2]) -> [f64; 3] {
+        let n = self.side as i64;
+        let (x, y) = (x - 0.5, y - 0.5);
+        let (fx, fy) = (x - x.floor(), y - y.floor());
+        let idx = |c: f64, k: i64, w: bool| {
+            let i = c.floor() as i64 + k;
+            if w {
+                i.rem_euclid(n)
+            } else {
+                i.clamp(0, n - 1)
+            }
+        };
+        let (i0, i1, j0, j1) = (idx(x, 0, wrap[0]), idx(x, 1, wrap[0]), idx(y, 0, wrap[1]), idx(y, 1, wrap[1]));
+        let t = |i: i64, j: i64| self.rgb[(j * n + i) as usize];
+        std::array::from_fn(|c| {
+            vectors::bilinear::ideal_channel(t(i0, j0)[c], t(i1, j0)[c], t(i0, j1)[c], t(i1, j1)[c], fx, fy)
+        })
+    }
+
+    /// The MIP chain, level 0 first, down to 1 × 1: each texel the mean of the four under it.
+    pub fn chain(&self) -> Vec<Vec<[f64; 3]>> {
+        let mut chain = vec![self.rgb.clone()];
+        let mut side = self.side;
+        while side > 1 {
+            let (up, half) = (chain.last().unwrap(), side / 2);
+            let level = (0..half * half)
+                .map(|k| {
+                    let (x, y) = (k % half, k / half);
+                    std::array::from_fn(|c| {
+                        [(0, 0), (1, 0), (0, 1), (1, 1)]
+                            .iter()
+                            .map(|(dx, dy)| up[(2 * y + dy) * side + 2 * x + dx][c])
+                            .sum::<f64>()
+                            / 4.0
+                    })
+                })
+                .collect();
+            chain.push(level);
+            side = half;
+        }
+        chain
+    }
 }

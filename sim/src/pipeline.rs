@@ -283,6 +283,16 @@ impl CartTex {
         CartTex { row, host, filter, loaded: Default::default() }
     }
 
+    /// The scene's colour map where the pipeline holds a colour path (a pipeline with one needs one: `renders`).
+    fn colour_map(&self, scene: &Scene) -> Option<std::sync::Arc<crate::heightmap::ColourMap>> {
+        if !self.row.serves.colour {
+            return None;
+        }
+        let c = scene.colour_map.clone().expect("a colour map's pipeline renders a scene with a colour map");
+        assert_eq!(c.side, scene.tex, "the colour map has the bump map's side");
+        Some(c)
+    }
+
     /// The texel decode of the host-fed pipeline it is built on.
     fn decode(&self) -> Decode {
         match self.host.row().family {
@@ -366,7 +376,11 @@ impl Pipeline for CartTex {
         let model = self.model();
         let at = At::of(model.inputs, self.filter.front().mip());
         let t = scene.tex;
-        assert!(self.row.renders(scene), "{}: a map of side {t}, not a power of two up to 128", self.row.name);
+        assert!(
+            self.row.renders(scene),
+            "{}: a map of side {t} (a power of two up to 128?), a colour map of its side where the row has one",
+            self.row.name
+        );
         let log_side = t.trailing_zeros() as i64;
         let from_host = |h: &[i64]| vectors::cart_tex::from_host(self.host.model(), model.inputs, h);
         // the prologue: every level of the chain, the smallest first, encoded as the host encodes its texels
@@ -386,8 +400,25 @@ impl Pipeline for CartTex {
                 inputs.push(v);
             }
         }
+        // with a colour map, its chain into the second memory likewise: each channel rounded to a byte, then to
+        // RGB565 (`front::pack565`)
+        let colour = self.colour_map(scene);
+        if let Some(c) = &colour {
+            for (k, level) in c.chain().iter().enumerate().rev() {
+                let (m, side) = (log_side - k as i64, t >> k);
+                for (i, rgb) in level.iter().enumerate() {
+                    let texel = front::pack565(rgb.map(|x| x.round().clamp(0.0, 255.0) as u8));
+                    let mut v = blank.clone();
+                    front::put_colour_write(&mut v, &at, m, (i % side) as i64, (i / side) as i64, texel);
+                    inputs.push(v);
+                }
+            }
+        }
         let prologue = inputs.len();
-        let mut loaded = front::Front::new(self.filter.front());
+        let mut loaded = match colour {
+            Some(_) => front::Front::with_colour(self.filter.front()),
+            None => front::Front::new(self.filter.front()),
+        };
         for v in &inputs {
             loaded.step(v, &at);
         }
@@ -396,7 +427,14 @@ impl Pipeline for CartTex {
         }
         let frame = raster::frame(scene, &scene.normals());
         assert_eq!(frame.pixels.len(), host.pixels().len(), "the host's frame and the rasteriser's");
-        for (px, h) in frame.pixels.iter().zip(host.pixels()) {
+        let mut ideal = host.ideal.clone();
+        for (k, (px, h)) in frame.pixels.iter().zip(host.pixels()).enumerate() {
+            // with a colour map the ideal's destination colour is the map's, bilinear in f64 at the sample
+            if let Some(c) = &colour {
+                let dst = c.at(px.pos[0], px.pos[1], px.wrap);
+                let a = ideal[k].shade;
+                ideal[k].rgb = std::array::from_fn(|i| (scene.src[i] as f64 * a + dst[i] * (255.0 - a)) / 255.0);
+            }
             let mut v = from_host(h);
             // a repeating axis taken modulo the map's side (as a rasteriser keeps its coordinates small), so that
             // any repeat count stays inside Sq11.8's ±2,048 texels; a clamped axis lies within the map already
@@ -407,11 +445,12 @@ impl Pipeline for CartTex {
             front::put_bias(&mut v, &at, (scene.lod_bias * 256.0) as i64); // a multiple of 1/256 (the scene file's)
             inputs.push(v);
         }
-        Prepared { size: host.size, inputs, prologue, ideal: host.ideal, at: host.at }
+        Prepared { size: host.size, inputs, prologue, ideal, at: host.at }
     }
     fn trim(&self, mut p: Prepared) -> Prepared {
         use vectors::texture::front::{At, Front};
         let at = At::of(self.model().inputs, self.filter.front().mip());
+        // a colour map's texels are read where the bump map's are: one set of places serves both memories
         let front = Front::new(self.filter.front());
         let read: std::collections::HashSet<_> = p.pixels().iter().flat_map(|v| front.reads(v, &at)).collect();
         let keep: Vec<Vec<i64>> = p.inputs[..p.prologue]
@@ -448,8 +487,9 @@ impl Pipeline for CartTex {
         use vectors::texture::front::At;
         let front = self.loaded.read().ok()?.clone()?;
         let model = self.model();
-        let t = front.read(input, &At::of(model.inputs, self.filter.front().mip()));
-        self.host.normal(&vectors::cart_tex::host_vector(self.host.model(), model.inputs, input, t))
+        let at = At::of(model.inputs, self.filter.front().mip());
+        let (t, c) = (front.read(input, &at), front.read_colour(input, &at));
+        self.host.normal(&vectors::cart_tex::host_vector(self.host.model(), model.inputs, input, t, c))
     }
     fn surface_ideal(&self, scene: &Scene, ideal: &Ideal) -> Option<f64> {
         self.host.surface_ideal(scene, ideal)

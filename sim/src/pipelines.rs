@@ -96,7 +96,9 @@ pub enum Per {
 /// The scene choices that pick a pipeline. The scene reader fills them as the chosen pipeline holds them: the
 /// polar, height and palette pipelines light a surface with one light and filter bilinearly (the palette's
 /// nearest texel is its own method, not a choice), the palette pipelines always hold the gloss unit, the polar and
-/// height ones never; `index_bits` is the palette's (8: s_N ≤ 256, 12: ≤ 4,096) and 0 elsewhere.
+/// height ones never; `index_bits` is the palette's (8: s_N ≤ 256, 12: ≤ 4,096) and 0 elsewhere; `colour`: the
+/// blend's destination colour from a colour map (`[material] colour_map`, on the texture unit) rather than a
+/// constant.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Choices {
     pub encoding: Encoding,
@@ -105,6 +107,7 @@ pub struct Choices {
     pub filter: Filter,
     pub index_bits: u32,
     pub fetch: Fetch,
+    pub colour: bool,
 }
 
 impl Choices {
@@ -120,7 +123,8 @@ impl Choices {
         };
         let per = if self.per == Per::Vertex { "vertex" } else { "surface" };
         let gloss = if self.gloss { "a gloss" } else { "gloss = 0" };
-        format!("encoding {enc}, per = \"{per}\", {gloss}, filter = \"{}\"", self.filter.name())
+        let colour = if self.colour { ", a colour map" } else { "" };
+        format!("encoding {enc}, per = \"{per}\", {gloss}, filter = \"{}\"{colour}", self.filter.name())
     }
 }
 
@@ -184,7 +188,7 @@ impl Row {
 
     /// Whether the pipeline can render the scene as the scene asks: the height and palette pipelines only a quad
     /// (an address unit walking one flat map; a colour table of one light a frame), a Cartesian pipeline without
-    /// the gloss unit only a matte material (C = 0).
+    /// the gloss unit only a matte material (C = 0), a pipeline with a colour path only a scene with a colour map.
     pub fn renders(&self, scene: &Scene) -> bool {
         match self.family {
             Family::Cartesian(_) | Family::CartSurface(_) => self.serves.gloss || scene.conc == 0,
@@ -193,6 +197,7 @@ impl Row {
                 (self.serves.gloss || scene.conc == 0)
                     && scene.tex.is_power_of_two()
                     && scene.tex <= 1 << vectors::tex_fetch::MAX_LOG_SIDE
+                    && (!self.serves.colour || scene.colour_map.as_ref().is_some_and(|c| c.side == scene.tex))
             }
             Family::Polar(_) => true,
             Family::Height | Family::Palette => scene.curved.is_none(),
@@ -216,7 +221,7 @@ pub const fn cartesian(decode: Decode, per: Per, gloss: bool, filter: Filter) ->
         Decode::Seed => Encoding::Seed,
         Decode::HemiOct => Encoding::HemiOct,
     };
-    Choices { encoding, per, gloss, filter, index_bits: 0, fetch: Fetch::Host }
+    Choices { encoding, per, gloss, filter, index_bits: 0, fetch: Fetch::Host, colour: false }
 }
 
 /// A Cartesian pipeline with one light per surface: its variant's choices.
@@ -225,7 +230,15 @@ pub const fn surface(v: Variant) -> Choices {
 }
 
 const fn one_light(encoding: Encoding, gloss: bool, index_bits: u32) -> Choices {
-    Choices { encoding, per: Per::Surface, gloss, filter: Filter::Bilinear, index_bits, fetch: Fetch::Host }
+    Choices {
+        encoding,
+        per: Per::Surface,
+        gloss,
+        filter: Filter::Bilinear,
+        index_bits,
+        fetch: Fetch::Host,
+        colour: false,
+    }
 }
 
 /// The polar pipeline's choices at this angle scale.
@@ -273,6 +286,19 @@ const fn tex(
 ) -> Row {
     let serves = Choices { filter, fetch: Fetch::Unit, ..host_serves };
     Row { name, family: Family::CartTex { host, filter }, label, units, serves }
+}
+
+/// The same with a colour map: the blend's destination colour from the front's second memory.
+const fn tex_colour(
+    name: &'static str,
+    label: &'static str,
+    host: &'static str,
+    host_serves: Choices,
+    filter: Filter,
+    units: &'static [&'static str],
+) -> Row {
+    let row = tex(name, label, host, host_serves, filter, units);
+    Row { serves: Choices { colour: true, ..row.serves }, ..row }
 }
 
 const S: Decode = Decode::Seed;
@@ -448,6 +474,22 @@ pub static PIPELINES: &[Row] = &[
         surface(v(H, false, false)),
         Filter::Nearest,
         &["tex_addr", "tex_fetch", "cart_decode_hemi_oct", "normalise", "dot3", "blend"],
+    ),
+    tex_colour(
+        "cart_tex_bilinear_colour",
+        "Cartesian, texture unit, bilinear, colour map",
+        "cart_pipeline",
+        cartesian(S, Per::Vertex, true, Filter::Bilinear),
+        Filter::Bilinear,
+        &["tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
+    ),
+    tex_colour(
+        "cart_tex_bilinear_surface_colour",
+        "Cartesian, one light, texture unit, bilinear, colour map",
+        "cart_surface",
+        surface(v(S, false, true)),
+        Filter::Bilinear,
+        &["tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "dot3", "gloss", "blend"],
     ),
     Row {
         name: "polar_pipeline",

@@ -37,6 +37,9 @@ pub struct Scene {
     /// texel; None: the surface's own (the quad clamps, a sphere repeats round u and clamps at its poles, a torus
     /// repeats both ways).
     pub wrap: Option<[bool; 2]>,
+    /// A colour map (`[material] colour_map`), at the bump map's side: the blend's destination colour per pixel,
+    /// in place of `dst`.
+    pub colour_map: Option<std::sync::Arc<crate::heightmap::ColourMap>>,
 }
 
 /// A curved surface, how finely it is cut, how it is seen and how often the map repeats round it.
@@ -67,6 +70,7 @@ impl Default for Scene {
             curved: None,
             lod_bias: 0.0,
             wrap: None,
+            colour_map: None,
         }
     }
 }

@@ -40,6 +40,8 @@
 //! gloss = 96                      # C, 0 to 255 (Cartesian and palette pipelines)
 //! src = [236, 196, 140]           # the blend's colours, lit and unlit
 //! dst = [16, 20, 36]
+//! # colour_map = "maps/tiles.png" # seed, hemi_oct on the texture unit: the destination colour per pixel from an
+//!                                 # 8-bit RGB(A) PNG (in place of dst), filtered with the bump map
 //! # power = 4.0                   # polar: p, 0 to 63.75 in quarters
 //! # weight = 1.0                  # polar: h, 0 to 1
 //! ```
@@ -348,6 +350,7 @@ pub struct MaterialSpec {
     pub gloss: Option<Spanned<Byte>>,
     pub src: Option<[Byte; 3]>,
     pub dst: Option<[Byte; 3]>,
+    pub colour_map: Option<Spanned<PathBuf>>,
     pub power: Option<Spanned<Power>>,
     pub weight: Option<Spanned<Weight>>,
 }
@@ -663,7 +666,14 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
         filter: Filter::Bilinear,
         index_bits,
         fetch: Fetch::Host,
+        colour: false,
     };
+    if !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
+        unused(
+            mat.colour_map.as_ref().map(|c| c.span()),
+            "[material] colour_map: only the Cartesian pipelines (seed, hemi_oct) on the texture unit have a colour map's memory",
+        )?;
+    }
     let choices = match encoding {
         Encoding::Seed | Encoding::HemiOct => {
             no(power, "power", "Cartesian")?;
@@ -671,12 +681,24 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             // a gloss unit only where the material has gloss (C = 0 gives P = X)
             let gloss = mat.gloss.as_ref().map_or(Scene::default().conc, |g| g.get_ref().0) != 0;
             let per = per.unwrap_or(Per::Vertex);
-            let host = Choices { encoding, per, gloss, filter, index_bits: 0, fetch: Fetch::Host };
-            let unit = Choices { fetch: Fetch::Unit, ..host };
+            let host = Choices { encoding, per, gloss, filter, index_bits: 0, fetch: Fetch::Host, colour: false };
+            let colour = mat.colour_map.as_ref().map(|c| c.span());
+            let unit = Choices { fetch: Fetch::Unit, colour: colour.is_some(), ..host };
             // the texture unit's memory holds a map of side 2^0 … 2^7 and its chain
             let side = scene.tex;
             let fits = side.is_power_of_two() && side <= 1 << vectors::tex_fetch::MAX_LOG_SIDE;
             let on_unit = crate::pipelines::choose(&unit).is_some();
+            if let Some(c) = &colour {
+                let why = match fetch {
+                    Some(Fetch::Host) => Some("the host-fed pipelines (fetch = \"host\") take one destination colour; the texture unit holds the colour map".to_string()),
+                    _ if !on_unit => Some(format!("no pipeline on the texture unit with a colour map serves {}; the colour map's pipelines filter bilinearly with a gloss unit, lights per vertex or per surface, seed texels", unit.describe())),
+                    _ if !fits => Some(format!("the texture unit's memory holds maps of side 1, 2, 4 … 128; this bump map's side is {side}")),
+                    _ => None,
+                };
+                if let Some(why) = why {
+                    return Err(at.err(c.clone(), format!("[material] colour_map: {why}")));
+                }
+            }
             match fetch {
                 Some(Fetch::Unit) if !on_unit => {
                     return Err(at.err(
@@ -738,6 +760,18 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     }
     if let Some(c) = mat.dst {
         scene.dst = c.map(|b| b.0);
+    }
+    if let Some(p) = &mat.colour_map {
+        if mat.dst.is_some() {
+            return Err(at.err(
+                p.span(),
+                "[material] colour_map: the colour map gives the blend's destination colour; leave dst out",
+            ));
+        }
+        let loaded = crate::heightmap::load_colour_map(&dir.join(p.get_ref()), scene.tex)
+            .map_err(|e| at.err(p.span(), format!("[material] colour_map: {e}")))?;
+        notes.extend(loaded.notes);
+        scene.colour_map = Some(Arc::new(loaded.map));
     }
     scene.per_surface = pipeline.serves.per == Per::Surface;
     let name = f.name.unwrap_or_else(|| at.file.to_string());

@@ -205,6 +205,25 @@ pub static UNITS: &[Unit] = &[
         .waiving(&[("filter$0$wide", "as in cart_tex_bilinear"), ("filter$1$wide", "as filter$0$wide")]),
     unit!(map: &vectors::cart_tex::bilinear_surface_matte::MODEL, rtl::cart_tex::CartTexBilinearSurfaceMatte)
         .waiving(&[("filter$0$wide", "as in cart_tex_bilinear"), ("filter$1$wide", "as filter$0$wide")]),
+    unit!(map: &vectors::cart_tex::bilinear_colour::MODEL, rtl::cart_tex::CartTexBilinearColour).waiving(&[
+        ("filter$0$wide", "as in cart_tex_bilinear"),
+        ("filter$1$wide", "as filter$0$wide"),
+        ("colour_filter$0$wide", "as filter$0$wide: the front reads each colour unit's rounded byte"),
+        ("colour_filter$1$wide", "as colour_filter$0$wide"),
+        ("colour_filter$2$wide", "as colour_filter$0$wide"),
+        ("colour_fetch$valid_out", "the two fetches run in step: the valid chain follows the bump map's"),
+        ("light$valid_out", "as in cart_pipeline"),
+        ("light_norm$valid_out", "as in cart_pipeline"),
+    ]),
+    unit!(map: &vectors::cart_tex::bilinear_surface_colour::MODEL, rtl::cart_tex::CartTexBilinearSurfaceColour)
+        .waiving(&[
+            ("filter$0$wide", "as in cart_tex_bilinear"),
+            ("filter$1$wide", "as filter$0$wide"),
+            ("colour_filter$0$wide", "as in cart_tex_bilinear_colour"),
+            ("colour_filter$1$wide", "as colour_filter$0$wide"),
+            ("colour_filter$2$wide", "as colour_filter$0$wide"),
+            ("colour_fetch$valid_out", "as in cart_tex_bilinear_colour"),
+        ]),
     unit!(map: &vectors::cart_tex::nearest_surface_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceMatte).waiving(&[
         ("addr$ublend", "as in cart_tex_nearest_matte"),
         ("addr$vblend", "as addr$ublend"),

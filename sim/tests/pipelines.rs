@@ -18,6 +18,9 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("hemi_oct", true, "nearest", false),
 ];
 
+/// The pipelines with a colour map, likewise: `cart_tex_<filter>[_surface]_colour`.
+const WITH_COLOUR: &[(&str, bool, &str, bool)] = &[("seed", false, "bilinear", true), ("seed", true, "bilinear", true)];
+
 /// The pipeline a scene's choices name, by the project's naming of its rtl tops; None where the reader refuses.
 fn expected(
     encoding: &str,
@@ -26,11 +29,17 @@ fn expected(
     gloss: bool,
     palette: Option<usize>,
     fetch: Option<&str>,
+    colour: bool,
 ) -> Option<String> {
     let hemi = if encoding == "hemi_oct" { "_hemi_oct" } else { "" };
     let matte = if gloss { "" } else { "_matte" };
     let on_unit = ON_THE_UNIT.contains(&(encoding, per_surface, filter, gloss));
     let cartesian = matches!(encoding, "seed" | "hemi_oct");
+    if colour {
+        let surface = if per_surface { "_surface" } else { "" };
+        let served = WITH_COLOUR.contains(&(encoding, per_surface, filter, gloss)) && fetch != Some("host");
+        return served.then(|| format!("cart_tex_{filter}{surface}_colour"));
+    }
     if (!cartesian && (filter != "bilinear" || fetch.is_some())) || (fetch == Some("unit") && !on_unit) {
         return None;
     }
@@ -60,6 +69,10 @@ fn expected(
 fn every_scene_the_reader_takes_has_exactly_one_pipeline_and_every_pipeline_a_scene() {
     let mut reached = BTreeSet::new();
     let mut taken = 0;
+    let dir = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/test-files/pipelines");
+    std::fs::create_dir_all(&dir).unwrap();
+    let tiles = sim::heightmap::ColourMap::tiles(16);
+    sim::render::write_png(&dir.join("tiles.png"), 16, |k| tiles.rgb[k].map(|c| c as u8)).unwrap();
     for encoding in ["seed", "hemi_oct", "polar", "polar_dc255", "heights", "palette"] {
         for per in [None, Some("vertex"), Some("surface")] {
             for gloss in [None, Some(0), Some(96)] {
@@ -68,7 +81,7 @@ fn every_scene_the_reader_takes_has_exactly_one_pipeline_and_every_pipeline_a_sc
                         .into_iter()
                         .flat_map(|p| [(p, None), (p, Some("unit")), (p, Some("host"))])
                     {
-                        for shape in ["quad", "torus"] {
+                        for (shape, colour) in ["quad", "torus"].into_iter().flat_map(|s| [(s, false), (s, true)]) {
                             let mut t = format!("size = 32\n[surface]\nshape = \"{shape}\"\n[bump]\nsource = \"procedural\"\ntexels = 16\nencoding = \"{encoding}\"\n");
                             if let Some(f) = filter {
                                 t += &format!("filter = \"{f}\"\n");
@@ -82,10 +95,16 @@ fn every_scene_the_reader_takes_has_exactly_one_pipeline_and_every_pipeline_a_sc
                             if let Some(p) = per {
                                 t += &format!("[light]\nper = \"{p}\"\n");
                             }
-                            if let Some(g) = gloss {
-                                t += &format!("[material]\ngloss = {g}\n");
+                            if gloss.is_some() || colour {
+                                t += "[material]\n";
                             }
-                            let Ok(spec) = sim::scene_file::parse(&t, "s.toml", std::path::Path::new(".")) else {
+                            if let Some(g) = gloss {
+                                t += &format!("gloss = {g}\n");
+                            }
+                            if colour {
+                                t += "colour_map = \"tiles.png\"\n";
+                            }
+                            let Ok(spec) = sim::scene_file::parse(&t, "s.toml", &dir) else {
                                 continue;
                             };
                             taken += 1;
@@ -96,6 +115,7 @@ fn every_scene_the_reader_takes_has_exactly_one_pipeline_and_every_pipeline_a_sc
                                 gloss.unwrap_or(96) != 0,
                                 palette,
                                 fetch,
+                                colour,
                             );
                             let want = want.unwrap_or_else(|| {
                                 panic!("{t}: taken as {}, but no pipeline should serve it", spec.pipeline.name)
@@ -134,11 +154,13 @@ fn no_combination_of_choices_has_two_pipelines() {
                 for filter in [Filter::Bilinear, Filter::Nearest, Filter::NearestMip, Filter::Trilinear] {
                     for (index_bits, fetch) in [0, 8, 12].into_iter().flat_map(|b| [(b, Fetch::Unit), (b, Fetch::Host)])
                     {
-                        let c = Choices { encoding, per, gloss, filter, index_bits, fetch };
-                        let n = PIPELINES.iter().filter(|r| r.serves == c).count();
-                        assert!(n <= 1, "{c:?}: {n} pipelines");
-                        assert_eq!(pipelines::choose(&c).is_some(), n == 1);
-                        served += n;
+                        for colour in [false, true] {
+                            let c = Choices { encoding, per, gloss, filter, index_bits, fetch, colour };
+                            let n = PIPELINES.iter().filter(|r| r.serves == c).count();
+                            assert!(n <= 1, "{c:?}: {n} pipelines");
+                            assert_eq!(pipelines::choose(&c).is_some(), n == 1);
+                            served += n;
+                        }
                     }
                 }
             }
@@ -232,7 +254,10 @@ mod built {
         for p in all() {
             // a pipeline without a gloss unit is built for C = 0
             let conc = if p.units().contains(&"gloss") { Scene::default().conc } else { 0 };
-            let scene = Scene { size: 8, conc, ..Scene::default() };
+            let mut scene = Scene { size: 8, conc, ..Scene::default() };
+            if p.row().serves.colour {
+                scene.colour_map = Some(std::sync::Arc::new(sim::heightmap::ColourMap::tiles(scene.tex)));
+            }
             let prep = p.prepare(&scene);
             assert_eq!((prep.pixels().len(), prep.ideal.len()), (64, 64));
             for x in &prep.inputs {

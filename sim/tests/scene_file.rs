@@ -588,3 +588,55 @@ fn the_wrap_is_one_word_or_one_each_axis_and_not_the_height_pipelines() {
     refused(&with("wrap = 3\n"), "s.toml:4:8:", &["\"repeat\" or \"clamp\""]);
     refused(&with("encoding = \"heights\"\nwrap = \"clamp\"\n"), "s.toml:5:8:", &["height pipeline", "clamps"]);
 }
+
+/// A scene with a procedural 16-texel map and a colour map, the light and material lines after `bump`.
+fn with_colour(colour: &Path, bump: &str, rest: &str) -> String {
+    format!(
+        "size = 32\n[bump]\nsource = \"procedural\"\ntexels = 16\n{bump}[material]\ncolour_map = \"{}\"\n{rest}",
+        colour.display()
+    )
+}
+
+#[test]
+fn a_colour_map_picks_the_colour_pipeline_and_bad_ones_are_one_line_at_the_field() {
+    let dir = test_dir();
+    // 8-bit RGB at the bump map's side: taken as it is, on the colour pipelines (per vertex, per surface)
+    let rgb = png(
+        "colour16.png",
+        image::RgbImage::from_fn(16, 16, |x, y| image::Rgb([x as u8 * 16, y as u8 * 16, 7])).into(),
+    );
+    let s = parse(&with_colour(&rgb, "", "")).unwrap();
+    assert_eq!(s.pipeline.name, "cart_tex_bilinear_colour");
+    let c = s.scene.colour_map.as_ref().unwrap();
+    assert_eq!((c.side, c.rgb[17]), (16, [16.0, 16.0, 7.0]));
+    assert!(s.notes.is_empty(), "{:?}", s.notes);
+    let s = parse(&with_colour(&rgb, "", "[light]\nper = \"surface\"\n")).unwrap();
+    assert_eq!(s.pipeline.name, "cart_tex_bilinear_surface_colour");
+    // RGBA and another size: its alpha dropped and resampled to the bump map's side, each said so
+    let rgba = png("colour-rgba.png", image::RgbaImage::from_fn(40, 24, |x, _| image::Rgba([x as u8, 9, 9, 3])).into());
+    let s = parse(&with_colour(&rgba, "", "")).unwrap();
+    assert_eq!(s.scene.colour_map.as_ref().unwrap().side, 16);
+    assert!(s.notes.iter().any(|n| n.contains("alpha")) && s.notes.iter().any(|n| n.contains("40 × 24 resampled")));
+    // the colour line's failures: at the field (line 6), naming the file
+    let at = "s.toml:6:14:";
+    refused(&with_colour(&dir.join("absent.png"), "", ""), at, &["colour_map", "absent.png", "cannot read"]);
+    let jpeg = dir.join("photo.jpg");
+    std::fs::write(&jpeg, [0xff, 0xd8, 0xff, 0xe0, 0, 16, b'J', b'F', b'I', b'F']).unwrap();
+    refused(&with_colour(&jpeg, "", ""), at, &["photo.jpg", "a JPEG", "PNG"]);
+    let rgb16 = image::ImageBuffer::<image::Rgb<u16>, _>::from_fn(4, 4, |_, _| image::Rgb([1, 2, 3]));
+    let p16 = png("colour16bit.png", image::DynamicImage::ImageRgb16(rgb16));
+    refused(&with_colour(&p16, "", ""), at, &["colour16bit.png", "16-bit", "8 bits are required"]);
+    // with dst beside it, on a family or a filter with no colour path, host-fed
+    refused(&with_colour(&rgb, "", "dst = [1, 2, 3]\n"), at, &["colour_map", "leave dst out"]);
+    let at = "s.toml:7:14:"; // one [bump] line more
+    refused(&with_colour(&rgb, "encoding = \"polar\"\n", "[light]\nper = \"surface\"\n"), at, &["only the Cartesian"]);
+    refused(
+        &with_colour(&rgb, "filter = \"trilinear\"\n", "gloss = 0\n"),
+        at,
+        &["no pipeline on the texture unit with a colour map"],
+    );
+    refused(&with_colour(&rgb, "fetch = \"host\"\n", ""), at, &["host-fed"]);
+    // a bump map the memory does not hold (256 texels)
+    let big = "size = 32\n[bump]\nsource = \"procedural\"\ntexels = 256\n[material]\ncolour_map = \"X\"\n";
+    refused(&big.replace('X', &rgb.display().to_string()), "s.toml:6:14:", &["side 1, 2, 4 … 128", "256"]);
+}

@@ -7,7 +7,11 @@ use sim::scene::Scene;
 /// A scene the pipeline renders (C = 0 for one without the gloss unit), prepared.
 fn prepared(p: &dyn Pipeline, size: usize) -> sim::prepared::Prepared {
     let conc = if p.units().contains(&"gloss") { Scene::default().conc } else { 0 };
-    p.prepare(&Scene { size, conc, ..Scene::default() })
+    let mut scene = Scene { size, conc, ..Scene::default() };
+    if p.row().serves.colour {
+        scene.colour_map = Some(std::sync::Arc::new(sim::heightmap::ColourMap::tiles(scene.tex)));
+    }
+    p.prepare(&scene)
 }
 
 #[test]

@@ -3,15 +3,16 @@
 //! loaded first); random streams through rust-hdl, and through Verilator after the hard cases have loaded the chain
 //! they read.
 use rtl::cart_tex::{
-    CartTexBilinear, CartTexBilinearHemiOct, CartTexBilinearMatte, CartTexBilinearSurface, CartTexBilinearSurfaceMatte,
-    CartTexNearestMatte, CartTexNearestMipMatte, CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte,
-    CartTexTrilinearMatte,
+    CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearMatte, CartTexBilinearSurface,
+    CartTexBilinearSurfaceColour, CartTexBilinearSurfaceMatte, CartTexNearestMatte, CartTexNearestMipMatte,
+    CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte, CartTexTrilinearMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::cart_tex::{
-    bilinear, bilinear_hemi_oct, bilinear_matte, bilinear_surface, bilinear_surface_matte, nearest_matte,
-    nearest_mip_matte, nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear_matte,
+    bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_matte, bilinear_surface, bilinear_surface_colour,
+    bilinear_surface_matte, nearest_matte, nearest_mip_matte, nearest_surface_hemi_oct_matte, nearest_surface_matte,
+    trilinear_matte,
 };
 use vectors::UnitModel;
 
@@ -24,6 +25,8 @@ unit_tests!(cart_tex_bilinear_hemi_oct, CartTexBilinearHemiOct, bilinear_hemi_oc
 unit_tests!(cart_tex_bilinear_surface, CartTexBilinearSurface, bilinear_surface::MODEL);
 unit_tests!(cart_tex_bilinear_surface_matte, CartTexBilinearSurfaceMatte, bilinear_surface_matte::MODEL);
 unit_tests!(cart_tex_nearest_surface_matte, CartTexNearestSurfaceMatte, nearest_surface_matte::MODEL);
+unit_tests!(cart_tex_bilinear_colour, CartTexBilinearColour, bilinear_colour::MODEL);
+unit_tests!(cart_tex_bilinear_surface_colour, CartTexBilinearSurfaceColour, bilinear_surface_colour::MODEL);
 unit_tests!(
     cart_tex_nearest_surface_hemi_oct_matte,
     CartTexNearestSurfaceHemiOctMatte,
@@ -91,4 +94,14 @@ fn cart_tex_nearest_surface_matte_streams() {
 #[test]
 fn cart_tex_nearest_surface_hemi_oct_matte_streams() {
     three_streams::<CartTexNearestSurfaceHemiOctMatte>(&nearest_surface_hemi_oct_matte::MODEL, 32);
+}
+
+#[test]
+fn cart_tex_bilinear_colour_streams() {
+    three_streams::<CartTexBilinearColour>(&bilinear_colour::MODEL, 33);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_colour_streams() {
+    three_streams::<CartTexBilinearSurfaceColour>(&bilinear_surface_colour::MODEL, 34);
 }

@@ -108,3 +108,27 @@ cartesian_pipeline! {
     texture: { block: TexNearest, module: nearest, u: u, v: v },
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }
+
+// the blend's destination colour from a colour map in the front's second memory (RGB565), filtered on the bump
+// texel's footprint and blend factors; the mode and lit colour wait for it beside the front (22 clocks)
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_colour,
+    block: CartTexBilinearColour,
+    unit: "cart_tex_bilinear_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_surface_colour,
+    block: CartTexBilinearSurfaceColour,
+    unit: "cart_tex_bilinear_surface_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}

@@ -12,12 +12,22 @@
 //!   interpolated per pixel by `light_iter`, waiting for the bump path in three DFF chains, then normalised;
 //! - `surface:` one light per surface, already a unit vector (Sq1.10), packed into one 36-bit word that waits in
 //!   block RAM for the bump path (no light_iter, no light normaliser);
-//! - `gloss:` the gloss unit, C's port and C's block-RAM delay line.
+//! - `gloss:` the gloss unit, C's port and C's block-RAM delay line;
+//! - `colour:` (first, and with a front that has a colour map) the blend's destination colour from the front's
+//!   colour map in place of the `dst_r`, `dst_g`, `dst_b` ports: the memory select's port, and the delay line that
+//!   holds the pixel's mode and lit colour until the front has read its colour; the blend's own line then holds
+//!   the three colours for the rest of the way.
 //!
-//! `cart_pipeline.rs` and `cart_surface.rs` invoke it for their blocks.
+//! `cart_pipeline.rs`, `cart_surface.rs` and `cart_tex.rs` invoke it for their blocks.
 
 macro_rules! cartesian_pipeline {
+    (colour: { $($c:tt)* }, $($rest:tt)*) => {
+        cartesian_pipeline! { @spine colour: { $($c)* }, $($rest)* }
+    };
     (
+        @spine
+        $(dst: { $dr:ident, $dg:ident, $db:ident },)?
+        $(colour: { select: $wsel:ident, delay: $sd:ident },)?
         module: $m:ident,
         block: $t:ident,
         unit: $name:literal,
@@ -36,7 +46,7 @@ use super::*; // the decode the invocation names
 #[allow(unused_imports)] // each variant holds some of these
 use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
 #[allow(unused_imports)]
-use crate::texture::front::{TexBilinear, TexNearest, TexNearestMip, TexTrilinear};
+use crate::texture::front::{TexBilinear, TexBilinearColour, TexNearest, TexNearestMip, TexTrilinear};
 #[allow(unused_imports)]
 use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq11_8, Sq3_8, Sq7_2, Sq8_8, Sq9_0, U16, U8}, ram_delay::RamDelay}};
 
@@ -50,11 +60,23 @@ pub const AT_BLEND: usize = AT_GLOSS $(+ crate::gloss::LATENCY + 0 * stringify!(
 pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY;
 $(#[doc = concat!("Cycles the light from ", stringify!($li), " waits for the bump path before its normaliser.")]
 pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY;)?
+/// Cycles from the pipeline's input to the blend's colour line: 0, or with a colour map the front's latency (the
+/// pixel's mode and lit colour wait that long beside the front).
+pub const AT_COLOUR: usize = 0 $(+ AT_NORMALISE - crate::$dec_mod::LATENCY + 0 * stringify!($sd).len())?;
+/// The map stream's ports: the front's write port, with a colour map its memory select too.
+#[allow(dead_code)] // a pipeline without the texture unit has no map stream
+const MAP_PORTS: &[&str] = {
+    #[allow(unused_variables)] // a colour map's pipeline shadows it
+    let m = crate::texture::tex_fetch::MAP;
+    $(let _ = stringify!($wsel);
+    let m = crate::texture::front::COLOUR_MAP;)?
+    m
+};
 
 crate::stream_block! {
     #[derive(Default)]
     // with the texture unit, its memory's write port is the map stream (the block only ties the group to it)
-    pub struct $t: unit($name, LATENCY $(, map = { let _ = stringify!($pu); crate::texture::tex_fetch::MAP })?) {
+    pub struct $t: unit($name, LATENCY $(, map = { let _ = stringify!($pu); MAP_PORTS })?) {
         in {
             $(t00_x: U8,
             t00_z: U8,
@@ -78,6 +100,7 @@ crate::stream_block! {
             wx: U8,
             wy: U8,
             wdata: U16,)?
+            $($wsel: Bits<1>,)?
             $($($dd: Sq8_8,)* $lb: Sq3_8,)?
             $(l0_x: S8,
             l0_y: S8,
@@ -98,9 +121,9 @@ crate::stream_block! {
             src_r: U8,
             src_g: U8,
             src_b: U8,
-            dst_r: U8,
-            dst_g: U8,
-            dst_b: U8,
+            $($dr: U8,
+            $dg: U8,
+            $db: U8,)?
         }
         out {
             p: Bits<10>,
@@ -121,7 +144,9 @@ crate::stream_block! {
         $cd: RamDelay<8, 6, AT_GLOSS>,)?
         $($lsd: RamDelay<36, $lab, AT_DOT>, // (l_x, l_y, l_z) packed low to high
         $lw: Signal<Local, Bits<36>>,)?
-        pub blend: DelayedBlend<6, AT_BLEND>,
+        $($sd: RamDelay<25, 6, AT_COLOUR>, // (src_r, src_g, src_b, mode) packed low to high
+        colour_word: Signal<Local, Bits<25>>,)?
+        pub blend: DelayedBlend<6, { AT_BLEND - AT_COLOUR }>,
         p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
         bump_x10: Signal<Local, Sq9_0>,
         bump_z10: Signal<Local, Sq9_0>,
@@ -176,6 +201,7 @@ impl Logic for $t {
         self.decode.$tu.next = self.texture.lo.val();
         self.decode.$tv.next = self.texture.hi.val();)?
         $($(self.texture.$dd.next = self.$dd.val();)* self.texture.lod_bias.next = self.$lb.val();)?
+        $(self.texture.wcolour.next = self.$wsel.val();)? // the memory a write goes to
         // normalise the bump: INT9 → S10 by sign extension, UINT8 → S10 by zero extension
         self.bump_x10.next = bit_cast::<10, 9>(self.decode.bump_x.val());
         if self.decode.bump_x.val().get_bit(8) {
@@ -240,14 +266,28 @@ impl Logic for $t {
         self.$gl.x.next = self.dot.x.val();
         self.shade.next = self.$gl.p.val();
         self.shade_valid.next = self.$gl.valid_out.val();)?
-        // blend: α = P >> 2 (U10 → U8, truncate)
-        self.blend.mode.next = self.mode.val();
+        // blend: α = P >> 2 (U10 → U8, truncate); the colours and mode as they come
+        $(self.blend.mode.next = self.mode.val();
         self.blend.src_r.next = self.src_r.val();
         self.blend.src_g.next = self.src_g.val();
         self.blend.src_b.next = self.src_b.val();
-        self.blend.dst_r.next = self.dst_r.val();
-        self.blend.dst_g.next = self.dst_g.val();
-        self.blend.dst_b.next = self.dst_b.val();
+        self.blend.dst_r.next = self.$dr.val();
+        self.blend.dst_g.next = self.$dg.val();
+        self.blend.dst_b.next = self.$db.val();)?
+        // or the mode and lit colour after waiting for the front, the destination the front's colour (bit copies)
+        $(self.$sd.clock.next = self.clock.val();
+        self.colour_word.next = bit_cast::<25, 8>(self.src_r.val());
+        self.colour_word.next = self.colour_word.val() | (bit_cast::<25, 8>(self.src_g.val()) << 8);
+        self.colour_word.next = self.colour_word.val() | (bit_cast::<25, 8>(self.src_b.val()) << 16);
+        self.colour_word.next = self.colour_word.val() | (bit_cast::<25, 1>(self.mode.val()) << 24);
+        self.$sd.d.next = self.colour_word.val();
+        self.blend.src_r.next = self.$sd.q.val().get_bits::<8>(0);
+        self.blend.src_g.next = self.$sd.q.val().get_bits::<8>(8);
+        self.blend.src_b.next = self.$sd.q.val().get_bits::<8>(16);
+        self.blend.mode.next = self.$sd.q.val().get_bits::<1>(24);
+        self.blend.dst_r.next = self.texture.c_r.val();
+        self.blend.dst_g.next = self.texture.c_g.val();
+        self.blend.dst_b.next = self.texture.c_b.val();)?
         self.blend.valid_in.next = self.shade_valid.val();
         self.blend.alpha.next = self.shade.val().get_bits::<8>(2);
         self.p_dly.d.next = self.shade.val();
@@ -261,6 +301,9 @@ impl Logic for $t {
 
 }
 pub use $m::$t;
+    };
+    ($($rest:tt)*) => {
+        cartesian_pipeline! { @spine dst: { dst_r, dst_g, dst_b }, $($rest)* }
     };
 }
 

@@ -8,13 +8,50 @@
 //!   `level` for ⌊λ⌋); without it the front reads level 0;
 //! - `filter:` the two bilinear units (the low byte and the high byte), the blend factors' delay line beside the
 //!   fetch, and their valid chain; without it the address unit takes the nearest texel (`linear` = 0) and the
-//!   texel leaves as it is read.
+//!   texel leaves as it is read;
+//! - `colour:` (with `filter:`) the colour map: a second fetch holding the colour map's memory (RGB565 texels, the
+//!   same layout), read at the same footprint, each texel's channels widened to 8 bits by repeating their top bits,
+//!   and three more bilinear units (R, G, B) on the same blend factors; the port `wcolour` beside the write port
+//!   picks the memory a write goes to, its delay line keeping it beside the write; outputs `c_r`, `c_g`, `c_b`,
+//!   in step with `lo` and `hi` (`vectors::front`). A write leaves as zeros on every output, as on a front without
+//!   one: the fetch a write does not go to reads as for a read, so its path's outputs are cleared at the end.
 //!
 //! Ports (every front): the position u, v (Sq11.8, texels of level 0), the map's side log2 and the two wrap modes
 //! (per frame), and the memory's write port (we, w_log2, wx, wy, wdata: `tex_fetch`'s). Outputs: `lo` and `hi`, the
 //! texel's two bytes (filtered, or the nearest texel's). A write is a vector of its own, in order with the reads:
 //! its delay line keeps it beside the position, so it reaches the fetch with its own vector and a read sees every
 //! write before it (`vectors::front`); it leaves as a texel of zero.
+
+/// A colour front's map stream: the write port and the memory select (`vectors::front::COLOUR`).
+pub const COLOUR_MAP: &[&str] = &["we", "wcolour", "w_log2", "wx", "wy", "wdata"];
+
+use crate::prim::q::U16;
+use rust_hdl::prelude::*;
+
+crate::block! {
+    /// An RGB565 texel widened to three bytes, R in bits 0..7, G in 8..15, B in 16..23 of `c`, each channel's top
+    /// bits repeated below it: `(r << 3) | (r >> 2)`, `(g << 2) | (g >> 4)`, `(b << 3) | (b >> 2)`
+    /// (`vectors::front::expand565`). Wiring only.
+    #[derive(Default)]
+    pub struct Rgb565 {
+        pub t: Signal<In, U16>,
+        pub c: Signal<Out, Bits<24>>,
+    }
+}
+
+impl Logic for Rgb565 {
+    #[hdl_gen]
+    fn update(&mut self) {
+        // bit copies throughout, each field of t into its place (r << 3, g << 2, b << 3) and its top bits again
+        // below it (r >> 2, g >> 4, b >> 2)
+        self.c.next = bit_cast::<24, 5>(self.t.val().get_bits::<5>(11)) << 3;
+        self.c.next = self.c.val() | bit_cast::<24, 3>(self.t.val().get_bits::<3>(13));
+        self.c.next = self.c.val() | (bit_cast::<24, 6>(self.t.val().get_bits::<6>(5)) << 10);
+        self.c.next = self.c.val() | (bit_cast::<24, 2>(self.t.val().get_bits::<2>(9)) << 8);
+        self.c.next = self.c.val() | (bit_cast::<24, 5>(self.t.val().get_bits::<5>(0)) << 19);
+        self.c.next = self.c.val() | (bit_cast::<24, 3>(self.t.val().get_bits::<3>(2)) << 16);
+    }
+}
 
 macro_rules! texture_front {
     (
@@ -25,6 +62,7 @@ macro_rules! texture_front {
         $(, level: $lv:tt)?
         $(, lod: { unit: $lod:ident, pick: $pick:ident, position: $pd:ident })?
         $(, filter: { units: $fl:ident, blend: $bd:ident, valid: $flv:ident })?
+        $(, colour: { fetch: $cf:ident, widen: $cx:ident, units: $cu:ident, select: $cs:ident, blend: $cbd:ident })?
         $(, unfiltered: { texel: $tx:ident })?
         $(,)?
     ) => {
@@ -33,6 +71,8 @@ pub mod $m {
 use crate::prim::{delay::Delay, q::{Sq11_8, Sq3_8, Sq8_8, U16, U8}, ram_delay::RamDelay};
 #[allow(unused_imports)]
 use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr, tex_fetch::TexFetch};
+#[allow(unused_imports)]
+use super::Rgb565;
 use rust_hdl::prelude::*;
 
 /// Cycles from the front's input to the address unit's, to the fetch's, and to its output.
@@ -65,6 +105,18 @@ crate::block! {
         pub wx: Signal<In, U8>,
         pub wy: Signal<In, U8>,
         pub wdata: Signal<In, U16>,
+        $(pub wcolour: Signal<In, Bits<1>>,
+        pub $cf: TexFetch, // the colour map's memory
+        $cx: [Rgb565; 4], // the four texels widened
+        pub $cu: [BilinearUnit<8, 8>; 3], // R, G, B
+        $cs: Delay<Bits<1>, AT_FETCH>, // wcolour, beside the write
+        // (a write to the colour map, a write to the bump map) from the fetch to the front's output
+        written: Delay<Bits<2>, { crate::tex_fetch::LATENCY + crate::bilinear::LATENCY }>,
+        wrote_colour: Signal<Local, Bits<1>>,
+        wrote_bump: Signal<Local, Bits<1>>,
+        pub c_r: Signal<Out, U8>,
+        pub c_g: Signal<Out, U8>,
+        pub c_b: Signal<Out, U8>,)?
         pub valid_out: Signal<Out, Bit>,
         pub lo: Signal<Out, U8>,
         pub hi: Signal<Out, U8>,
@@ -163,6 +215,56 @@ impl Logic for $t {
         self.lo.next = self.$fl[0].out.val();
         self.hi.next = self.$fl[1].out.val();
         )?
+        // the colour map: its own memory read at the same footprint, the write it takes picked by wcolour (and the
+        // bump map's fetch takes the others); each texel's RGB565 widened to three bytes by repeating the top bits
+        // (`(c << 3) | (c >> 2)`, `(c << 2) | (c >> 4)`: bit copies), filtered on the bump texel's blend factors
+        $(self.$cf.clock.next = self.clock.val();
+        self.$cs.clock.next = self.clock.val();
+        self.$cs.d.next = self.wcolour.val();
+        self.$cf.valid_in.next = self.addr.valid_out.val();
+        self.$cf.level_log2.next = self.addr.level_log2.val();
+        self.$cf.x0.next = self.addr.x0.val();
+        self.$cf.x1.next = self.addr.x1.val();
+        self.$cf.y0.next = self.addr.y0.val();
+        self.$cf.y1.next = self.addr.y1.val();
+        self.$cf.we.next = self.write_dly.q.val().get_bits::<1>(0) & self.$cs.q.val();
+        self.fetch.we.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$cs.q.val();
+        self.$cf.w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
+        self.$cf.wx.next = self.write_dly.q.val().get_bits::<8>(5);
+        self.$cf.wy.next = self.write_dly.q.val().get_bits::<8>(13);
+        self.$cf.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
+        for i in 0..3 {
+            self.$cu[i].clock.next = self.clock.val();
+            self.$cu[i].ublend.next = self.$cbd.q.val().get_bits::<8>(0); // bit copies
+            self.$cu[i].vblend.next = self.$cbd.q.val().get_bits::<8>(8); // bit copies
+        }
+        self.$cx[0].t.next = self.$cf.t00.val();
+        self.$cx[1].t.next = self.$cf.t10.val();
+        self.$cx[2].t.next = self.$cf.t01.val();
+        self.$cx[3].t.next = self.$cf.t11.val();
+        for i in 0..3 {
+            self.$cu[i].t00.next = self.$cx[0].c.val().get_bits::<8>(8 * i); // channel i of the widened texel: bit copies
+            self.$cu[i].t10.next = self.$cx[1].c.val().get_bits::<8>(8 * i); // likewise
+            self.$cu[i].t01.next = self.$cx[2].c.val().get_bits::<8>(8 * i); // likewise
+            self.$cu[i].t11.next = self.$cx[3].c.val().get_bits::<8>(8 * i); // likewise
+        }
+        self.c_r.next = self.$cu[0].out.val();
+        self.c_g.next = self.$cu[1].out.val();
+        self.c_b.next = self.$cu[2].out.val();
+        // a write leaves as zeros: the path it did not write read a texel, so clear it (the one it wrote gave zeros)
+        self.written.clock.next = self.clock.val();
+        self.wrote_colour.next = self.write_dly.q.val().get_bits::<1>(0) & self.$cs.q.val();
+        self.wrote_bump.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$cs.q.val();
+        self.written.d.next = bit_cast::<2, 1>(self.wrote_colour.val()) | (bit_cast::<2, 1>(self.wrote_bump.val()) << 1);
+        if self.written.q.val().get_bit(0) {
+            self.lo.next = 0.into();
+            self.hi.next = 0.into();
+        }
+        if self.written.q.val().get_bit(1) {
+            self.c_r.next = 0.into();
+            self.c_g.next = 0.into();
+            self.c_b.next = 0.into();
+        })?
         // or the nearest texel as it is read (bit copies)
         $(self.valid_out.next = self.fetch.valid_out.val();
         self.lo.next = self.fetch.$tx.val().get_bits::<8>(0);
@@ -190,6 +292,16 @@ texture_front! {
     write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
     level: 0,
     filter: { units: filter, blend: blend_dly, valid: filter_valid },
+}
+
+texture_front! {
+    module: bilinear_colour,
+    block: TexBilinearColour,
+    linear: 1,
+    write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
+    level: 0,
+    filter: { units: filter, blend: blend_dly, valid: filter_valid },
+    colour: { fetch: colour_fetch, widen: colour_widen, units: colour_filter, select: wcolour_dly, blend: blend_dly },
 }
 
 texture_front! {

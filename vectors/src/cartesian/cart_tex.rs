@@ -4,7 +4,9 @@
 //!
 //! The model is the two wired, vector by vector over the front's memory: the front gives the texel's two bytes
 //! (filtered, or the nearest), which go in at every texel port of the host model with blend factors of zero (the
-//! host's bilinear unit then returns the texel itself, a test checks it), and the host model does the rest.
+//! host's bilinear unit then returns the texel itself, a test checks it), and the host model does the rest. With a
+//! colour map (`_colour`) the front's colour, from the colour map's memory, goes in at the host's destination
+//! colour (`dst_r`, `dst_g`, `dst_b`): the pixel's existing colour that the blend mixes with the lit one.
 
 use crate::tex_fetch::pattern;
 use crate::texture::front::{self, At, Filter, Front};
@@ -17,6 +19,8 @@ enum Source {
     Byte(usize),
     /// a blend factor: zero
     Zero,
+    /// a channel of the front's colour (R, G, B), with a colour map
+    Colour(usize),
     /// the textured pipeline's own port
     Port(usize),
 }
@@ -26,13 +30,22 @@ fn is_texel(name: &str) -> bool {
     name.len() <= 5 && name.starts_with('t') && name[1..].trim_start_matches(char::is_numeric).starts_with('_')
 }
 
+/// Whether a textured pipeline's ports hold a colour map's (its memory select).
+pub fn has_colour(ports: &[Port]) -> bool {
+    ports.iter().any(|p| p.name == front::COLOUR.name)
+}
+
 fn sources(host: &UnitModel, ports: &[Port]) -> Vec<Source> {
+    let colour = has_colour(ports);
     host.inputs
         .iter()
         .map(|p| {
             let texel = is_texel(p.name);
             match p.name {
                 "ublend" | "vblend" => Source::Zero,
+                "dst_r" if colour => Source::Colour(0),
+                "dst_g" if colour => Source::Colour(1),
+                "dst_b" if colour => Source::Colour(2),
                 n if texel && n.ends_with("_x") => Source::Byte(0),
                 n if texel && n.ends_with("_z") => Source::Byte(1),
                 n => Source::Port(front::index(ports, n)),
@@ -52,13 +65,15 @@ pub struct Textured {
 
 impl Textured {
     pub fn new(filter: Filter, host: &'static UnitModel, ports: &[Port]) -> Textured {
-        Textured { front: Front::new(filter), at: At::of(ports, filter.mip()), src: sources(host, ports), host }
+        let front = if has_colour(ports) { Front::with_colour(filter) } else { Front::new(filter) };
+        Textured { front, at: At::of(ports, filter.mip()), src: sources(host, ports), host }
     }
 }
 
 impl Machine for Textured {
     fn step(&mut self, v: &[i64]) -> Vec<i64> {
-        (self.host.exact)(&host_of(&self.src, v, self.front.step(v, &self.at)))
+        let (t, c) = self.front.step_all(v, &self.at);
+        (self.host.exact)(&host_of(&self.src, v, t, c))
     }
     /// The front's step alone: the host's outputs are what nobody reads.
     fn load(&mut self, v: &[i64]) {
@@ -66,17 +81,19 @@ impl Machine for Textured {
     }
 }
 
-/// The host's vector for a vector `v` of the textured pipeline whose front gave the texel (lo, hi): every texel
-/// port of the host that texel (a footprint of four equal texels, which the bilinear unit returns unchanged at
-/// blend factors of zero), its other ports `v`'s of the same name.
-pub fn host_vector(host: &UnitModel, ports: &[Port], v: &[i64], t: [i64; 2]) -> Vec<i64> {
-    host_of(&sources(host, ports), v, t)
+/// The host's vector for a vector `v` of the textured pipeline whose front gave the texel (lo, hi) and the colour
+/// `c` (zeros without a colour map): every texel port of the host that texel (a footprint of four equal texels,
+/// which the bilinear unit returns unchanged at blend factors of zero), with a colour map its destination colour
+/// `c`, its other ports `v`'s of the same name.
+pub fn host_vector(host: &UnitModel, ports: &[Port], v: &[i64], t: [i64; 2], c: [i64; 3]) -> Vec<i64> {
+    host_of(&sources(host, ports), v, t, c)
 }
 
-fn host_of(src: &[Source], v: &[i64], t: [i64; 2]) -> Vec<i64> {
+fn host_of(src: &[Source], v: &[i64], t: [i64; 2], c: [i64; 3]) -> Vec<i64> {
     src.iter()
         .map(|s| match *s {
-            Source::Byte(c) => t[c],
+            Source::Byte(k) => t[k],
+            Source::Colour(k) => c[k],
             Source::Zero => 0,
             Source::Port(k) => v[k],
         })
@@ -91,8 +108,9 @@ pub fn from_host(host: &UnitModel, ports: &[Port], h: &[i64]) -> Vec<i64> {
     ports.iter().map(|p| host.inputs.iter().position(|q| q.name == p.name).map_or(0, |k| h[k])).collect()
 }
 
-/// One random vector: the host's random ports; one in eight a write inside the region's chain, else a read of a
-/// map of side up to 2^REGION_LOG2 at a random position and wrap, with the LOD unit's random derivatives.
+/// One random vector: the host's random ports; one in eight a write inside the region's chain (with a colour map,
+/// of either memory), else a read of a map of side up to 2^REGION_LOG2 at a random position and wrap, with the
+/// LOD unit's random derivatives.
 pub fn random(filter: Filter, host: &UnitModel, ports: &[Port], rng: &mut dyn rand::RngCore) -> Vec<i64> {
     use rand::Rng;
     let mut v = from_host(host, ports, &(host.random)(rng));
@@ -100,7 +118,11 @@ pub fn random(filter: Filter, host: &UnitModel, ports: &[Port], rng: &mut dyn ra
     if rng.gen_range(0..8) == 0 {
         let m = rng.gen_range(0..=REGION_LOG2);
         let (x, y) = (rng.gen_range(0..1 << m), rng.gen_range(0..1 << m));
-        front::put_write(&mut v, &at, m, x, y, rng.gen_range(0..=0xffff));
+        if at.wcolour.is_some() && rng.gen_bool(0.5) {
+            front::put_colour_write(&mut v, &at, m, x, y, rng.gen_range(0..=0xffff));
+        } else {
+            front::put_write(&mut v, &at, m, x, y, rng.gen_range(0..=0xffff));
+        }
         return v;
     }
     let s = rng.gen_range(0..=REGION_LOG2);
@@ -111,8 +133,14 @@ pub fn random(filter: Filter, host: &UnitModel, ports: &[Port], rng: &mut dyn ra
     v
 }
 
-/// The hard cases: the region's chain loaded; each of the host's hard cases with its texel written into the 1 × 1
-/// map and read from it; then on the loaded chain (its 1 × 1 level written back), for every map side up to
+/// A colour texel of the hard cases' colour chain: the bump chain's pattern, its bits turned round, so that the two
+/// memories differ at every texel the hard cases read.
+pub fn colour_pattern(m: i64, x: i64, y: i64) -> i64 {
+    (pattern(m, x, y) as u16).reverse_bits() as i64
+}
+
+/// The hard cases: the region's chain loaded (with a colour map, the colour chain too); each of the host's hard
+/// cases with its texel (and its destination colour, as RGB565) written into the 1 × 1 map and read from it; then on the loaded chain (its 1 × 1 level written back), for every map side up to
 /// 2^REGION_LOG2, both wraps and both ends of each axis, the positions at the seam and the clamp edge (the first
 /// and last texel's centres and ends, a step either side); with a MIP filter, derivatives that put λ below 0, at
 /// each level, half way and past the last level, zero and the largest.
@@ -130,6 +158,11 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i
         for y in 0..1 << m {
             for x in 0..1 << m {
                 out.push(write(m, x, y, pattern(m, x, y)));
+                if at.wcolour.is_some() {
+                    let mut v = base.clone();
+                    front::put_colour_write(&mut v, &at, m, x, y, colour_pattern(m, x, y));
+                    out.push(v);
+                }
             }
         }
     }
@@ -137,13 +170,24 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i
         host.inputs.iter().position(|p| p.name == "t00_x" || p.name == "t_x").expect("a texel port"),
         host.inputs.iter().position(|p| p.name == "t00_z" || p.name == "t_z").expect("a texel port"),
     );
+    let dst = ["dst_r", "dst_g", "dst_b"].map(|n| host.inputs.iter().position(|p| p.name == n));
     for h in &hosts {
         out.push(write(0, 0, 0, h[tx] | (h[tz] << 8)));
+        if let ([Some(r), Some(g), Some(b)], true) = (dst, at.wcolour.is_some()) {
+            let mut v = base.clone();
+            front::put_colour_write(&mut v, &at, 0, 0, 0, front::pack565([h[r], h[g], h[b]].map(|c| c as u8)));
+            out.push(v);
+        }
         let mut v = from_host(host, ports, h);
         front::put_read(&mut v, &at, [77, -300], 0, [true, false], [256, 0, 0, 256]);
         out.push(v);
     }
     out.push(write(0, 0, 0, pattern(0, 0, 0)));
+    if at.wcolour.is_some() {
+        let mut v = base.clone();
+        front::put_colour_write(&mut v, &at, 0, 0, 0, colour_pattern(0, 0, 0));
+        out.push(v);
+    }
     let lambdas: Vec<[i64; 4]> = if filter.mip() {
         // λ = log2 of the longer edge: 2^-3, exactly 1 (level 0), each level k, k + ½ (a √2 edge), past the last;
         // zero derivatives; the largest magnitude (−256 texels a pixel) on each
@@ -225,17 +269,31 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i
     out.push(write(2, 1, 2, 0x7f7f));
     let mut v = base.clone();
     front::put_read(&mut v, &at, [256 + 128, 512 + 128], 2, [true, true], [1024, 0, 0, 1024]);
-    out.push(v);
+    out.push(v.clone());
+    if at.wcolour.is_some() {
+        // the colour map's likewise, with each channel's extremes: white, black, then each channel's top code alone
+        for t in [0xffff, 0x0000, 0xf800, 0x07e0, 0x001f] {
+            let mut w = base.clone();
+            front::put_colour_write(&mut w, &at, 2, 1, 2, t);
+            out.push(w);
+            out.push(v.clone());
+        }
+    }
     out
 }
 
-/// The front's ports followed by the host's other ports, as the textured pipeline's port list must be.
-pub fn expected_ports(filter: Filter, host: &UnitModel) -> Vec<Port> {
+/// The front's ports (with a colour map, its memory select) followed by the host's other ports (with a colour map,
+/// but the destination colour), as the textured pipeline's port list must be.
+pub fn expected_ports(filter: Filter, host: &UnitModel, colour: bool) -> Vec<Port> {
     let mut v: Vec<Port> = front::PORTS.to_vec();
+    if colour {
+        v.push(front::COLOUR);
+    }
     if filter.mip() {
         v.extend_from_slice(front::DERIVATIVES);
     }
-    let dropped = |n: &str| matches!(n, "ublend" | "vblend") || is_texel(n);
+    let dst = |n: &str| colour && matches!(n, "dst_r" | "dst_g" | "dst_b");
+    let dropped = |n: &str| matches!(n, "ublend" | "vblend") || is_texel(n) || dst(n);
     v.extend(host.inputs.iter().filter(|p| !dropped(p.name)).copied());
     v
 }
@@ -353,8 +411,23 @@ textured!(
     src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
+textured!(bilinear_colour, "cart_tex_bilinear_colour", Filter::Bilinear, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    bilinear_surface_colour, "cart_tex_bilinear_surface_colour", Filter::Bilinear, crate::cart_surface::MODEL,
+    inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 10] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 12] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
@@ -370,6 +443,8 @@ pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 10] {
             nearest_surface_hemi_oct_matte::FILTER,
             nearest_surface_hemi_oct_matte::host(),
         ),
+        (&bilinear_colour::MODEL, bilinear_colour::FILTER, bilinear_colour::host()),
+        (&bilinear_surface_colour::MODEL, bilinear_surface_colour::FILTER, bilinear_surface_colour::host()),
     ]
 }
 
@@ -380,7 +455,7 @@ mod tests {
     #[test]
     fn each_pipeline_has_the_fronts_ports_then_its_hosts_others() {
         for (m, f, h) in all() {
-            let want = expected_ports(f, h);
+            let want = expected_ports(f, h, m.name.ends_with("_colour"));
             let got: Vec<_> = m.inputs.iter().map(|p| (p.name, p.bits, p.signed)).collect();
             assert_eq!(got, want.iter().map(|p| (p.name, p.bits, p.signed)).collect::<Vec<_>>(), "{}", m.name);
         }
@@ -480,5 +555,74 @@ mod tests {
             }
             assert!((0..=REGION_LOG2).all(|s| written.contains(&s)));
         }
+    }
+
+    /// RGB565 widened back to bytes: every code's byte is within one of its exact value c·255/31 (or /63), the
+    /// ends exact; an 8-bit colour packed and widened is within half a 5-bit step (4.1) or 6-bit step (2.0) and that
+    /// one: 5 and 3 LSB.
+    #[test]
+    fn rgb565_widens_to_within_one_of_each_codes_value_and_packs_to_within_half_a_step() {
+        for t in 0..=0xffff {
+            let e = front::expand565(t);
+            let codes = [(t >> 11) & 0x1f, (t >> 5) & 0x3f, t & 0x1f];
+            for c in 0..3 {
+                let top = if c == 1 { 63.0 } else { 31.0 };
+                let exact = codes[c] as f64 * 255.0 / top;
+                assert!((e[c] as f64 - exact).abs() < 1.0, "{t:#06x} channel {c}: {} against {exact}", e[c]);
+            }
+        }
+        assert_eq!((front::expand565(0xffff), front::expand565(0)), ([255; 3], [0; 3]));
+        let mut worst = [0; 3];
+        for v in 0..=255u8 {
+            let e = front::expand565(front::pack565([v, v, v]));
+            for c in 0..3 {
+                worst[c] = worst[c].max((e[c] - v as i64).abs());
+            }
+        }
+        assert!(worst[0] <= 5 && worst[2] <= 5 && worst[1] <= 3, "{worst:?}");
+    }
+
+    /// The colour front reads its own memory at the bump texel's footprint and blend factors: a colour quad
+    /// written at level 0 and read inside it gives each channel's bilinear of the widened texels, and the host is
+    /// handed it as its destination colour (a write to one memory leaves the other's texels as they were).
+    #[test]
+    fn the_colour_front_filters_its_own_memory_on_the_bump_footprint_into_the_destination_colour() {
+        let ports = bilinear_colour::INPUTS;
+        let at = At::of(ports, false);
+        let host = bilinear_colour::host();
+        let mut m = bilinear_colour::Unit::default();
+        let mut v = from_host(host, ports, &(host.hard_cases)()[0]);
+        for y in 0..4 {
+            for x in 0..4 {
+                front::put_write(&mut v, &at, 2, x, y, pattern(2, x, y));
+                assert_eq!(m.step(&v), bilinear_matte_zero(host, ports, &v), "a write leaves as zeros");
+                front::put_colour_write(&mut v, &at, 2, x, y, colour_pattern(2, x, y));
+                m.step(&v);
+            }
+        }
+        let (u, w) = (256 + 128 + 77, 2 * 256 + 128 + 200); // texels 1..2 × 2..3, blends 77 and 200
+        front::put_read(&mut v, &at, [u, w], 2, [true, true], [0; 4]);
+        let got = m.step(&v);
+        let quad = [(1, 2), (2, 2), (1, 3), (2, 3)];
+        let mut hv = (host.hard_cases)()[0].clone();
+        for (k, (x, y)) in quad.into_iter().enumerate() {
+            let t = pattern(2, x, y);
+            (hv[crate::cart_pipeline::TEXELS[k][0]], hv[crate::cart_pipeline::TEXELS[k][1]]) = (t & 0xff, t >> 8);
+        }
+        (hv[crate::cart_pipeline::input::ublend], hv[crate::cart_pipeline::input::vblend]) = (77, 200);
+        let c = quad.map(|(x, y)| front::expand565(colour_pattern(2, x, y)));
+        for (ch, port) in crate::cart_pipeline::DST.iter().enumerate() {
+            hv[*port] =
+                crate::bilinear::exact_channel(c[0][ch], c[1][ch], c[2][ch], c[3][ch], 77, 200, crate::bilinear::F);
+        }
+        assert_eq!(got, (host.exact)(&hv));
+        // the destination colour matters: the blend at the same pixel with another colour differs
+        hv[crate::cart_pipeline::DST[0]] ^= 0x80;
+        assert_ne!(got, (host.exact)(&hv));
+    }
+
+    /// The host's outputs for a write vector: every texel and the destination colour zero.
+    fn bilinear_matte_zero(host: &UnitModel, ports: &[Port], v: &[i64]) -> Vec<i64> {
+        (host.exact)(&host_vector(host, ports, v, [0, 0], [0; 3]))
     }
 }

@@ -5,6 +5,12 @@
 //! `log_side`, `uwrap`, `vwrap`, the write port `we`, `w_log2`, `wx`, `wy`, `wdata`, and with a MIP filter the four
 //! derivatives `du_dx`, `dv_dx`, `du_dy`, `dv_dy` (Sq8.8) and the LOD bias `lod_bias` (Sq3.8, levels). A write puts `wdata` into its texel and leaves as a
 //! texel of zero; a read sees every write before it.
+//!
+//! A front with a colour map holds a second memory of the same layout: the colour texture, RGB565 texels (red in
+//! bits 15..11, green 10..5, blue 4..0), written through the same port with `wcolour` = 1. A read gives its colour
+//! beside the bump texel, from the same footprint, blend factors and levels: each channel widened to 8 bits by
+//! repeating its top bits (`expand565`: within one of c·255/31 or c·255/63, 0 → 0 and the top code → 255), then
+//! filtered as an 8-bit channel.
 
 use crate::texture::{lod, tex_addr, tex_fetch};
 use crate::unit::Port;
@@ -53,6 +59,24 @@ pub const PORTS: &[Port] = &[
 pub const DERIVATIVES: &[Port] =
     &[Port::s("du_dx", 17), Port::s("dv_dx", 17), Port::s("du_dy", 17), Port::s("dv_dy", 17), Port::s("lod_bias", 12)];
 
+/// The colour front's memory select, after `wdata`: 1 writes the colour map's memory, 0 the bump map's.
+pub const COLOUR: Port = Port::u("wcolour", 1);
+
+/// An RGB565 texel's three channels (U5, U6, U5) widened to U8 by bit repetition: `(c << 3) | (c >> 2)` for five
+/// bits, `(c << 2) | (c >> 4)` for six (the code's own top bits fill the low ones: within one of c·255/31 or
+/// c·255/63, 0 and the top code exact).
+pub fn expand565(t: i64) -> [i64; 3] {
+    let (r, g, b) = ((t >> 11) & 0x1f, (t >> 5) & 0x3f, t & 0x1f);
+    [(r << 3) | (r >> 2), (g << 2) | (g >> 4), (b << 3) | (b >> 2)]
+}
+
+/// An 8-bit colour as an RGB565 texel: each channel scaled to its 5 or 6 bits and rounded half up
+/// (`round(c·31/255)`, `round(c·63/255)`).
+pub fn pack565(rgb: [u8; 3]) -> i64 {
+    let q = |c: u8, top: i64| (i64::from(c) * top * 2 + 255) / 510;
+    (q(rgb[0], 31) << 11) | (q(rgb[1], 63) << 5) | q(rgb[2], 31)
+}
+
 /// Where a front's ports sit in a pipeline's vector.
 #[derive(Clone, Copy, Debug)]
 pub struct At {
@@ -66,6 +90,8 @@ pub struct At {
     pub wx: usize,
     pub wy: usize,
     pub wdata: usize,
+    /// wcolour, with a colour map
+    pub wcolour: Option<usize>,
     /// du_dx, dv_dx, du_dy, dv_dy, with a MIP filter
     pub d: Option<[usize; 4]>,
     /// lod_bias, with a MIP filter
@@ -92,22 +118,29 @@ impl At {
             wx: i("wx"),
             wy: i("wy"),
             wdata: i("wdata"),
+            wcolour: ports.iter().position(|p| p.name == COLOUR.name),
             d: mip.then(|| [i("du_dx"), i("dv_dx"), i("du_dy"), i("dv_dy")]),
             bias: mip.then(|| i("lod_bias")),
         }
     }
 }
 
-/// One front and its memory, from reset (an empty, zero memory).
+/// One front and its memory (and with a colour map the colour's), from reset (empty, zero memories).
 #[derive(Clone)]
 pub struct Front {
     pub filter: Filter,
     pub mem: tex_fetch::Memory,
+    pub colour: Option<tex_fetch::Memory>,
 }
 
 impl Front {
     pub fn new(filter: Filter) -> Front {
-        Front { filter, mem: tex_fetch::Memory::default() }
+        Front { filter, mem: tex_fetch::Memory::default(), colour: None }
+    }
+
+    /// A front with a colour map's memory beside the bump map's.
+    pub fn with_colour(filter: Filter) -> Front {
+        Front { colour: Some(tex_fetch::Memory::default()), ..Front::new(filter) }
     }
 
     /// The levels the address units read for this vector (the LOD unit's nearest level; ⌊λ⌋ and ⌊λ⌋ + 1; or 0),
@@ -151,19 +184,47 @@ impl Front {
         t
     }
 
-    /// The texel a write vector writes, as `reads` names texels.
+    /// The texel a write vector writes, as `reads` names texels (in whichever memory it writes: `writes_colour`).
     pub fn writes(v: &[i64], at: &At) -> Option<(i64, i64, i64)> {
         let m = tex_fetch::level(v[at.w_log2]);
         (v[at.we] == 1).then(|| (m, tex_fetch::wrap(v[at.wx], m), tex_fetch::wrap(v[at.wy], m)))
     }
 
+    /// Whether a write vector writes the colour map's memory.
+    pub fn writes_colour(v: &[i64], at: &At) -> bool {
+        at.wcolour.is_some_and(|k| v[k] == 1)
+    }
+
     /// One vector: (lo, hi), the texel's two bytes, filtered or the nearest one; a write gives (0, 0).
     pub fn step(&mut self, v: &[i64], at: &At) -> [i64; 2] {
+        self.step_all(v, at).0
+    }
+
+    /// One vector: the bump texel's two bytes and, with a colour map, its colour (R, G, B, U8 each); a write
+    /// gives zeros.
+    pub fn step_all(&mut self, v: &[i64], at: &At) -> ([i64; 2], [i64; 3]) {
         if v[at.we] == 1 {
-            self.mem.write(v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
-            return [0, 0];
+            let mem = match (&mut self.colour, Front::writes_colour(v, at)) {
+                (Some(c), true) => c,
+                _ => &mut self.mem,
+            };
+            mem.write(v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
+            return ([0, 0], [0; 3]);
         }
-        self.read(v, at)
+        (self.read(v, at), self.read_colour(v, at))
+    }
+
+    /// A read vector's colour from the colour map's memory as it stands (zeros without one): the same levels,
+    /// footprint and blend factors as the bump texel's, each channel widened (`expand565`) and then filtered.
+    pub fn read_colour(&self, v: &[i64], at: &At) -> [i64; 3] {
+        let Some(mem) = &self.colour else { return [0; 3] };
+        let (levels, frac) = self.levels(v, at);
+        let b = levels.iter().map(|&l| self.sample_in(mem, v, at, l, 3)).collect::<Vec<_>>();
+        match b[..] {
+            [ref one] => [one[0], one[1], one[2]],
+            [ref b0, ref b1] => [0, 1, 2].map(|c| lerp(b0[c], b1[c], frac)),
+            _ => unreachable!("a front reads one level or two"),
+        }
     }
 
     /// A read vector's (lo, hi) from the memory as it stands (`step` without its writes).
@@ -179,25 +240,34 @@ impl Front {
 
     /// The texel's two bytes at one level: filtered, or the nearest texel's.
     fn sample(&self, v: &[i64], at: &At, level: i64) -> [i64; 2] {
+        let b = self.sample_in(&self.mem, v, at, level, 2);
+        [b[0], b[1]]
+    }
+
+    /// The `n` channels of a texel of `mem` at one level, filtered or the nearest texel's: with n = 2 a bump
+    /// texel's two bytes, with n = 3 a colour texel's channels widened from RGB565.
+    fn sample_in(&self, mem: &tex_fetch::Memory, v: &[i64], at: &At, level: i64, n: usize) -> Vec<i64> {
         let a = self.address(v, at, level);
         use tex_addr::output as o;
-        let t = self.mem.footprint(a[o::level_log2], [a[o::x0], a[o::x1]], [a[o::y0], a[o::y1]]);
-        let byte = |k: usize, c: u32| (t[k] >> (8 * c)) & 0xff;
-        if self.filter.linear() {
-            [0, 1].map(|c| {
-                bilinear::exact_channel(
-                    byte(0, c),
-                    byte(1, c),
-                    byte(2, c),
-                    byte(3, c),
-                    a[o::ublend],
-                    a[o::vblend],
-                    bilinear::F,
-                )
+        let t = mem.footprint(a[o::level_log2], [a[o::x0], a[o::x1]], [a[o::y0], a[o::y1]]);
+        let chan = |k: usize, c: usize| if n == 3 { expand565(t[k])[c] } else { (t[k] >> (8 * c)) & 0xff };
+        (0..n)
+            .map(|c| {
+                if self.filter.linear() {
+                    bilinear::exact_channel(
+                        chan(0, c),
+                        chan(1, c),
+                        chan(2, c),
+                        chan(3, c),
+                        a[o::ublend],
+                        a[o::vblend],
+                        bilinear::F,
+                    )
+                } else {
+                    chan(0, c)
+                }
             })
-        } else {
-            [byte(0, 0), byte(0, 1)]
-        }
+            .collect()
     }
 }
 
@@ -213,12 +283,21 @@ pub fn put_read(v: &mut [i64], at: &At, uv: [i64; 2], log_side: i64, wrap: [bool
     (v[at.u], v[at.v], v[at.log_side]) = (uv[0], uv[1], log_side);
     (v[at.uwrap], v[at.vwrap], v[at.we]) = (i64::from(wrap[0]), i64::from(wrap[1]), 0);
     (v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]) = (0, 0, 0, 0);
+    if let Some(k) = at.wcolour {
+        v[k] = 0;
+    }
     if let Some(k) = at.d {
         for c in 0..4 {
             v[k[c]] = d[c];
         }
     }
     put_bias(v, at, 0);
+}
+
+/// A write vector's front ports for an RGB565 texel of the colour map's memory; panics for a front without one.
+pub fn put_colour_write(v: &mut [i64], at: &At, m: i64, x: i64, y: i64, texel: i64) {
+    put_write(v, at, m, x, y, texel);
+    v[at.wcolour.expect("a front with a colour map")] = 1;
 }
 
 /// A read vector's LOD bias (Sq3.8, levels), for a MIP filter; nothing without one.
@@ -228,10 +307,13 @@ pub fn put_bias(v: &mut [i64], at: &At, bias: i64) {
     }
 }
 
-/// A write vector's front ports: texel (x, y) of the level of side 2^m.
+/// A write vector's front ports: texel (x, y) of the level of side 2^m, in the bump map's memory.
 pub fn put_write(v: &mut [i64], at: &At, m: i64, x: i64, y: i64, texel: i64) {
     (v[at.u], v[at.v], v[at.log_side], v[at.uwrap], v[at.vwrap]) = (0, 0, 0, 0, 0);
     (v[at.we], v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]) = (1, m, x, y, texel);
+    if let Some(k) = at.wcolour {
+        v[k] = 0;
+    }
     if let Some(k) = at.d {
         for c in k {
             v[c] = 0;
