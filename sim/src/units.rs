@@ -193,7 +193,7 @@ pub static UNITS: &[Unit] = &[
         ("filter$1$wide", "as filter$0$wide"),
         ("filter$2$wide", "as filter$0$wide"),
         ("filter$3$wide", "as filter$0$wide"),
-        ("fetch$1$valid_out", "the two fetches run in step: the valid chain follows the first's"),
+        ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
     ]),
     unit!(map: &vectors::cart_tex::bilinear_hemi_oct::MODEL, rtl::cart_tex::CartTexBilinearHemiOct).waiving(&[
         ("filter$0$wide", "as in cart_tex_bilinear"),

@@ -314,17 +314,21 @@ texture_front! {
 }
 
 /// `TexTrilinear`: the trilinear front, two sets of the unit blocks side by side, one a level: the LOD unit gives
-/// ⌊λ⌋ and frac(λ); one address unit reads level ⌊λ⌋ and the other ⌊λ⌋ + 1 (the address unit clamps it to the
-/// last level, where frac(λ) is 0); each has its own fetch, holding its own copy of the map's memory (a bank has one
-/// read port: two footprints a clock need two copies, both written by the same write port), and two bilinear
-/// units; then each byte of the two levels is blended by frac(λ): `round_half_up(b₀·2^8 + (b₁ − b₀)·f, 8)` (U8,
+/// ⌊λ⌋ and frac(λ); the second level is ⌊λ⌋ + 1, or at the last level (where frac(λ) is 0) ⌊λ⌋ − 1
+/// (`vectors::front::neighbour`). Two levels a step apart have sides of different parity (log2), so the map is
+/// split by it (the parity split: a bank has one read port, and two footprints a clock would otherwise need two
+/// copies of the memory): one fetch holds the levels of even side log2 (`TexFetch<EVEN, 11>`) and the other the
+/// odd ones (`TexFetch<ODD, 13>`), each taking the writes of its own levels from the one write port; each address
+/// unit reads the level its fetch holds, and each fetch feeds two bilinear units; then each byte of the two levels
+/// (⌊λ⌋'s picked by the parity it had) is blended by frac(λ): `round_half_up(b₀·2^8 + (b₁ − b₀)·f, 8)` (U8,
 /// `vectors::front::lerp`). Ports as `TexNearestMip`'s.
 pub mod trilinear {
     use crate::prim::delay::Delay;
     use crate::prim::q::{SBits, Sq11_8, Sq3_8, Sq8_8, U16, U8};
     use crate::prim::ram_delay::RamDelay;
     use crate::prim::sm_mul::{self, SmMul};
-    use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr, tex_fetch::TexFetch};
+    use crate::tex_fetch::{TexFetch, EVEN, EVEN_ADDR_BITS, ODD};
+    use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr};
     use rust_hdl::prelude::*;
 
     /// Cycles from the front's input to the address units', to the fetches', to the bilinear units', to the blend
@@ -362,8 +366,14 @@ pub mod trilinear {
             pos_dly: RamDelay<46, 4, { crate::lod::LATENCY }>, // (u, v, log_side, uwrap, vwrap) packed low to high
             pos_word: Signal<Local, Bits<46>>,
             next_level: Signal<Local, Bits<4>>, // ⌊λ⌋ + 1 ≤ 9 (λ ≤ 8)
-            pub addr: [TexAddr; 2],     // level ⌊λ⌋, level ⌊λ⌋ + 1
-            pub fetch: [TexFetch; 2],   // each with its copy of the memory
+            prev_level: Signal<Local, Bits<4>>, // ⌊λ⌋ − 1 (wraps at 0, unused there)
+            second: Signal<Local, Bits<4>>,     // the level ⌊λ⌋ is blended with
+            side_log2: Signal<Local, Bits<4>>,  // the map's side log2, waited beside the LOD unit
+            odd_first: Signal<Local, Bit>,      // ⌊λ⌋'s side log2, log_side − ⌊λ⌋, is odd: ⌊λ⌋ from the odd fetch
+            odd_first_dly: Delay<Bit, { AT_LERP - AT_ADDR }>,
+            pub addr: [TexAddr; 2], // the level of even side log2, the odd one
+            pub fetch_even: TexFetch<EVEN, EVEN_ADDR_BITS>, // the levels of even side log2
+            pub fetch_odd: TexFetch<ODD, 13>,               // the odd ones
             write_dly: RamDelay<37, 5, { crate::lod::LATENCY + crate::tex_addr::LATENCY }>, // (we, w_log2, wx, wy, wdata)
             write_word: Signal<Local, Bits<37>>,
             pub filter: [BilinearUnit<8, 8>; 4], // level ⌊λ⌋ low byte, high byte; level ⌊λ⌋ + 1 low byte, high byte
@@ -421,20 +431,38 @@ pub mod trilinear {
             self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.uwrap.val()) << 44);
             self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.vwrap.val()) << 45);
             self.pos_dly.d.next = self.pos_word.val();
+            // the second level: ⌊λ⌋ + 1 below the last level, else ⌊λ⌋ − 1, else (a 1 × 1 map) 1
             self.next_level.next = self.lod.level.val() + 1; // ≤ 9 in 4 bits: exact
-                                                             // each level's blend factors wait beside its fetch: packed and unpacked, bit copies (a loop's index
-                                                             // cannot reach into a cast's argument under `hdl_gen`)
-                                                             // (one assignment each, before the loop reads them: an element read before it is written, or written from
-                                                             // itself, reads to Verilator as a combinational loop)
+            self.prev_level.next = self.lod.level.val() - 1; // wraps at 0 on purpose: not read there
+            self.side_log2.next = self.pos_dly.q.val().get_bits::<4>(40);
+            self.second.next = 1.into();
+            if self.lod.level.val().any() {
+                self.second.next = self.prev_level.val();
+            }
+            if self.lod.level.val() < self.side_log2.val() {
+                self.second.next = self.next_level.val();
+            }
+            self.odd_first.next = self.side_log2.val().get_bit(0) ^ self.lod.level.val().get_bit(0);
+            self.odd_first_dly.clock.next = self.clock.val();
+            self.odd_first_dly.d.next = self.odd_first.val();
+            // each level's blend factors wait beside its fetch: packed and unpacked, bit copies (a loop's index
+            // cannot reach into a cast's argument under `hdl_gen`)
+            // (one assignment each, before the loop reads them: an element read before it is written, or written from
+            // itself, reads to Verilator as a combinational loop)
             self.blend_word[0].next =
                 bit_cast::<16, 8>(self.addr[0].ublend.val()) | (bit_cast::<16, 8>(self.addr[0].vblend.val()) << 8);
             self.blend_word[1].next =
                 bit_cast::<16, 8>(self.addr[1].ublend.val()) | (bit_cast::<16, 8>(self.addr[1].vblend.val()) << 8);
-            self.addr[0].level.next = self.lod.level.val();
-            self.addr[1].level.next = self.next_level.val();
+            // each address unit the level its fetch holds
+            if self.odd_first.val() {
+                self.addr[0].level.next = self.second.val();
+                self.addr[1].level.next = self.lod.level.val();
+            } else {
+                self.addr[0].level.next = self.lod.level.val();
+                self.addr[1].level.next = self.second.val();
+            }
             for k in 0..2 {
                 self.addr[k].clock.next = self.clock.val();
-                self.fetch[k].clock.next = self.clock.val();
                 self.blend_dly[k].clock.next = self.clock.val();
                 self.addr[k].valid_in.next = self.lod.valid_out.val();
                 // the position that waited beside the LOD unit, unpacked: bit copies
@@ -444,22 +472,35 @@ pub mod trilinear {
                 self.addr[k].uwrap.next = self.pos_dly.q.val().get_bits::<1>(44);
                 self.addr[k].vwrap.next = self.pos_dly.q.val().get_bits::<1>(45);
                 self.addr[k].linear.next = true.into(); // the bilinear footprint
-                                                        // the fetch: the footprint its address unit gives, and the write that waited beside it (bit copies);
-                                                        // both copies of the memory take every write
-                self.fetch[k].valid_in.next = self.addr[k].valid_out.val();
-                self.fetch[k].level_log2.next = self.addr[k].level_log2.val();
-                self.fetch[k].x0.next = self.addr[k].x0.val();
-                self.fetch[k].x1.next = self.addr[k].x1.val();
-                self.fetch[k].y0.next = self.addr[k].y0.val();
-                self.fetch[k].y1.next = self.addr[k].y1.val();
-                self.fetch[k].we.next = self.write_dly.q.val().get_bits::<1>(0);
-                self.fetch[k].w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
-                self.fetch[k].wx.next = self.write_dly.q.val().get_bits::<8>(5);
-                self.fetch[k].wy.next = self.write_dly.q.val().get_bits::<8>(13);
-                self.fetch[k].wdata.next = self.write_dly.q.val().get_bits::<16>(21);
                 self.blend_dly[k].d.next = self.blend_word[k].val();
             }
-            // the filters: unit 2k + c takes byte c of level k's four texels (bit copies)
+            // the fetches: the footprint its address unit gives, and the write that waited beside it (bit copies);
+            // both take every write and keep those of the levels they hold
+            self.fetch_even.clock.next = self.clock.val();
+            self.fetch_odd.clock.next = self.clock.val();
+            self.fetch_even.valid_in.next = self.addr[0].valid_out.val();
+            self.fetch_even.level_log2.next = self.addr[0].level_log2.val();
+            self.fetch_even.x0.next = self.addr[0].x0.val();
+            self.fetch_even.x1.next = self.addr[0].x1.val();
+            self.fetch_even.y0.next = self.addr[0].y0.val();
+            self.fetch_even.y1.next = self.addr[0].y1.val();
+            self.fetch_odd.valid_in.next = self.addr[1].valid_out.val();
+            self.fetch_odd.level_log2.next = self.addr[1].level_log2.val();
+            self.fetch_odd.x0.next = self.addr[1].x0.val();
+            self.fetch_odd.x1.next = self.addr[1].x1.val();
+            self.fetch_odd.y0.next = self.addr[1].y0.val();
+            self.fetch_odd.y1.next = self.addr[1].y1.val();
+            self.fetch_even.we.next = self.write_dly.q.val().get_bits::<1>(0);
+            self.fetch_even.w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
+            self.fetch_even.wx.next = self.write_dly.q.val().get_bits::<8>(5);
+            self.fetch_even.wy.next = self.write_dly.q.val().get_bits::<8>(13);
+            self.fetch_even.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
+            self.fetch_odd.we.next = self.write_dly.q.val().get_bits::<1>(0);
+            self.fetch_odd.w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
+            self.fetch_odd.wx.next = self.write_dly.q.val().get_bits::<8>(5);
+            self.fetch_odd.wy.next = self.write_dly.q.val().get_bits::<8>(13);
+            self.fetch_odd.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
+            // the filters: unit 2k + c takes byte c of the four texels of fetch k (even, odd): bit copies
             for i in 0..4 {
                 self.filter[i].clock.next = self.clock.val();
             }
@@ -472,33 +513,43 @@ pub mod trilinear {
             self.filter[2].vblend.next = self.blend_dly[1].q.val().get_bits::<8>(8);
             self.filter[3].ublend.next = self.blend_dly[1].q.val().get_bits::<8>(0);
             self.filter[3].vblend.next = self.blend_dly[1].q.val().get_bits::<8>(8);
-            self.filter[0].t00.next = self.fetch[0].t00.val().get_bits::<8>(0);
-            self.filter[0].t10.next = self.fetch[0].t10.val().get_bits::<8>(0);
-            self.filter[0].t01.next = self.fetch[0].t01.val().get_bits::<8>(0);
-            self.filter[0].t11.next = self.fetch[0].t11.val().get_bits::<8>(0);
-            self.filter[1].t00.next = self.fetch[0].t00.val().get_bits::<8>(8);
-            self.filter[1].t10.next = self.fetch[0].t10.val().get_bits::<8>(8);
-            self.filter[1].t01.next = self.fetch[0].t01.val().get_bits::<8>(8);
-            self.filter[1].t11.next = self.fetch[0].t11.val().get_bits::<8>(8);
-            self.filter[2].t00.next = self.fetch[1].t00.val().get_bits::<8>(0);
-            self.filter[2].t10.next = self.fetch[1].t10.val().get_bits::<8>(0);
-            self.filter[2].t01.next = self.fetch[1].t01.val().get_bits::<8>(0);
-            self.filter[2].t11.next = self.fetch[1].t11.val().get_bits::<8>(0);
-            self.filter[3].t00.next = self.fetch[1].t00.val().get_bits::<8>(8);
-            self.filter[3].t10.next = self.fetch[1].t10.val().get_bits::<8>(8);
-            self.filter[3].t01.next = self.fetch[1].t01.val().get_bits::<8>(8);
-            self.filter[3].t11.next = self.fetch[1].t11.val().get_bits::<8>(8);
-            self.filter_valid.d.next = self.fetch[0].valid_out.val();
+            self.filter[0].t00.next = self.fetch_even.t00.val().get_bits::<8>(0);
+            self.filter[0].t10.next = self.fetch_even.t10.val().get_bits::<8>(0);
+            self.filter[0].t01.next = self.fetch_even.t01.val().get_bits::<8>(0);
+            self.filter[0].t11.next = self.fetch_even.t11.val().get_bits::<8>(0);
+            self.filter[1].t00.next = self.fetch_even.t00.val().get_bits::<8>(8);
+            self.filter[1].t10.next = self.fetch_even.t10.val().get_bits::<8>(8);
+            self.filter[1].t01.next = self.fetch_even.t01.val().get_bits::<8>(8);
+            self.filter[1].t11.next = self.fetch_even.t11.val().get_bits::<8>(8);
+            self.filter[2].t00.next = self.fetch_odd.t00.val().get_bits::<8>(0);
+            self.filter[2].t10.next = self.fetch_odd.t10.val().get_bits::<8>(0);
+            self.filter[2].t01.next = self.fetch_odd.t01.val().get_bits::<8>(0);
+            self.filter[2].t11.next = self.fetch_odd.t11.val().get_bits::<8>(0);
+            self.filter[3].t00.next = self.fetch_odd.t00.val().get_bits::<8>(8);
+            self.filter[3].t10.next = self.fetch_odd.t10.val().get_bits::<8>(8);
+            self.filter[3].t01.next = self.fetch_odd.t01.val().get_bits::<8>(8);
+            self.filter[3].t11.next = self.fetch_odd.t11.val().get_bits::<8>(8);
+            self.filter_valid.d.next = self.fetch_even.valid_out.val();
             // frac(λ) waits for the two levels' bytes
             self.frac_dly.d.next = self.lod.frac.val();
             self.w_frac.next = bit_cast::<16, 8>(self.frac_dly.q.val());
             // the blend of the two levels, per byte c: b₀ from unit c, b₁ from unit 2 + c
-            self.w_b0[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
-            self.w_b0[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
-            self.w_b1[0].next = bit_cast::<16, 8>(self.filter[2].out.val());
-            self.w_b1[1].next = bit_cast::<16, 8>(self.filter[3].out.val());
-            self.w_base[0].next = bit_cast::<17, 8>(self.filter[0].out.val());
-            self.w_base[1].next = bit_cast::<17, 8>(self.filter[1].out.val());
+            // b₀ from ⌊λ⌋'s fetch's units (the odd one's, 2 + c, where its side log2 is odd), b₁ from the other's
+            if self.odd_first_dly.q.val() {
+                self.w_b0[0].next = bit_cast::<16, 8>(self.filter[2].out.val());
+                self.w_b0[1].next = bit_cast::<16, 8>(self.filter[3].out.val());
+                self.w_b1[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
+                self.w_b1[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
+                self.w_base[0].next = bit_cast::<17, 8>(self.filter[2].out.val());
+                self.w_base[1].next = bit_cast::<17, 8>(self.filter[3].out.val());
+            } else {
+                self.w_b0[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
+                self.w_b0[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
+                self.w_b1[0].next = bit_cast::<16, 8>(self.filter[2].out.val());
+                self.w_b1[1].next = bit_cast::<16, 8>(self.filter[3].out.val());
+                self.w_base[0].next = bit_cast::<17, 8>(self.filter[0].out.val());
+                self.w_base[1].next = bit_cast::<17, 8>(self.filter[1].out.val());
+            }
             self.lerp_valid.d.next = self.filter_valid.q.val();
             for c in 0..2 {
                 self.s1_d[c].clock.next = self.clock.val();

@@ -18,12 +18,86 @@ use rust_hdl::prelude::*;
 pub const LATENCY: usize = 6;
 /// A bank's address bits: 8,192 words, of which a 128 × 128 map's chain takes 5,462 (`vectors::tex_fetch`).
 pub const ADDR_BITS: usize = 13;
+/// The levels a fetch's memory holds (its `P`): every level, the even sides' log2 (0, 2, 4, 6) or the odd ones
+/// (1, 3, 5, 7): trilinear's two fetches hold one each (`vectors::tex_fetch::Levels`).
+pub const ALL: usize = 0;
+pub const EVEN: usize = 1;
+pub const ODD: usize = 2;
+/// A bank's address bits for the even levels: 1,093 words of 2,048.
+pub const EVEN_ADDR_BITS: usize = 11;
+
+/// Where each level starts in a bank of a memory holding the levels `p` (ALL, EVEN, ODD): the words of the held
+/// levels below it (the 1 × 1 level one word, the side 2^m one 4^(m−1)); a level not held starts where the held
+/// level below it does (its writes are dropped and its reads give zeros).
+pub fn bases(p: usize) -> [u64; 8] {
+    let held = |m: usize| p == ALL || (m % 2 == 0) == (p == EVEN);
+    let size = |k: usize| if k == 0 { 1u64 } else { 1 << (2 * (k - 1)) };
+    std::array::from_fn(|m| {
+        let top = if held(m) || m == 0 { m } else { m - 1 };
+        (0..top).filter(|&k| held(k)).map(size).sum()
+    })
+}
+
+crate::block! {
+    /// The level's base and whether the memory holds it, for a memory holding the levels `P` (`bases`): a table of
+    /// eight constants read by the saturated side log2 m (0 ..= 7). Combinational.
+    pub struct LevelBase<const P: usize> {
+        pub m: Signal<In, Bits<3>>,
+        pub base: Signal<Out, Bits<13>>,
+        pub held: Signal<Out, Bit>,
+        tab: [Constant<Bits<13>>; 8],
+        holds: Constant<Bits<8>>,
+    }
+}
+
+impl<const P: usize> Default for LevelBase<P> {
+    fn default() -> Self {
+        let b = bases(P);
+        let mask: u64 = (0..8).filter(|&m| P == ALL || (m % 2 == 0) == (P == EVEN)).map(|m| 1 << m).sum();
+        Self {
+            m: Default::default(),
+            base: Default::default(),
+            held: Default::default(),
+            tab: std::array::from_fn(|k| Constant::new(Bits::<13>::from(b[k]))),
+            holds: Constant::new(Bits::<8>::from(mask)),
+        }
+    }
+}
+
+impl<const P: usize> Logic for LevelBase<P> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.base.next = self.tab[0].val();
+        if self.m.val() == 1 {
+            self.base.next = self.tab[1].val();
+        }
+        if self.m.val() == 2 {
+            self.base.next = self.tab[2].val();
+        }
+        if self.m.val() == 3 {
+            self.base.next = self.tab[3].val();
+        }
+        if self.m.val() == 4 {
+            self.base.next = self.tab[4].val();
+        }
+        if self.m.val() == 5 {
+            self.base.next = self.tab[5].val();
+        }
+        if self.m.val() == 6 {
+            self.base.next = self.tab[6].val();
+        }
+        if self.m.val() == 7 {
+            self.base.next = self.tab[7].val();
+        }
+        self.held.next = self.holds.val().get_bit(self.m.val().index());
+    }
+}
 /// The write port (`StreamUnit::MAP`): a write beat writes one texel and reads nothing.
 pub const MAP: &[&str] = &["we", "w_log2", "wx", "wy", "wdata"];
 
 crate::stream_block! {
     #[derive(Default)]
-    pub struct TexFetch: unit("tex_fetch", LATENCY, map = MAP) {
+    pub struct TexFetch<const P: usize = 0, const A: usize = 13>: unit("tex_fetch", LATENCY, map = MAP) {
         in {
             level_log2: Bits<4>,
             x0: U8,
@@ -43,7 +117,10 @@ crate::stream_block! {
             t11: U16,
         }
         /// the four banks, (x mod 2) + 2·(y mod 2), each single-port: a clock reads it or writes it
-        pub bank: [SpRam<U16, 13>; 4],
+        pub bank: [SpRam<U16, A>; 4],
+        /// the read's and the write's level bases, for the levels the memory holds (`P`)
+        read_base: LevelBase<P>,
+        write_base: LevelBase<P>,
         // stage 1: the level's side log2 (saturated to 7), the coordinates modulo its side; the write's likewise
         s1_m: DFF<Bits<4>>,
         s1_x: [DFF<U8>; 2],
@@ -111,7 +188,7 @@ crate::stream_block! {
     }
 }
 
-impl Logic for TexFetch {
+impl<const P: usize, const A: usize> Logic for TexFetch<P, A> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -202,63 +279,23 @@ impl Logic for TexFetch {
         self.s2_px[1].d.next = self.s1_x[1].q.val().get_bit(0);
         self.s2_py[0].d.next = self.s1_y[0].q.val().get_bit(0);
         self.s2_py[1].d.next = self.s1_y[1].q.val().get_bit(0);
-        // base(m) = 1 + (4^(m−1) − 1)/3: where the level starts in every bank
-        self.w_base.next = 0.into();
-        if self.s1_m.q.val() == 1 {
-            self.w_base.next = 1.into();
-        }
-        if self.s1_m.q.val() == 2 {
-            self.w_base.next = 2.into();
-        }
-        if self.s1_m.q.val() == 3 {
-            self.w_base.next = 6.into();
-        }
-        if self.s1_m.q.val() == 4 {
-            self.w_base.next = 22.into();
-        }
-        if self.s1_m.q.val() == 5 {
-            self.w_base.next = 86.into();
-        }
-        if self.s1_m.q.val() == 6 {
-            self.w_base.next = 342.into();
-        }
-        if self.s1_m.q.val() == 7 {
-            self.w_base.next = 1366.into();
-        }
+        // where the level starts in every bank: base(m) = 1 + (4^(m−1) − 1)/3 for the whole chain (`bases`)
+        self.read_base.m.next = self.s1_m.q.val().get_bits::<3>(0); // m ≤ 7: exact
+        self.w_base.next = self.read_base.base.val();
         self.s2_base.d.next = self.w_base.val();
-        self.s2_rd.d.next = self.s1_rd.q.val();
-        // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
+        self.s2_rd.d.next = self.s1_rd.q.val() & self.read_base.held.val(); // a level it does not hold reads as zeros
+                                                                            // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
         self.w_wc13.next = bit_cast::<13, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 13
         self.w_wr13.next = bit_cast::<13, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 13
         self.s2_wcol.d.next = self.w_wc13.val();
         self.w_wrm.next = self.w_wr13.val() << self.s1_wm.q.val(); // U13, exact, as the read's
         self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U12, exact
-        self.w_wbase.next = 0.into();
-        if self.s1_wm.q.val() == 1 {
-            self.w_wbase.next = 1.into();
-        }
-        if self.s1_wm.q.val() == 2 {
-            self.w_wbase.next = 2.into();
-        }
-        if self.s1_wm.q.val() == 3 {
-            self.w_wbase.next = 6.into();
-        }
-        if self.s1_wm.q.val() == 4 {
-            self.w_wbase.next = 22.into();
-        }
-        if self.s1_wm.q.val() == 5 {
-            self.w_wbase.next = 86.into();
-        }
-        if self.s1_wm.q.val() == 6 {
-            self.w_wbase.next = 342.into();
-        }
-        if self.s1_wm.q.val() == 7 {
-            self.w_wbase.next = 1366.into();
-        }
+        self.write_base.m.next = self.s1_wm.q.val().get_bits::<3>(0); // m ≤ 7: exact
+        self.w_wbase.next = self.write_base.base.val();
         self.s2_wbase.d.next = self.w_wbase.val();
         self.s2_wpx.d.next = self.s1_wx.q.val().get_bit(0);
         self.s2_wpy.d.next = self.s1_wy.q.val().get_bit(0);
-        self.s2_we.d.next = self.s1_we.q.val();
+        self.s2_we.d.next = self.s1_we.q.val() & self.write_base.held.val(); // a level it does not hold: no write
         self.s2_wdata.d.next = self.s1_wdata.q.val();
 
         // stage 3: bank (p, q) = p + 2q at base + row q + column p (< 5,462: U13, exact)
@@ -301,7 +338,7 @@ impl Logic for TexFetch {
         // stage 4: each bank writes the write or reads its address (a read sees the writes of the clocks before;
         // the written bank's word is not read, and a writing vector's outputs are zero)
         for n in 0..4 {
-            self.bank[n].address.next = self.s3_addr[n].q.val();
+            self.bank[n].address.next = self.s3_addr[n].q.val().get_bits::<A>(0); // < 2^A where the level is held
             self.bank[n].write_data.next = self.wr_data.q.val();
             self.bank[n].write_enable.next = self.wr_en[n].q.val();
         }

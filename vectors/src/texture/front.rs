@@ -125,17 +125,28 @@ impl At {
     }
 }
 
-/// One front and its memory (and with a colour map the colour's), from reset (empty, zero memories).
+/// One front and its memory (and with a colour map the colour's), from reset (empty, zero memories). Trilinear's
+/// bump map is split by level parity (`tex_fetch::Levels`): `mem` holds the even levels and `odd` the odd ones.
 #[derive(Clone)]
 pub struct Front {
     pub filter: Filter,
     pub mem: tex_fetch::Memory,
+    pub odd: Option<tex_fetch::Memory>,
     pub colour: Option<tex_fetch::Memory>,
 }
 
 impl Front {
     pub fn new(filter: Filter) -> Front {
-        Front { filter, mem: tex_fetch::Memory::default(), colour: None }
+        use tex_fetch::{Levels, Memory};
+        match filter {
+            Filter::Trilinear => Front {
+                filter,
+                mem: Memory::holding(Levels::Even),
+                odd: Some(Memory::holding(Levels::Odd)),
+                colour: None,
+            },
+            _ => Front { filter, mem: Memory::default(), odd: None, colour: None },
+        }
     }
 
     /// A front with a colour map's memory beside the bump map's.
@@ -143,8 +154,17 @@ impl Front {
         Front { colour: Some(tex_fetch::Memory::default()), ..Front::new(filter) }
     }
 
-    /// The levels the address units read for this vector (the LOD unit's nearest level; ⌊λ⌋ and ⌊λ⌋ + 1; or 0),
-    /// and the weight of the second, frac(λ) (U8; 0 with one level).
+    /// The bump map's memory that holds MIP level `level` (an index, 0 the largest) of a map of side 2^log_side:
+    /// with the parity split the one of the parity of its side's log2, log_side − level.
+    fn bump(&self, level: i64, log_side: i64) -> &tex_fetch::Memory {
+        match &self.odd {
+            Some(odd) if (log_side - level).rem_euclid(2) == 1 => odd,
+            _ => &self.mem,
+        }
+    }
+
+    /// The levels the address units read for this vector (the LOD unit's nearest level; ⌊λ⌋ and its neighbour;
+    /// or 0), and the weight of the second, frac(λ) (U8; 0 with one level).
     pub fn levels(&self, v: &[i64], at: &At) -> (Vec<i64>, i64) {
         let bias = at.bias.map_or(0, |k| v[k]);
         let l = |d: [usize; 4]| lod::exact(d.map(|k| v[k]), v[at.log_side], bias);
@@ -152,7 +172,8 @@ impl Front {
             (Some(d), Filter::NearestMip) => (vec![l(d)[lod::output::nearest]], 0),
             (Some(d), Filter::Trilinear) => {
                 let o = l(d);
-                (vec![o[lod::output::level], o[lod::output::level] + 1], o[lod::output::frac])
+                let (first, second) = neighbour(o[lod::output::level], v[at.log_side]);
+                (vec![first, second], o[lod::output::frac])
             }
             _ => (vec![0], 0),
         }
@@ -204,8 +225,9 @@ impl Front {
     /// gives zeros.
     pub fn step_all(&mut self, v: &[i64], at: &At) -> ([i64; 2], [i64; 3]) {
         if v[at.we] == 1 {
-            let mem = match (&mut self.colour, Front::writes_colour(v, at)) {
-                (Some(c), true) => c,
+            let mem = match (&mut self.colour, &mut self.odd, Front::writes_colour(v, at)) {
+                (Some(c), _, true) => c,
+                (_, Some(odd), false) if tex_fetch::level(v[at.w_log2]) % 2 == 1 => odd,
                 _ => &mut self.mem,
             };
             mem.write(v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
@@ -240,7 +262,7 @@ impl Front {
 
     /// The texel's two bytes at one level: filtered, or the nearest texel's.
     fn sample(&self, v: &[i64], at: &At, level: i64) -> [i64; 2] {
-        let b = self.sample_in(&self.mem, v, at, level, 2);
+        let b = self.sample_in(self.bump(level, v[at.log_side]), v, at, level, 2);
         [b[0], b[1]]
     }
 
@@ -269,6 +291,21 @@ impl Front {
             })
             .collect()
     }
+}
+
+/// Trilinear's two MIP levels (indices, 0 the largest) for ⌊λ⌋ = `level` on a map of side 2^log_side: ⌊λ⌋ and
+/// ⌊λ⌋ + 1, or where ⌊λ⌋ is the last level (log_side: there frac(λ) is 0, so the second is never seen) ⌊λ⌋ − 1, or
+/// for a 1 × 1 map level 1 (which the address unit clamps to 0). The two differ by one, so their sides' log2 have
+/// different parities and each is read from its own memory (`tex_fetch::Levels`); the second's weight is frac(λ).
+pub fn neighbour(level: i64, log_side: i64) -> (i64, i64) {
+    let second = if level < log_side {
+        level + 1
+    } else if level >= 1 {
+        level - 1
+    } else {
+        1
+    };
+    (level, second)
 }
 
 /// The blend of two levels' bytes b₀, b₁ (U8) by the second's weight f (U8, /2^8): `b₀·2^8 + (b₁ − b₀)·f`

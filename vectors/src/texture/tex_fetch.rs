@@ -10,7 +10,10 @@
 //! - the levels sit from the smallest up, so where a level starts does not depend on the map's size: the 1 × 1
 //!   level at word 0 of bank 0, the level of side 2^m (m ≥ 1) at base(m) = 1 + (4^(m−1) − 1)/3 = 1, 2, 6, 22, 86,
 //!   342, 1366 in every bank, each level taking 4^(m−1) words of each;
-//! - levels up to side 2^7 (a 128 × 128 map and its chain: 5,462 words a bank, of the 8,192 of a 13-bit address).
+//! - levels up to side 2^7 (a 128 × 128 map and its chain: 5,462 words a bank, of the 8,192 of a 13-bit address);
+//! - trilinear's two reads a clock split the chain by the parity of a level's side log2 (`Levels`): each half in a
+//!   memory of its own with the same layout over the levels it holds; a write of a level a half does not hold is
+//!   dropped there, and a read of one gives zeros.
 //!
 //! A vector either writes (`we` = 1: `wdata` into texel (wx, wy) of the level of side 2^w_log2; its outputs are
 //! zero) or reads the footprint of columns x0, x1 and rows y0, y1 of the level of side 2^level_log2:
@@ -38,6 +41,50 @@ crate::ports! {
 pub const MAX_LOG_SIDE: i64 = 7;
 /// A bank's address bits (2^13 = 8,192 words; the chain of a 2^7 map takes 5,462).
 pub const ADDR_BITS: u32 = 13;
+
+/// The levels a memory holds: the whole chain (one memory a map), or, for trilinear's two fetches a clock, the even
+/// levels (0, 2, 4, 6) or the odd ones (1, 3, 5, 7): ⌊λ⌋ and the level it is blended with always differ by one, so
+/// each is in a memory of its own and the pair costs one copy of the chain, not two (the parity split). Each holds
+/// its levels as `All` does, smallest first: the even ones at 0, 1, 5, 69 (1,093 words a bank: 11 address bits),
+/// the odd ones at 0, 1, 17, 273 (4,369 words: 13 bits).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Levels {
+    #[default]
+    All,
+    Even,
+    Odd,
+}
+
+impl Levels {
+    /// Whether the memory holds the level of side 2^m (m ≤ 7).
+    pub fn holds(self, m: i64) -> bool {
+        match self {
+            Levels::All => true,
+            Levels::Even => m % 2 == 0,
+            Levels::Odd => m % 2 == 1,
+        }
+    }
+
+    /// Where the level of side 2^m starts in every bank: the words of the held levels below it; for a level it
+    /// does not hold, the held level below's (the memory drops its writes and reads it as zeros).
+    pub fn base(self, m: i64) -> i64 {
+        let size = |k: i64| if k == 0 { 1 } else { 1i64 << (2 * (k - 1)) };
+        let held = |k: i64| (0..k).filter(|&j| self.holds(j)).map(size).sum::<i64>();
+        if self.holds(m) || m == 0 {
+            held(m)
+        } else {
+            held(m - 1)
+        }
+    }
+
+    /// A bank's address bits.
+    pub fn addr_bits(self) -> u32 {
+        match self {
+            Levels::Even => 11,
+            _ => ADDR_BITS,
+        }
+    }
+}
 
 /// Where the level of side 2^m starts in every bank.
 pub fn base(m: i64) -> i64 {
@@ -67,28 +114,46 @@ pub fn place(x: i64, y: i64, m: i64) -> (usize, usize) {
     ((x & 1) as usize + 2 * (y & 1) as usize, (base(m) + ((y >> 1) << m >> 1) + (x >> 1)) as usize)
 }
 
-/// The four banks, word for word as the rtl holds them.
+/// The four banks, word for word as the rtl holds them, and the levels they hold.
 #[derive(Clone)]
 pub struct Memory {
     pub banks: [Vec<u16>; 4],
+    pub levels: Levels,
 }
 
 impl Default for Memory {
     fn default() -> Memory {
-        Memory { banks: std::array::from_fn(|_| vec![0; 1 << ADDR_BITS]) }
+        Memory::holding(Levels::All)
     }
 }
 
 impl Memory {
+    /// An empty (zero) memory holding these levels.
+    pub fn holding(levels: Levels) -> Memory {
+        Memory { banks: std::array::from_fn(|_| vec![0; 1 << levels.addr_bits()]), levels }
+    }
+
+    /// (bank, word) of texel (x, y) of the level of side 2^m (inside it), in this memory's layout: `place` for the
+    /// whole chain; the word taken modulo the banks' size.
+    fn at(&self, x: i64, y: i64, m: i64) -> (usize, usize) {
+        let (b, w) = place(x, y, m);
+        let w = (w as i64 - base(m) + self.levels.base(m)) as usize;
+        (b, w & ((1 << self.levels.addr_bits()) - 1))
+    }
+
+    /// A write of a level the memory does not hold writes nothing.
     pub fn write(&mut self, m: i64, x: i64, y: i64, texel: i64) {
         let m = level(m);
-        let (b, w) = place(wrap(x, m), wrap(y, m), m);
+        if !self.levels.holds(m) {
+            return;
+        }
+        let (b, w) = self.at(wrap(x, m), wrap(y, m), m);
         self.banks[b][w] = texel as u16;
     }
 
     /// The texel at (x, y) of the level of side 2^m (inside it).
     pub fn texel(&self, m: i64, x: i64, y: i64) -> i64 {
-        let (b, w) = place(x, y, m);
+        let (b, w) = self.at(x, y, m);
         self.banks[b][w] as i64
     }
 
@@ -96,6 +161,9 @@ impl Memory {
     /// x1, and row y0 if y0 mod 2 = q, else y1; each output takes the word of its column's and row's bank.
     pub fn footprint(&self, m: i64, x: [i64; 2], y: [i64; 2]) -> [i64; 4] {
         let m = level(m);
+        if !self.levels.holds(m) {
+            return [0; 4]; // a level the memory does not hold reads as zeros
+        }
         let (x, y) = (x.map(|c| wrap(c, m)), y.map(|c| wrap(c, m)));
         let col = |p: i64| if x[0] & 1 == p { x[0] } else { x[1] };
         let row = |q: i64| if y[0] & 1 == q { y[0] } else { y[1] };
@@ -345,5 +413,35 @@ mod tests {
         let a = accuracy(0, 0);
         assert_eq!(a[0].stats.max, 0.0, "{}", a[0].stats.argmax);
         assert!(a[0].stats.count > 1000, "{}", a[0].stats.count);
+    }
+
+    /// The parity split's layouts: the levels each half holds start where the sizes of those below end (the 1 × 1
+    /// level 1 word, side 2^m 4^(m−1)): even 0, 1 (after the 1 × 1), 5 (+4), 69 (+64), ending at 1,093 (+1,024)
+    /// inside 2^11; odd 0, 1, 17 (+16), 273 (+256), ending at 4,369 (+4,096) inside 2^13; the whole chain's as `base`.
+    /// Two memories loaded with a whole chain hold each texel once, and each reads back what `All` reads.
+    #[test]
+    fn the_parity_halves_hold_every_level_once_and_read_what_the_whole_chain_does() {
+        assert_eq!([0, 2, 4, 6].map(|m| Levels::Even.base(m)), [0, 1, 5, 69]);
+        assert_eq!([1, 3, 5, 7].map(|m| Levels::Odd.base(m)), [0, 1, 17, 273]);
+        assert!(Levels::Even.base(6) + 1024 <= 1 << Levels::Even.addr_bits());
+        assert!(Levels::Odd.base(7) + 4096 <= 1 << Levels::Odd.addr_bits());
+        assert!((0..=7).all(|m| Levels::All.base(m) == base(m)));
+        let (mut all, mut even, mut odd) =
+            (Memory::default(), Memory::holding(Levels::Even), Memory::holding(Levels::Odd));
+        for v in load(MAX_LOG_SIDE, pattern) {
+            all.step(&v);
+            even.step(&v);
+            odd.step(&v);
+        }
+        let nonzero = |m: &Memory| m.banks.iter().map(|b| b.iter().filter(|&&w| w != 0).count()).sum::<usize>();
+        assert!(nonzero(&even) + nonzero(&odd) == nonzero(&all) && nonzero(&all) > 21_000);
+        for m in 0..=MAX_LOG_SIDE {
+            let half = if m % 2 == 0 { &even } else { &odd };
+            for (x, y) in [(0, 0), ((1 << m) - 1, 0), (0, (1 << m) - 1), ((1 << m) - 1, (1 << m) - 1), (5, 3)] {
+                let (x, y) = (wrap(x, m), wrap(y, m));
+                let f = |mem: &Memory| mem.footprint(m, [x, wrap(x + 1, m)], [y, wrap(y + 1, m)]);
+                assert_eq!(f(half), f(&all), "level {m} at ({x}, {y})");
+            }
+        }
     }
 }
