@@ -30,7 +30,7 @@ pub const EVEN_ADDR_BITS: usize = 11;
 /// levels below it (the 1 × 1 level one word, the side 2^m one 4^(m−1)); a level not held starts where the held
 /// level below it does (its writes are dropped and its reads give zeros).
 pub fn bases(p: usize) -> [u64; 8] {
-    let held = |m: usize| p == ALL || (m % 2 == 0) == (p == EVEN);
+    let held = |m: usize| p == ALL || m.is_multiple_of(2) == (p == EVEN);
     let size = |k: usize| if k == 0 { 1u64 } else { 1 << (2 * (k - 1)) };
     std::array::from_fn(|m| {
         let top = if held(m) || m == 0 { m } else { m - 1 };
@@ -53,7 +53,8 @@ crate::block! {
 impl<const P: usize> Default for LevelBase<P> {
     fn default() -> Self {
         let b = bases(P);
-        let mask: u64 = (0..8).filter(|&m| P == ALL || (m % 2 == 0) == (P == EVEN)).map(|m| 1 << m).sum();
+        let mask: u64 =
+            (0..8).filter(|&m: &usize| P == ALL || m.is_multiple_of(2) == (P == EVEN)).map(|m| 1 << m).sum();
         Self {
             m: Default::default(),
             base: Default::default(),
