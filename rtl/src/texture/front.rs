@@ -434,7 +434,7 @@ pub mod trilinear {
             // the second level: ⌊λ⌋ + 1 below the last level, else ⌊λ⌋ − 1, else (a 1 × 1 map) 1
             self.next_level.next = self.lod.level.val() + 1; // ≤ 9 in 4 bits: exact
             self.prev_level.next = self.lod.level.val() - 1; // wraps at 0 on purpose: not read there
-            self.side_log2.next = self.pos_dly.q.val().get_bits::<4>(40);
+            self.side_log2.next = self.pos_dly.q.val().get_bits::<4>(40); // bit copies: the U4 it was
             self.second.next = 1.into();
             if self.lod.level.val().any() {
                 self.second.next = self.prev_level.val();
