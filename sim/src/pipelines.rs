@@ -229,7 +229,9 @@ pub const fn surface(v: Variant) -> Choices {
     cartesian(v.decode, Per::Surface, v.gloss, if v.nearest { Filter::Nearest } else { Filter::Bilinear })
 }
 
-const fn one_light(encoding: Encoding, gloss: bool, index_bits: u32) -> Choices {
+/// The choices of a pipeline that lights a surface with one light and filters bilinearly, fed by the host (the
+/// polar, height and palette pipelines).
+pub const fn one_light(encoding: Encoding, gloss: bool, index_bits: u32) -> Choices {
     Choices {
         encoding,
         per: Per::Surface,

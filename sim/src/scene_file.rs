@@ -659,15 +659,6 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     }
     // the choices that pick the pipeline, as the pipeline holds them (`Choices`)
     let mut settings = Settings::default();
-    let one = |encoding, gloss, index_bits| Choices {
-        encoding,
-        per: Per::Surface,
-        gloss,
-        filter: Filter::Bilinear,
-        index_bits,
-        fetch: Fetch::Host,
-        colour: false,
-    };
     if !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
         unused(
             mat.colour_map.as_ref().map(|c| c.span()),
@@ -729,14 +720,14 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             if let Some(w) = &mat.weight {
                 settings.h = w.get_ref().0;
             }
-            one(encoding, false, 0)
+            crate::pipelines::one_light(encoding, false, 0)
         }
         Encoding::Heights => {
             one_light("height")?;
             no(gloss.clone(), "gloss", "height")?;
             no(power, "power", "height")?;
             no(weight, "weight", "height")?;
-            one(encoding, false, 0)
+            crate::pipelines::one_light(encoding, false, 0)
         }
         Encoding::Palette => {
             one_light("palette")?;
@@ -747,7 +738,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             };
             let s_n = n.get_ref().0 as usize;
             settings.palette = Some(s_n);
-            one(encoding, true, crate::pipelines::palette_index_bits(s_n))
+            crate::pipelines::one_light(encoding, true, crate::pipelines::palette_index_bits(s_n))
         }
     };
     let pipeline = crate::pipelines::choose(&choices)
