@@ -27,15 +27,12 @@ pub const ODD: usize = 2;
 pub const EVEN_ADDR_BITS: usize = 11;
 
 /// Where each level starts in a bank of a memory holding the levels `p` (ALL, EVEN, ODD): the words of the held
-/// levels below it (the 1 × 1 level one word, the side 2^m one 4^(m−1)); a level not held starts where the held
-/// level below it does (its writes are dropped and its reads give zeros).
+/// levels below it (the 1 × 1 level one word, the side 2^m one 4^(m−1)); a level not held is never placed (its
+/// writes are dropped and its reads give zeros).
 pub fn bases(p: usize) -> [u64; 8] {
     let held = |m: usize| p == ALL || m.is_multiple_of(2) == (p == EVEN);
     let size = |k: usize| if k == 0 { 1u64 } else { 1 << (2 * (k - 1)) };
-    std::array::from_fn(|m| {
-        let top = if held(m) || m == 0 { m } else { m - 1 };
-        (0..top).filter(|&k| held(k)).map(size).sum()
-    })
+    std::array::from_fn(|m| (0..m).filter(|&k| held(k)).map(size).sum())
 }
 
 crate::block! {

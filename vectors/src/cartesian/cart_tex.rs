@@ -595,7 +595,7 @@ mod tests {
         for y in 0..4 {
             for x in 0..4 {
                 front::put_write(&mut v, &at, 2, x, y, pattern(2, x, y));
-                assert_eq!(m.step(&v), bilinear_matte_zero(host, ports, &v), "a write leaves as zeros");
+                assert_eq!(m.step(&v), write_outputs(host, ports, &v), "a write leaves as zeros");
                 front::put_colour_write(&mut v, &at, 2, x, y, colour_pattern(2, x, y));
                 m.step(&v);
             }
@@ -622,7 +622,7 @@ mod tests {
     }
 
     /// The host's outputs for a write vector: every texel and the destination colour zero.
-    fn bilinear_matte_zero(host: &UnitModel, ports: &[Port], v: &[i64]) -> Vec<i64> {
+    fn write_outputs(host: &UnitModel, ports: &[Port], v: &[i64]) -> Vec<i64> {
         (host.exact)(&host_vector(host, ports, v, [0, 0], [0; 3]))
     }
 }

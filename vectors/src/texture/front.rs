@@ -225,12 +225,18 @@ impl Front {
     /// gives zeros.
     pub fn step_all(&mut self, v: &[i64], at: &At) -> ([i64; 2], [i64; 3]) {
         if v[at.we] == 1 {
-            let mem = match (&mut self.colour, &mut self.odd, Front::writes_colour(v, at)) {
-                (Some(c), _, true) => c,
-                (_, Some(odd), false) if tex_fetch::level(v[at.w_log2]) % 2 == 1 => odd,
-                _ => &mut self.mem,
-            };
-            mem.write(v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
+            // the colour map's memory, or the bump map's (both halves take it, as the rtl's two fetches do: each
+            // keeps the levels it holds)
+            let (m, x, y, t) = (v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
+            match (&mut self.colour, Front::writes_colour(v, at)) {
+                (Some(c), true) => c.write(m, x, y, t),
+                _ => {
+                    self.mem.write(m, x, y, t);
+                    if let Some(odd) = &mut self.odd {
+                        odd.write(m, x, y, t);
+                    }
+                }
+            }
             return ([0, 0], [0; 3]);
         }
         (self.read(v, at), self.read_colour(v, at))

@@ -65,16 +65,11 @@ impl Levels {
         }
     }
 
-    /// Where the level of side 2^m starts in every bank: the words of the held levels below it; for a level it
-    /// does not hold, the held level below's (the memory drops its writes and reads it as zeros).
+    /// Where the level of side 2^m starts in every bank: the words of the held levels below it (a level the memory
+    /// does not hold is never placed: its writes are dropped and it reads as zeros).
     pub fn base(self, m: i64) -> i64 {
         let size = |k: i64| if k == 0 { 1 } else { 1i64 << (2 * (k - 1)) };
-        let held = |k: i64| (0..k).filter(|&j| self.holds(j)).map(size).sum::<i64>();
-        if self.holds(m) || m == 0 {
-            held(m)
-        } else {
-            held(m - 1)
-        }
+        (0..m).filter(|&j| self.holds(j)).map(size).sum()
     }
 
     /// A bank's address bits.
