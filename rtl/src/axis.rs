@@ -12,6 +12,8 @@
 //! - `m_axis_tvalid` and `s_axis_tready` are functions of registers and `aresetn` only: no valid waits for a ready;
 //! - a word offered on `m_axis_tdata` stays there, unchanged, until `m_axis_tready` takes it;
 //! - no beat is lost, duplicated or reordered;
+//! - a unit that takes a vector every k clocks at most (`StreamUnit::INTERVAL`, a k-clock variant) gets one: after
+//!   a beat taken (of either stream) `s_axis_tready` is low for k − 1 clocks;
 //! - on a clock edge with `aresetn` low the FIFO and the count empty, and for `LATENCY` clocks after it the wrapper
 //!   takes nothing (`s_axis_tready` low) and drops what the unit still puts out, the beats taken before the reset,
 //!   so it emits nothing until new input arrives. The unit itself has no reset (its registers hold data, and its
@@ -108,6 +110,15 @@ crate::block! {
         held: DFF<Bits<C>>,
         /// clocks left of the flush after a reset, 0 ..= LATENCY
         flush: DFF<Bits<C>>,
+        /// a beat offered on another stream (`AxisMapCtl`'s map write), taken whenever this one is ready: it
+        /// paces as a beat does (the offer, not the take, comes in: a take made outside from `s_ready` would
+        /// come back in as a loop through this block)
+        pub other_valid: Signal<In, Bit>,
+        /// clocks left before the unit takes its next vector, 0 ..= INTERVAL − 1 (a unit taking one a clock: 0)
+        gap: DFF<Bits<C>>,
+        gap_len: Constant<Bits<C>>,
+        w_gap: Signal<Local, Bit>,
+        w_other: Signal<Local, Bit>,
         /// the word offered next was written on the edge that read the RAM: kept here instead
         byp: DFF<Bit>,
         byp_data: DFF<Bits<W>>,
@@ -128,11 +139,13 @@ crate::block! {
 }
 
 impl<const W: usize, const A: usize, const C: usize> AxisCtl<W, A, C> {
-    /// A FIFO of `depth` places (≤ 2^A) behind a unit of `latency` clocks.
-    pub fn new(depth: usize, latency: usize) -> Self {
+    /// A FIFO of `depth` places (≤ 2^A) behind a unit of `latency` clocks that takes a vector every `interval`
+    /// clocks at most (`StreamUnit::INTERVAL`).
+    pub fn new(depth: usize, latency: usize, interval: usize) -> Self {
         assert!(C == A + 1, "AxisCtl: C = A + 1 (A = {A}, C = {C})");
         assert!((1..=1 << A).contains(&depth), "AxisCtl: depth {depth} does not fit 2^{A} places");
         assert!(latency < 1 << C, "AxisCtl: latency {latency} does not fit {C} bits");
+        assert!((1..=latency.max(1)).contains(&interval), "AxisCtl: interval {interval} past latency {latency}");
         Self {
             clock: Default::default(),
             aresetn: Default::default(),
@@ -150,6 +163,11 @@ impl<const W: usize, const A: usize, const C: usize> AxisCtl<W, A, C> {
             count: Default::default(),
             held: Default::default(),
             flush: Default::default(),
+            other_valid: Default::default(),
+            gap: Default::default(),
+            gap_len: Constant::new(Bits::<C>::from(interval as u64 - 1)),
+            w_gap: Default::default(),
+            w_other: Default::default(),
             byp: Default::default(),
             byp_data: Default::default(),
             full: Constant::new(Bits::<C>::from(depth as u64)),
@@ -172,13 +190,16 @@ impl<const W: usize, const A: usize, const C: usize> AxisCtl<W, A, C> {
 impl<const W: usize, const A: usize, const C: usize> Logic for AxisCtl<W, A, C> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, wp, rp, count, held, flush, byp, byp_data);
+        dff_setup!(self, clock, wp, rp, count, held, flush, gap, byp, byp_data);
         self.ram.read_clock.next = self.clock.val();
         self.ram.write_clock.next = self.clock.val();
         // the handshakes: each a function of registers and aresetn (none waits on the other side's ready)
         self.w_run.next = self.aresetn.val();
         self.w_idle.next = self.flush.q.val() == 0;
-        self.w_ready.next = self.w_run.val() & self.w_idle.val() & (self.held.q.val() != self.full.val());
+        // a unit that takes a vector every INTERVAL clocks: none while the gap after the last one runs
+        self.w_gap.next = self.gap.q.val().any();
+        self.w_ready.next =
+            self.w_run.val() & self.w_idle.val() & (self.held.q.val() != self.full.val()) & !self.w_gap.val();
         self.w_take.next = self.w_ready.val() & self.s_valid.val();
         self.w_valid.next = self.w_run.val() & (self.count.q.val() != 0);
         self.w_pop.next = self.w_valid.val() & self.m_ready.val();
@@ -227,6 +248,14 @@ impl<const W: usize, const A: usize, const C: usize> Logic for AxisCtl<W, A, C> 
         if self.w_pop.val() {
             self.held.d.next = self.w_held.val() - 1; // ≥ 0: a word handed out was held, exact
         }
+        self.gap.d.next = self.gap.q.val();
+        if self.w_gap.val() {
+            self.gap.d.next = self.gap.q.val() - 1; // > 0 here: no wrap
+        }
+        self.w_other.next = self.w_ready.val() & self.other_valid.val();
+        if self.w_take.val() | self.w_other.val() {
+            self.gap.d.next = self.gap_len.val();
+        }
         self.flush.d.next = self.flush.q.val();
         if !self.w_idle.val() {
             self.flush.d.next = self.flush.q.val() - 1; // > 0 here: no wrap
@@ -238,6 +267,7 @@ impl<const W: usize, const A: usize, const C: usize> Logic for AxisCtl<W, A, C> 
             self.held.d.next = 0.into();
             self.byp.d.next = false;
             self.flush.d.next = self.flush_len.val();
+            self.gap.d.next = 0.into();
         }
     }
 }
@@ -271,7 +301,7 @@ crate::block! {
 
 impl<const W: usize, const A: usize, const C: usize, const L: usize> AxisMapCtl<W, A, C, L> {
     /// As `AxisCtl::new`, for a unit of latency `L`.
-    pub fn new(depth: usize) -> Self {
+    pub fn new(depth: usize, interval: usize) -> Self {
         Self {
             clock: Default::default(),
             aresetn: Default::default(),
@@ -286,7 +316,7 @@ impl<const W: usize, const A: usize, const C: usize, const L: usize> AxisMapCtl<
             m_ready: Default::default(),
             m_valid: Default::default(),
             m_data: Default::default(),
-            fifo: AxisCtl::new(depth, L),
+            fifo: AxisCtl::new(depth, L, interval),
             marks: Default::default(),
             w_write: Default::default(),
         }
@@ -306,6 +336,7 @@ impl<const W: usize, const A: usize, const C: usize, const L: usize> Logic for A
         self.s_ready.next = self.fifo.s_ready.val() & !self.map_valid.val();
         self.fifo.s_valid.next = self.s_valid.val() & !self.map_valid.val();
         self.accept.next = self.fifo.accept.val() | self.w_write.val();
+        self.fifo.other_valid.next = self.map_valid.val(); // a write is a vector of the unit's too
         self.we.next = self.w_write.val();
         // a write's output is dropped: the mark that went in with it comes out beside it
         self.marks.d.next = self.w_write.val();
@@ -511,7 +542,9 @@ fn wiring<U: StreamUnit>(ow: usize) -> Verilog {
         "ctl$m_ready = m_axis_tready;".into(),
         "uut$valid_in = ctl$accept;".into(),
     ];
-    if !U::MAP.is_empty() {
+    if U::MAP.is_empty() {
+        v.push("ctl$other_valid = 1'b0;".into());
+    } else {
         v.push("ctl$map_valid = s_axis_map_tvalid;".into());
     }
     let (mut p, mut m) = (0, 0);
@@ -563,11 +596,11 @@ impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: u
             m_axis_tvalid: Default::default(),
             m_axis_tready: Default::default(),
             uut: U::build(),
-            ctl: AxisCtl::new(places, U::LATENCY),
+            ctl: AxisCtl::new(places, U::LATENCY, U::INTERVAL),
         }
     }
     fn ctl() -> Self::Ctl {
-        AxisCtl::new(depth(U::LATENCY), U::LATENCY)
+        AxisCtl::new(depth(U::LATENCY), U::LATENCY, U::INTERVAL)
     }
     fn fifo() -> (usize, usize, usize) {
         (depth(U::LATENCY), 1 << A, OW)
@@ -620,11 +653,11 @@ impl<
             m_axis_tvalid: Default::default(),
             m_axis_tready: Default::default(),
             uut: U::build(),
-            ctl: AxisMapCtl::new(places),
+            ctl: AxisMapCtl::new(places, U::INTERVAL),
         }
     }
     fn ctl() -> Self::Ctl {
-        AxisMapCtl::new(depth(U::LATENCY))
+        AxisMapCtl::new(depth(U::LATENCY), U::INTERVAL)
     }
     fn fifo() -> (usize, usize, usize) {
         (depth(U::LATENCY), 1 << A, OW)
@@ -664,6 +697,7 @@ impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: u
         self.ctl.aresetn.next = self.aresetn.val();
         self.ctl.s_valid.next = self.s_axis_tvalid.val();
         self.ctl.m_ready.next = self.m_axis_tready.val();
+        self.ctl.other_valid.next = false; // one stream
         let ins = unit_inputs::<U, IW, 8>(self.s_axis_tdata.val(), Bits::default(), false);
         self.uut.set_inputs(self.ctl.accept.val(), &ins);
         self.ctl.push.next = self.uut.valid_out();
@@ -678,6 +712,7 @@ impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: u
         self.ctl.aresetn.connect();
         self.ctl.s_valid.connect();
         self.ctl.m_ready.connect();
+        self.ctl.other_valid.connect();
         self.ctl.push.connect();
         self.ctl.push_data.connect();
         self.uut.connect_inputs();

@@ -16,6 +16,10 @@ pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
     /// bit) first, then the address and data ports, all among `INPUTS`. The AXI4-Stream wrapper takes it as a
     /// second stream (`axis::AxisMap`). Empty for every other unit.
     const MAP: &'static [&'static str] = &[];
+    /// Clocks a vector takes: 1 for every unit that takes one a clock; k for a variant that takes k clocks a pixel
+    /// to save area (`texture::front::TexTrilinearTwoPass`), which may be given a vector at most every k-th clock
+    /// (what comes on the clocks between is not read). The harnesses and the AXI4-Stream wrapper keep that gap.
+    const INTERVAL: usize = 1;
     fn build() -> Self;
     fn set_clock(&mut self, level: bool);
     fn clock_level(&self) -> bool;
@@ -52,7 +56,7 @@ macro_rules! stream_block {
     (
         $(#[$attr:meta])*
         pub struct $t:ident $(< $(const $g:ident : $gt:ty $(= $gd:literal)?),* >)?
-            : unit($name:expr, $latency:expr $(, map = $map:expr)?) {
+            : unit($name:expr, $latency:expr $(, map = $map:expr)? $(, interval = $iv:expr)?) {
             in { $($i:ident : $it:ty),* $(,)? }
             out { $($o:ident : $ot:ty),* $(,)? }
             $($(#[$fa:meta])* $fv:vis $f:ident : $ft:ty),* $(,)?
@@ -76,6 +80,7 @@ macro_rules! stream_block {
             const INPUTS: &'static [(&'static str, usize)] = &[$((stringify!($i), <$it as Synth>::BITS)),*];
             const OUTPUTS: &'static [(&'static str, usize)] = &[$((stringify!($o), <$ot as Synth>::BITS)),*];
             $(const MAP: &'static [&'static str] = $map;)?
+            $(const INTERVAL: usize = $iv;)?
             fn build() -> Self {
                 Self::default()
             }
@@ -105,6 +110,12 @@ macro_rules! stream_block {
             }
         }
     };
+}
+
+/// Input vectors (bit patterns) as a unit's clock slots: each followed by `INTERVAL − 1` empty slots, so a unit
+/// that takes k clocks a vector gets one every k-th clock (one a clock for every other unit).
+pub fn paced<U: StreamUnit>(vectors: impl IntoIterator<Item = Vec<u64>>) -> impl Iterator<Item = Option<Vec<u64>>> {
+    vectors.into_iter().flat_map(|v| std::iter::once(Some(v)).chain(std::iter::repeat_n(None, U::INTERVAL - 1)))
 }
 
 /// One clocked run of a unit over a stream of (valid, values) slots: a plain loop calling rust-hdl's `simulate`

@@ -68,7 +68,7 @@ fn method(filter: Filter, chain: &[Vec<[f64; 3]>], t: usize, px: &crate::raster:
         Filter::Nearest => texel(0),
         Filter::NearestMip => texel(((l + 0.5).floor() as usize).min(last)),
         Filter::Bilinear => bilinear(0),
-        Filter::Trilinear => {
+        Filter::Trilinear | Filter::TrilinearTwoPass => {
             let (k, f) = (l.floor() as usize, l - l.floor());
             if k >= last {
                 return bilinear(last);

@@ -354,6 +354,10 @@ impl Pipeline for CartTex {
             pipelines::Filter::Trilinear => {
                 "bilinear on the two MIP levels round the LOD unit's λ, blended by its fraction"
             }
+            pipelines::Filter::TrilinearTwoPass => {
+                "bilinear on the two MIP levels round the LOD unit's λ, read in two passes (two clocks a pixel), \
+                 blended by its fraction"
+            }
         };
         let texels = match self.decode() {
             Decode::HemiOct => "hemi-octahedral texels",

@@ -47,6 +47,9 @@ pub enum Filter {
     NearestMip,
     /// bilinear on the two MIP levels round λ, blended by its fraction (the texture unit's LOD unit)
     Trilinear,
+    /// trilinear, its two levels read in two passes of one set of the texture unit's blocks: a pixel every other
+    /// clock, for fewer units (the same pixels as `Trilinear`)
+    TrilinearTwoPass,
 }
 
 impl Filter {
@@ -57,6 +60,7 @@ impl Filter {
             Filter::Nearest => "nearest",
             Filter::NearestMip => "nearest_mip",
             Filter::Trilinear => "trilinear",
+            Filter::TrilinearTwoPass => "trilinear_two_pass",
         }
     }
 
@@ -67,7 +71,7 @@ impl Filter {
             Filter::Bilinear => F::Bilinear,
             Filter::Nearest => F::Nearest,
             Filter::NearestMip => F::NearestMip,
-            Filter::Trilinear => F::Trilinear,
+            Filter::Trilinear | Filter::TrilinearTwoPass => F::Trilinear,
         }
     }
 }
@@ -425,6 +429,14 @@ pub static PIPELINES: &[Row] = &[
         "cart_pipeline_matte",
         cartesian(S, Per::Vertex, false, Filter::Bilinear),
         Filter::Trilinear,
+        &["lod", "tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
+    ),
+    tex(
+        "cart_tex_trilinear_two_pass_matte",
+        "Cartesian, matte, texture unit, trilinear in two passes (2 clocks a pixel)",
+        "cart_pipeline_matte",
+        cartesian(S, Per::Vertex, false, Filter::Bilinear),
+        Filter::TrilinearTwoPass,
         &["lod", "tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "light_iter", "dot3", "blend"],
     ),
     tex(

@@ -94,8 +94,9 @@ impl Image {
     }
 }
 
-fn patterns(m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Option<Vec<u64>>> {
-    inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).collect()
+/// The inputs as the unit's clock slots (a vector every `INTERVAL` clocks).
+fn patterns<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Option<Vec<u64>>> {
+    rtl::stream::paced::<U>(inputs.iter().map(|v| vectors::unit::to_patterns(v, m.inputs))).collect()
 }
 
 fn from_outputs(m: &UnitModel, size: usize, outs: &[Vec<u64>], seconds: f64) -> Image {
@@ -143,7 +144,7 @@ pub fn on_threads(path: &str, threads: usize) -> String {
 pub fn rust_hdl<U: StreamUnit>(m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image {
     let t = Instant::now();
     let mut r = Runner::<U>::new();
-    let slots = patterns(m, &p.inputs);
+    let slots = patterns::<U>(m, &p.inputs);
     let got = r.run(slots.into_iter().enumerate().map(|(k, s)| {
         if k % 1024 == 0 {
             tick(k);
@@ -185,8 +186,9 @@ pub fn verilator<U: StreamUnit>(
     threads: usize,
 ) -> Result<VerilatorRun, String> {
     let built = cosim::build::<U>(Simulator::Verilator, dir)?;
-    let slots = patterns(m, &p.inputs);
-    // one run timed from the slots to the image's output vectors, the fastest of RUNS kept
+    let slots = patterns::<U>(m, &p.inputs);
+    let prologue = p.prologue * U::INTERVAL; // its slots
+                                             // one run timed from the slots to the image's output vectors, the fastest of RUNS kept
     let fastest = |run: &dyn Fn() -> Result<Vec<i64>, String>| -> Result<Image, String> {
         let mut best: Option<Image> = None;
         for _ in 0..RUNS {
@@ -207,7 +209,7 @@ pub fn verilator<U: StreamUnit>(
     // its own thread
     let single = fastest(&|| Ok(outs_of(m, &built.run_frame(&slots)?, p.prologue)))?;
     let image = fastest(&|| {
-        let parts = built.run_split_with(&slots, threads, p.prologue, |f| outs_of(m, &f, 0))?;
+        let parts = built.run_split_with(&slots, threads, prologue, |f| outs_of(m, &f, 0))?;
         Ok(parts.concat())
     })?;
     Ok(VerilatorRun { image, single, threads, bare_cycles_per_second })

@@ -173,7 +173,7 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
     }
     fn outputs(&self, m: &UnitModel, inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
         let mut r = rtl::stream::Runner::<U>::new();
-        let got = r.run(inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))));
+        let got = r.run(rtl::stream::paced::<U>(inputs.iter().map(|v| vectors::unit::to_patterns(v, m.inputs))));
         got.outputs.iter().map(|o| vectors::unit::from_patterns(o, m.outputs)).collect()
     }
     fn write_vcd(&self, m: &UnitModel, inputs: &[Vec<i64>], path: &Path) -> Result<(), String> {

@@ -24,8 +24,8 @@
 //! # green = "opengl"              # normal_map: opengl (green up the image) | directx (green down)
 //! encoding = "seed"               # seed | hemi_oct | polar | polar_dc255 | heights | palette
 //! # palette = 256                 # palette: s_N, 1 to 4,096
-//! # filter = "bilinear"           # seed, hemi_oct: nearest | nearest_mip | bilinear | trilinear
-//! # lod_bias = -1.0               # nearest_mip, trilinear: levels added to λ, −8 to 8 − 1/256 in 1/256
+//! # filter = "bilinear"           # seed, hemi_oct: nearest | nearest_mip | bilinear | trilinear | trilinear_two_pass
+//! # lod_bias = -1.0               # the MIP filters: levels added to λ, −8 to 8 − 1/256 in 1/256
 //! # fetch = "unit"                # seed, hemi_oct: unit (the texture unit's memory) | host
 //! # wrap = "repeat"               # repeat | clamp, or [u, v] one each; default: the surface's own (all but heights)
 //!
@@ -635,7 +635,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             return Err(at.err(
                 b.span(),
                 format!(
-                    "[bump] lod_bias: only a MIP filter (nearest_mip, trilinear) reads a level of detail; filter = \"{}\"",
+                    "[bump] lod_bias: only a MIP filter (nearest_mip, trilinear, trilinear_two_pass) reads a level of detail; filter = \"{}\"",
                     filter.name()
                 ),
             ));

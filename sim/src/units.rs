@@ -195,6 +195,18 @@ pub static UNITS: &[Unit] = &[
         ("filter$3$wide", "as filter$0$wide"),
         ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
     ]),
+    unit!(map: &vectors::cart_tex::trilinear_two_pass_matte::MODEL, rtl::cart_tex::CartTexTrilinearTwoPassMatte)
+        .waiving(&[
+            ("light$valid_out", "as in cart_pipeline"),
+            ("light_norm$valid_out", "as in cart_pipeline"),
+            ("lod$nearest", "as in cart_tex_trilinear_matte"),
+            (
+                "fetch$valid_out",
+                "the front's valid follows each vector's second pass from the address unit, not the fetch's",
+            ),
+            ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
+            ("filter$1$wide", "as filter$0$wide"),
+        ]),
     unit!(map: &vectors::cart_tex::bilinear_hemi_oct::MODEL, rtl::cart_tex::CartTexBilinearHemiOct).waiving(&[
         ("filter$0$wide", "as in cart_tex_bilinear"),
         ("filter$1$wide", "as filter$0$wide"),

@@ -29,7 +29,7 @@ pub fn trace<U: StreamUnit>(
     w: Box<dyn std::io::Write>,
 ) -> std::io::Result<Vec<Vec<u64>>> {
     let mut r = Runner::<U>::with_vcd(Some(w));
-    let slots = inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, model.inputs)));
+    let slots = rtl::stream::paced::<U>(inputs.iter().map(|v| vectors::unit::to_patterns(v, model.inputs)));
     let got = r.run(slots);
     r.finish()?;
     Ok(got.outputs)

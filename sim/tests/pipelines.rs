@@ -11,6 +11,7 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("seed", false, "nearest", false),
     ("seed", false, "nearest_mip", false),
     ("seed", false, "trilinear", false),
+    ("seed", false, "trilinear_two_pass", false),
     ("hemi_oct", false, "bilinear", true),
     ("seed", true, "bilinear", true),
     ("seed", true, "bilinear", false),
@@ -47,7 +48,7 @@ fn expected(
         let surface = if per_surface { "_surface" } else { "" };
         return Some(format!("cart_tex_{filter}{surface}{hemi}{matte}"));
     }
-    if matches!(filter, "nearest_mip" | "trilinear") || (filter == "nearest" && !per_surface) {
+    if matches!(filter, "nearest_mip" | "trilinear" | "trilinear_two_pass") || (filter == "nearest" && !per_surface) {
         return None;
     }
     let nearest = filter == "nearest";
@@ -76,7 +77,14 @@ fn every_scene_the_reader_takes_has_exactly_one_pipeline_and_every_pipeline_a_sc
     for encoding in ["seed", "hemi_oct", "polar", "polar_dc255", "heights", "palette"] {
         for per in [None, Some("vertex"), Some("surface")] {
             for gloss in [None, Some(0), Some(96)] {
-                for filter in [None, Some("bilinear"), Some("nearest"), Some("nearest_mip"), Some("trilinear")] {
+                for filter in [
+                    None,
+                    Some("bilinear"),
+                    Some("nearest"),
+                    Some("nearest_mip"),
+                    Some("trilinear"),
+                    Some("trilinear_two_pass"),
+                ] {
                     for (palette, fetch) in [None, Some(256), Some(300), Some(4096)]
                         .into_iter()
                         .flat_map(|p| [(p, None), (p, Some("unit")), (p, Some("host"))])
@@ -151,7 +159,9 @@ fn no_combination_of_choices_has_two_pipelines() {
     for encoding in encodings {
         for per in [Per::Vertex, Per::Surface] {
             for gloss in [false, true] {
-                for filter in [Filter::Bilinear, Filter::Nearest, Filter::NearestMip, Filter::Trilinear] {
+                for filter in
+                    [Filter::Bilinear, Filter::Nearest, Filter::NearestMip, Filter::Trilinear, Filter::TrilinearTwoPass]
+                {
                     for (index_bits, fetch) in [0, 8, 12].into_iter().flat_map(|b| [(b, Fetch::Unit), (b, Fetch::Host)])
                     {
                         for colour in [false, true] {

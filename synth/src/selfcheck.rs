@@ -1,6 +1,7 @@
 //! A self-checking testbench that travels with an exported unit: `<unit>_tb.v` and the unit's vectors as
 //! `$readmemh` files (`<unit>_in.hex`, `<unit>_out.hex`), so that a user's own simulator proves the Verilog it was
-//! handed without this tool. The bench drives one vector per clock, checks every output against the expected one
+//! handed without this tool. The bench drives one vector per clock (per INTERVAL clocks for a unit that takes
+//! several a vector, `StreamUnit::INTERVAL`), checks every output against the expected one
 //! and its cycle against the unit's latency, prints `N passed, N failed`, and ends with `$fatal` (a non-zero exit
 //! under Icarus and Verilator) when anything failed.
 //!
@@ -68,15 +69,19 @@ fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(s, "//   $ verilator --binary -Wno-fatal --top-module {u}_tb {u}_tb.v {u}.v && ./obj_dir/V{u}_tb");
     let _ = writeln!(
         s,
-        "// One vector per clock, back to back, changed on the falling edge; each output is checked against the"
+        "// One vector every INTERVAL clocks (every clock where INTERVAL is 1: back to back), changed on the falling"
     );
-    let _ =
-        writeln!(s, "// expected one and must leave LATENCY - 1 rising edges after the one that took its input in.");
+    let _ = writeln!(
+        s,
+        "// edge; each output is checked against the expected one and must leave LATENCY - 1 rising edges after"
+    );
+    let _ = writeln!(s, "// the one that took its input in.");
     let _ = writeln!(s, "`timescale 1ns/1ps\nmodule {u}_tb;");
     let _ = writeln!(
         s,
-        "  localparam N = {n};\n  localparam LATENCY = {};\n  localparam IW = {iw};\n  localparam OW = {ow};",
-        U::LATENCY
+        "  localparam N = {n};\n  localparam LATENCY = {};\n  localparam INTERVAL = {};\n  localparam IW = {iw};\n  localparam OW = {ow};",
+        U::LATENCY,
+        U::INTERVAL
     );
     let _ = writeln!(s, "  // stimulus word: {}", layout(U::INPUTS));
     let _ = writeln!(s, "  // response word: {}", layout(U::OUTPUTS));
@@ -105,17 +110,20 @@ fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
         "        failed = failed + 1;\n        $display(\"FAIL: an output past the last vector, cycle %0d\", cycle);"
     );
     let _ = writeln!(s, "      end else begin");
-    let _ = writeln!(s, "        if (cycle != seen + LATENCY - 1) begin");
-    let _ = writeln!(s, "          failed = failed + 1;\n          $display(\"FAIL: vector %0d left in cycle %0d, expected %0d\", seen, cycle, seen + LATENCY - 1);");
+    let _ = writeln!(s, "        if (cycle != seen * INTERVAL + LATENCY - 1) begin");
+    let _ = writeln!(s, "          failed = failed + 1;\n          $display(\"FAIL: vector %0d left in cycle %0d, expected %0d\", seen, cycle, seen * INTERVAL + LATENCY - 1);");
     let _ = writeln!(s, "        end else if (resp !== want_mem[seen]) begin");
     let _ = writeln!(s, "          failed = failed + 1;\n          $display(\"FAIL: vector %0d: got %h, expected %h\", seen, resp, want_mem[seen]);");
     let _ = writeln!(s, "        end else begin\n          passed = passed + 1;\n        end");
     let _ = writeln!(s, "        seen = seen + 1;\n      end\n    end else if (valid_out !== 1'b0) begin");
     let _ = writeln!(s, "      failed = failed + 1;\n      $display(\"FAIL: valid_out is %b in cycle %0d\", valid_out, cycle);\n    end");
     let _ = writeln!(s, "    cycle = cycle + 1;");
-    let _ = writeln!(s, "    if (cycle < N) begin valid_in = 1'b1; stim = stim_mem[cycle]; end");
+    let _ = writeln!(
+        s,
+        "    if (cycle < N * INTERVAL && cycle % INTERVAL == 0) begin valid_in = 1'b1; stim = stim_mem[cycle / INTERVAL]; end"
+    );
     let _ = writeln!(s, "    else begin valid_in = 1'b0; stim = {{IW{{1'b0}}}}; end");
-    let _ = writeln!(s, "    if (cycle == N + LATENCY + 1) begin");
+    let _ = writeln!(s, "    if (cycle == N * INTERVAL + LATENCY + 1) begin");
     let _ = writeln!(s, "      if (seen < N) begin\n        $display(\"FAIL: %0d vectors never left the unit\", N - seen);\n        failed = failed + (N - seen);\n      end");
     let _ = writeln!(s, "      $display(\"%0d passed, %0d failed\", passed, failed);");
     let _ = writeln!(s, "      if (failed != 0) $fatal(1, \"{u}: %0d of %0d vectors failed\", failed, N);");

@@ -24,8 +24,9 @@ pub enum Bubbles {
     Random { one_in: u32, seed: u64 },
 }
 
-/// The driver: model vectors → clock slots of bit patterns.
-pub fn slots(model: &UnitModel, inputs: &[Vec<i64>], bubbles: Bubbles) -> Vec<Option<Vec<u64>>> {
+/// The driver: model vectors → clock slots of bit patterns, each vector followed by `interval − 1` empty slots for
+/// a unit that takes `interval` clocks a vector (`StreamUnit::INTERVAL`), the bubbles on top of those.
+pub fn slots(model: &UnitModel, interval: usize, inputs: &[Vec<i64>], bubbles: Bubbles) -> Vec<Option<Vec<u64>>> {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(match bubbles {
         Bubbles::Random { seed, .. } => seed,
         Bubbles::BackToBack => 0,
@@ -40,6 +41,7 @@ pub fn slots(model: &UnitModel, inputs: &[Vec<i64>], bubbles: Bubbles) -> Vec<Op
             }
         }
         s.push(Some(vectors::unit::to_patterns(v, model.inputs)));
+        s.extend(std::iter::repeat_n(None, interval - 1));
     }
     s
 }
@@ -108,7 +110,7 @@ pub fn assert_ports_agree<U: StreamUnit>(model: &UnitModel) {
 
 /// rust-hdl's simulation of the unit on these vectors.
 pub fn rust_hdl<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], bubbles: Bubbles) -> Report {
-    let s = slots(model, inputs, bubbles);
+    let s = slots(model, U::INTERVAL, inputs, bubbles);
     let got = Runner::<U>::new().run(s.iter().cloned());
     check(model, U::LATENCY, inputs, &s, &got)
 }
@@ -119,7 +121,7 @@ pub fn three_ways<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], tag: &s
     rust_hdl::<U>(model, inputs, Bubbles::Random { one_in: 4, seed: 1 }).assert_clean(&format!("rust-hdl, {tag}"));
     for (sim, name) in [(Simulator::Verilator, "verilator"), (Simulator::Icarus, "icarus")] {
         let built = cosim::build::<U>(sim, &work_dir(name, tag)).unwrap_or_else(|e| panic!("{e}"));
-        let s = slots(model, inputs, Bubbles::BackToBack);
+        let s = slots(model, U::INTERVAL, inputs, Bubbles::BackToBack);
         let got = built.run(&s).unwrap_or_else(|e| panic!("{e}"));
         check(model, U::LATENCY, inputs, &s, &got).assert_clean(&format!("{name}, {tag}"));
     }
@@ -140,7 +142,7 @@ pub fn external<U: StreamUnit>(sim: Simulator, model: &UnitModel, inputs: &[Vec<
         Simulator::Icarus => "icarus",
     };
     let built = cosim::build::<U>(sim, &work_dir(name, U::NAME)).unwrap_or_else(|e| panic!("{e}"));
-    let s = slots(model, inputs, bubbles);
+    let s = slots(model, U::INTERVAL, inputs, bubbles);
     let got = built.run(&s).unwrap_or_else(|e| panic!("{e}"));
     check(model, U::LATENCY, inputs, &s, &got)
 }

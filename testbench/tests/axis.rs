@@ -87,6 +87,38 @@ fn map_units_take_their_writes_on_a_second_stream_and_give_no_beat_for_them() {
     assert_eq!(r.refused, 0, "the wrapper refused a beat with its sink always ready");
 }
 
+type TwoPassAxis = rtl::axis_map_of!(rtl::cart_tex::CartTexTrilinearTwoPassMatte);
+
+/// A unit taking two clocks a vector (`StreamUnit::INTERVAL`) gets one every other clock, a map write as much as a
+/// pixel: offered back to back with the sink always ready, each beat after the first waits exactly one clock; and
+/// under gaps, stalls and a reset, and behind the exported wrapper and its bench under Verilator, every beat is the
+/// model's.
+#[test]
+fn a_two_clock_unit_takes_a_beat_every_other_clock_on_either_stream() {
+    let m = &vectors::cart_tex::trilinear_two_pass_matte::MODEL;
+    let (inputs, _) = golden(m);
+    let r = run(&mut AxisRunner::new(TwoPassAxis::build()), m, &inputs, Traffic::FULL, None);
+    r.assert_clean("cart_tex_trilinear_two_pass_matte_axis, full rate");
+    assert_eq!(r.refused, inputs.len() as u64 - 1, "one clock refused after each beat taken");
+    run(
+        &mut AxisRunner::new(TwoPassAxis::build()),
+        m,
+        &inputs,
+        Traffic::random(33),
+        Some(Reset { after: 500, clocks: 2 }),
+    )
+    .assert_clean("cart_tex_trilinear_two_pass_matte_axis");
+    let source = format!("vectors/data/{}.csv", m.name);
+    stream(
+        m.name,
+        &inputs,
+        &source,
+        "verilator",
+        &|a| format!("verilator --binary -O3 -Wno-fatal --top-module {a}_tb {a}_tb.v {a}.v"),
+        &|a| format!("./obj_dir/V{a}_tb +seed=34"),
+    );
+}
+
 #[test]
 fn a_map_write_offered_beside_a_pixel_goes_first_and_holds_no_fifo_place() {
     use rust_hdl::prelude::*;

@@ -25,7 +25,7 @@ fn gloss_hard_cases() {
 fn gloss_threaded_simulation_agrees() {
     // rust-hdl's own threaded Simulation, on the golden vectors with bubbles: the same outputs, the same cycles
     let (inputs, _) = testbench::golden(&MODEL);
-    let s = testbench::slots(&MODEL, &inputs, Bubbles::Random { one_in: 4, seed: 7 });
+    let s = testbench::slots(&MODEL, 1, &inputs, Bubbles::Random { one_in: 4, seed: 7 });
     let got = rtl::stream::run_threaded::<Gloss>(s.clone()).unwrap_or_else(|e| panic!("{e}"));
     testbench::check(&MODEL, <Gloss as rtl::StreamUnit>::LATENCY, &inputs, &s, &got)
         .assert_clean("threaded Simulation");

@@ -400,11 +400,11 @@ pub fn seen_ticking<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>], tick: &dy
     let mut r = Runner::<U>::new();
     let mut ranges = Ranges::default();
     let zeros = vec![0u64; U::INPUTS.len()];
-    let slots =
-        inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).chain((0..U::LATENCY + 1).map(|_| None));
+    let slots = rtl::stream::paced::<U>(inputs.iter().map(|v| vectors::unit::to_patterns(v, m.inputs)))
+        .chain((0..U::LATENCY + 1).map(|_| None));
     for (k, s) in slots.enumerate() {
         if k % 4096 == 0 {
-            tick(k.min(inputs.len()));
+            tick((k / U::INTERVAL).min(inputs.len()));
         }
         ranges.next = 0;
         let out = match &s {

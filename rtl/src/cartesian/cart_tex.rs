@@ -1,7 +1,7 @@
 //! The Cartesian pipelines on the texture unit: the pipelines of `cart_pipeline` with the map in the unit's memory,
 //! fed by what a rasteriser gives (u, v, and for a MIP filter their screen derivatives) in place of four texels
 //! and two blend factors the host fetched: front (`texture::front`) → cart_decode → normalise ─┐ … as there.
-//! Named `cart_tex_<filter>[_surface][_hemi_oct][_matte]` after the host-fed pipeline each replaces (`_surface`:
+//! Named `cart_tex_<filter>[_two_pass][_surface][_hemi_oct][_matte]` after the host-fed pipeline each replaces (`_surface`:
 //! `cart_surface`'s one light per surface); the front's latency comes before the decode, and the side-band lines
 //! grow by it (their lengths follow from the `AT_` constants the wiring derives).
 
@@ -54,6 +54,18 @@ cartesian_pipeline! {
     unit: "cart_tex_trilinear_matte",
     decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
     texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+// trilinear in two passes of one set of the front's units, a pixel every other clock (beside the one above)
+cartesian_pipeline! {
+    module: trilinear_two_pass_matte,
+    block: CartTexTrilinearTwoPassMatte,
+    unit: "cart_tex_trilinear_two_pass_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinearTwoPass, module: trilinear_two_pass, u: u, v: v },
+    interval: 2,
     mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
 }

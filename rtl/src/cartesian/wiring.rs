@@ -13,6 +13,8 @@
 //! - `surface:` one light per surface, already a unit vector (Sq1.10), packed into one 36-bit word that waits in
 //!   block RAM for the bump path (no light_iter, no light normaliser);
 //! - `gloss:` the gloss unit, C's port and C's block-RAM delay line;
+//! - `interval:` (after `texture:`) the clocks a pixel takes, for a front that takes more than one
+//!   (`StreamUnit::INTERVAL`); the stages after the front take its texels as they come;
 //! - `colour:` (first, and with a front that has a colour map) the blend's destination colour from the front's
 //!   colour map in place of the `dst_r`, `dst_g`, `dst_b` ports: the memory select's port, and the delay line that
 //!   holds the pixel's mode and lit colour until the front has read its colour; the blend's own line then holds
@@ -35,6 +37,7 @@ macro_rules! cartesian_pipeline {
         $(, filter: { units: $fl:ident, valid: $flv:ident, u: $ub:ident, v: $vb:ident })?
         $(, nearest: { x: $nx:ident, z: $nz:ident })?
         $(, texture: { block: $txb:ident, module: $txm:ident, u: $pu:ident, v: $pv:ident })?
+        $(, interval: $iv:tt)?
         $(, mip: { derivatives: [$($dd:ident),*], bias: $lb:ident })?
         $(, vertex: { iter: $li:ident, norm: $ln:ident, delay: $lvd:ident, w1: $w1:ident, w2: $w2:ident })?
         $(, surface: { x: $lx:ident, y: $ly:ident, z: $lz:ident, word: $lw:ident, delay: $lsd:ident, addr_bits: $lab:tt })?
@@ -46,7 +49,7 @@ use super::*; // the decode the invocation names
 #[allow(unused_imports)] // each variant holds some of these
 use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
 #[allow(unused_imports)]
-use crate::texture::front::{TexBilinear, TexBilinearColour, TexNearest, TexNearestMip, TexTrilinear};
+use crate::texture::front::{TexBilinear, TexBilinearColour, TexNearest, TexNearestMip, TexTrilinear, TexTrilinearTwoPass};
 #[allow(unused_imports)]
 use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq11_8, Sq3_8, Sq7_2, Sq8_8, Sq9_0, U16, U8}, ram_delay::RamDelay}};
 
@@ -76,7 +79,7 @@ const MAP_PORTS: &[&str] = {
 crate::stream_block! {
     #[derive(Default)]
     // with the texture unit, its memory's write port is the map stream (the block only ties the group to it)
-    pub struct $t: unit($name, LATENCY $(, map = { let _ = stringify!($pu); MAP_PORTS })?) {
+    pub struct $t: unit($name, LATENCY $(, map = { let _ = stringify!($pu); MAP_PORTS })? $(, interval = $iv)?) {
         in {
             $(t00_x: U8,
             t00_z: U8,

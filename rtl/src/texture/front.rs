@@ -581,3 +581,259 @@ pub mod trilinear {
     }
 }
 pub use trilinear::TexTrilinear;
+
+/// `TexTrilinearTwoPass`: trilinear in two passes of one set of the unit blocks, a pixel taking two clocks (the
+/// k-clock variant beside `TexTrilinear`, which reads both levels in one clock with two sets). The LOD unit gives
+/// ⌊λ⌋, frac(λ) and the second level (`vectors::front::neighbour`), as there. On the clock the LOD unit gives a
+/// vector, the address unit reads level ⌊λ⌋ (the first pass); on the next it reads the second level (the second
+/// pass) at the position and level kept in registers for it; so the one fetch (`TexFetch`, every level of the
+/// chain) and the two bilinear units (low byte, high byte) give ⌊λ⌋'s bytes and then, a clock later, the second
+/// level's, and the first are held a clock for the blend by frac(λ), as `TexTrilinear`'s. Ports and outputs as
+/// `TexTrilinear`'s, the same values (the same model, one memory holding the chain).
+///
+/// A vector (a read or a write) may come at most every other clock: the clock after one is the second pass's,
+/// and whatever comes on it (valid or not, a write or not) is not read; the AXI4-Stream wrapper takes a beat
+/// every other clock (`StreamUnit::INTERVAL`). A write's second pass reads nothing (its texel leaves as zero).
+pub mod trilinear_two_pass {
+    use crate::prim::delay::Delay;
+    use crate::prim::q::{SBits, Sq11_8, Sq3_8, Sq8_8, U16, U8};
+    use crate::prim::ram_delay::RamDelay;
+    use crate::prim::sm_mul::{self, SmMul};
+    use crate::tex_fetch::TexFetch;
+    use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr};
+    use rust_hdl::prelude::*;
+
+    /// Cycles from the front's input to the address unit's first pass, to the fetch's, to the bilinear units', to
+    /// the blend of the two levels (on the second pass's bytes, a clock after the first's) and to its output (the
+    /// difference; the product; the rounded sum).
+    pub const AT_ADDR: usize = crate::lod::LATENCY;
+    pub const AT_FETCH: usize = AT_ADDR + crate::tex_addr::LATENCY;
+    pub const AT_FILTER: usize = AT_FETCH + crate::tex_fetch::LATENCY;
+    pub const AT_LERP: usize = AT_FILTER + crate::bilinear::LATENCY + 1;
+    pub const LATENCY: usize = AT_LERP + 1 + sm_mul::LATENCY + 1;
+    /// Clocks a vector takes: the two passes.
+    pub const INTERVAL: usize = 2;
+
+    crate::block! {
+        #[derive(Default)]
+        pub struct TexTrilinearTwoPass {
+            pub clock: Signal<In, Clock>,
+            pub valid_in: Signal<In, Bit>,
+            pub u: Signal<In, Sq11_8>,
+            pub v: Signal<In, Sq11_8>,
+            pub du_dx: Signal<In, Sq8_8>,
+            pub dv_dx: Signal<In, Sq8_8>,
+            pub du_dy: Signal<In, Sq8_8>,
+            pub dv_dy: Signal<In, Sq8_8>,
+            pub lod_bias: Signal<In, Sq3_8>,
+            pub log_side: Signal<In, Bits<4>>,
+            pub uwrap: Signal<In, Bits<1>>,
+            pub vwrap: Signal<In, Bits<1>>,
+            pub we: Signal<In, Bits<1>>,
+            pub w_log2: Signal<In, Bits<4>>,
+            pub wx: Signal<In, U8>,
+            pub wy: Signal<In, U8>,
+            pub wdata: Signal<In, U16>,
+            pub valid_out: Signal<Out, Bit>,
+            pub lo: Signal<Out, U8>,
+            pub hi: Signal<Out, U8>,
+            pub lod: Lod,
+            pos_dly: RamDelay<46, 4, { crate::lod::LATENCY }>, // (u, v, log_side, uwrap, vwrap) packed low to high
+            pos_word: Signal<Local, Bits<46>>,
+            next_level: Signal<Local, Bits<4>>, // ⌊λ⌋ + 1 ≤ 9 (λ ≤ 8)
+            prev_level: Signal<Local, Bits<4>>, // ⌊λ⌋ − 1 (wraps at 0, unused there)
+            second: Signal<Local, Bits<4>>,     // the level ⌊λ⌋ is blended with
+            side_log2: Signal<Local, Bits<4>>,  // the map's side log2, waited beside the LOD unit
+            // the second pass: on the clock after the first, its position, its level and that it is one
+            p2_pos: DFF<Bits<46>>,
+            p2_level: DFF<Bits<4>>,
+            p2_valid: DFF<Bit>,
+            pub addr: TexAddr,
+            pub fetch: TexFetch, // the whole chain: the two passes read it on two clocks
+            write_dly: RamDelay<37, 5, { crate::lod::LATENCY + crate::tex_addr::LATENCY }>, // (we, w_log2, wx, wy, wdata)
+            write_word: Signal<Local, Bits<37>>,
+            // at the fetch: the second pass, and whether its vector (the first pass's, a clock before) was a write
+            p2_at_fetch: Delay<Bit, { crate::tex_addr::LATENCY }>,
+            was_write: DFF<Bit>,
+            pub filter: [BilinearUnit<8, 8>; 2], // low byte, high byte: ⌊λ⌋'s on the first pass, the second's after
+            blend_dly: Delay<U16, { crate::tex_fetch::LATENCY }>, // each pass's (ublend, vblend) packed low to high
+            blend_word: Signal<Local, U16>,
+            // ⌊λ⌋'s two bytes, held a clock for the second level's
+            first: [DFF<U8>; 2],
+            // frac(λ), from the LOD unit to the blend of the two levels
+            frac_dly: RamDelay<8, 5, { AT_LERP + 1 - crate::lod::LATENCY }>,
+            // the blend, per byte: stage 1, b₁ − b₀ (S9 in 16, two's complement) and b₀·2^8 (U16 in 17)
+            s1_d: [DFF<SBits<16>>; 2],
+            s1_base: [DFF<Bits<17>>; 2],
+            w_b0: [Signal<Local, Bits<16>>; 2], // b₀ widened (U8 in 16)
+            w_b1: [Signal<Local, Bits<16>>; 2], // b₁ widened (U8 in 16)
+            w_base: [Signal<Local, Bits<17>>; 2], // b₀ widened (U8 in 17)
+            w_frac: Signal<Local, Bits<16>>,    // f widened (U8 in 16)
+            // stages 2–4: |b₁ − b₀|·f ≤ 255·255 (U16), the base beside it
+            mul: [SmMul<16>; 2],
+            base: [Delay<Bits<17>, { sm_mul::LATENCY }>; 2],
+            w_prod: [Signal<Local, Bits<17>>; 2], // the product's low 17 bits: exact (< 2^16)
+            w_sum: [Signal<Local, Bits<17>>; 2],  // b₀·2^8 ± |b₁ − b₀|·f ∈ 0..=65280, exact (a mean of b₀, b₁ times 2^8)
+            w_r: [Signal<Local, Bits<17>>; 2],    // that + 2^7 ≤ 65408, exact
+            // stage 5: bits 8.. of the rounded sum (truncation of it: round half up overall)
+            s5_out: [DFF<U8>; 2],
+            // a vector's second pass, from the address unit to the output
+            out_valid: Delay<Bit, { LATENCY - AT_ADDR - 1 }>,
+        }
+    }
+
+    impl Logic for TexTrilinearTwoPass {
+        #[hdl_gen]
+        fn update(&mut self) {
+            dff_setup!(self, clock, p2_pos, p2_level, p2_valid, was_write);
+            self.lod.clock.next = self.clock.val();
+            self.pos_dly.clock.next = self.clock.val();
+            self.write_dly.clock.next = self.clock.val();
+            self.addr.clock.next = self.clock.val();
+            self.fetch.clock.next = self.clock.val();
+            self.p2_at_fetch.clock.next = self.clock.val();
+            self.blend_dly.clock.next = self.clock.val();
+            self.frac_dly.clock.next = self.clock.val();
+            self.out_valid.clock.next = self.clock.val();
+            // the write, packed (bit copies), waits for its vector's address
+            self.write_word.next = bit_cast::<37, 1>(self.we.val());
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 4>(self.w_log2.val()) << 1);
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 8>(self.wx.val()) << 5);
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 8>(self.wy.val()) << 13);
+            self.write_word.next = self.write_word.val() | (bit_cast::<37, 16>(self.wdata.val()) << 21);
+            self.write_dly.d.next = self.write_word.val();
+            // the level: from the derivatives, the position waiting beside the LOD unit (bit copies)
+            self.lod.valid_in.next = self.valid_in.val();
+            self.lod.du_dx.next = self.du_dx.val();
+            self.lod.dv_dx.next = self.dv_dx.val();
+            self.lod.du_dy.next = self.du_dy.val();
+            self.lod.dv_dy.next = self.dv_dy.val();
+            self.lod.log_side.next = self.log_side.val();
+            self.lod.bias.next = self.lod_bias.val();
+            self.pos_word.next = bit_cast::<46, 20>(self.u.val());
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 20>(self.v.val()) << 20);
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 4>(self.log_side.val()) << 40);
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.uwrap.val()) << 44);
+            self.pos_word.next = self.pos_word.val() | (bit_cast::<46, 1>(self.vwrap.val()) << 45);
+            self.pos_dly.d.next = self.pos_word.val();
+            // the second level: ⌊λ⌋ + 1 below the last level, else ⌊λ⌋ − 1, else (a 1 × 1 map) 1
+            self.next_level.next = self.lod.level.val() + 1; // ≤ 9 in 4 bits: exact
+            self.prev_level.next = self.lod.level.val() - 1; // wraps at 0 on purpose: not read there
+            self.side_log2.next = self.pos_dly.q.val().get_bits::<4>(40); // bit copies: the U4 it was
+            self.second.next = 1.into();
+            if self.lod.level.val().any() {
+                self.second.next = self.prev_level.val();
+            }
+            if self.lod.level.val() < self.side_log2.val() {
+                self.second.next = self.next_level.val();
+            }
+            // kept for the second pass
+            self.p2_pos.d.next = self.pos_dly.q.val();
+            self.p2_level.d.next = self.second.val();
+            self.p2_valid.d.next = self.lod.valid_out.val();
+            // the address unit: the first pass, ⌊λ⌋ at the position that waited beside the LOD unit; or on the clock
+            // after, the second (bit copies throughout)
+            self.addr.valid_in.next = self.lod.valid_out.val();
+            self.addr.level.next = self.lod.level.val();
+            self.addr.u.next = self.pos_dly.q.val().get_bits::<20>(0);
+            self.addr.v.next = self.pos_dly.q.val().get_bits::<20>(20);
+            self.addr.log_side.next = self.pos_dly.q.val().get_bits::<4>(40);
+            self.addr.uwrap.next = self.pos_dly.q.val().get_bits::<1>(44);
+            self.addr.vwrap.next = self.pos_dly.q.val().get_bits::<1>(45);
+            if self.p2_valid.q.val() {
+                self.addr.valid_in.next = true;
+                self.addr.level.next = self.p2_level.q.val();
+                self.addr.u.next = self.p2_pos.q.val().get_bits::<20>(0);
+                self.addr.v.next = self.p2_pos.q.val().get_bits::<20>(20);
+                self.addr.log_side.next = self.p2_pos.q.val().get_bits::<4>(40);
+                self.addr.uwrap.next = self.p2_pos.q.val().get_bits::<1>(44);
+                self.addr.vwrap.next = self.p2_pos.q.val().get_bits::<1>(45);
+            }
+            self.addr.linear.next = true.into(); // the bilinear footprint
+            self.p2_at_fetch.d.next = self.p2_valid.q.val();
+            // the fetch: the footprint the address unit gives, and the write that waited beside it (bit copies);
+            // on a second pass no write, and a write's second pass no read either (it reads as a write: zeros)
+            self.fetch.valid_in.next = self.addr.valid_out.val();
+            self.fetch.level_log2.next = self.addr.level_log2.val();
+            self.fetch.x0.next = self.addr.x0.val();
+            self.fetch.x1.next = self.addr.x1.val();
+            self.fetch.y0.next = self.addr.y0.val();
+            self.fetch.y1.next = self.addr.y1.val();
+            self.fetch.we.next = self.write_dly.q.val().get_bits::<1>(0);
+            self.fetch.w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
+            self.fetch.wx.next = self.write_dly.q.val().get_bits::<8>(5);
+            self.fetch.wy.next = self.write_dly.q.val().get_bits::<8>(13);
+            self.fetch.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
+            self.was_write.d.next = self.write_dly.q.val().get_bit(0) & self.addr.valid_out.val();
+            if self.p2_at_fetch.q.val() {
+                self.fetch.we.next = 0.into();
+                self.fetch.valid_in.next = true;
+                if self.was_write.q.val() {
+                    self.fetch.we.next = 1.into(); // a write's second pass: no read
+                    self.fetch.valid_in.next = false; // and no write
+                }
+            }
+            // the filter: each pass's four texels, blended by its factors that waited beside the fetch
+            // ((ublend, vblend) packed and unpacked: bit copies)
+            self.blend_word.next = bit_cast::<16, 8>(self.addr.ublend.val());
+            self.blend_word.next = self.blend_word.val() | (bit_cast::<16, 8>(self.addr.vblend.val()) << 8);
+            self.blend_dly.d.next = self.blend_word.val();
+            for i in 0..2 {
+                self.filter[i].clock.next = self.clock.val();
+                // the pass's (ublend, vblend), unpacked: bit copies
+                self.filter[i].ublend.next = self.blend_dly.q.val().get_bits::<8>(0);
+                self.filter[i].vblend.next = self.blend_dly.q.val().get_bits::<8>(8);
+            }
+            // each texel's low byte to the first unit, its high byte to the second: bit copies
+            self.filter[0].t00.next = self.fetch.t00.val().get_bits::<8>(0);
+            self.filter[0].t10.next = self.fetch.t10.val().get_bits::<8>(0);
+            self.filter[0].t01.next = self.fetch.t01.val().get_bits::<8>(0);
+            self.filter[0].t11.next = self.fetch.t11.val().get_bits::<8>(0);
+            self.filter[1].t00.next = self.fetch.t00.val().get_bits::<8>(8);
+            self.filter[1].t10.next = self.fetch.t10.val().get_bits::<8>(8);
+            self.filter[1].t01.next = self.fetch.t01.val().get_bits::<8>(8);
+            self.filter[1].t11.next = self.fetch.t11.val().get_bits::<8>(8);
+            // frac(λ) waits for the second level's bytes
+            self.frac_dly.d.next = self.lod.frac.val();
+            self.w_frac.next = bit_cast::<16, 8>(self.frac_dly.q.val());
+            self.out_valid.d.next = self.p2_valid.q.val();
+            // b₀: ⌊λ⌋'s byte, held a clock from the first pass; b₁: the second level's, as it leaves its unit
+            // (written out: a loop's index cannot reach into a cast's argument under `hdl_gen`)
+            self.w_b0[0].next = bit_cast::<16, 8>(self.first[0].q.val());
+            self.w_b0[1].next = bit_cast::<16, 8>(self.first[1].q.val());
+            self.w_b1[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
+            self.w_b1[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
+            self.w_base[0].next = bit_cast::<17, 8>(self.first[0].q.val());
+            self.w_base[1].next = bit_cast::<17, 8>(self.first[1].q.val());
+            for c in 0..2 {
+                self.first[c].clock.next = self.clock.val();
+                self.s1_d[c].clock.next = self.clock.val();
+                self.s1_base[c].clock.next = self.clock.val();
+                self.mul[c].clock.next = self.clock.val();
+                self.base[c].clock.next = self.clock.val();
+                self.s5_out[c].clock.next = self.clock.val();
+                self.first[c].d.next = self.filter[c].out.val();
+                // stage 1: b₁ − b₀, wrapping in 16 bits to its two's complement; b₀·2^8 (exact in 17)
+                self.s1_d[c].d.next = self.w_b1[c].val() - self.w_b0[c].val();
+                self.s1_base[c].d.next = self.w_base[c].val() << 8;
+                // stages 2–4: |b₁ − b₀|·f, the base beside it
+                self.mul[c].x.next = self.s1_d[c].q.val();
+                self.mul[c].w.next = self.w_frac.val();
+                self.base[c].d.next = self.s1_base[c].q.val();
+                // stage 5: b₀·2^8 ± |b₁ − b₀|·f + 2^7, then bits 8..
+                self.w_prod[c].next = self.mul[c].p.val().get_bits::<17>(0);
+                if self.mul[c].neg.val() {
+                    self.w_sum[c].next = self.base[c].q.val() - self.w_prod[c].val();
+                } else {
+                    self.w_sum[c].next = self.base[c].q.val() + self.w_prod[c].val();
+                }
+                self.w_r[c].next = self.w_sum[c].val() + 128;
+                self.s5_out[c].d.next = self.w_r[c].val().get_bits::<8>(8); // truncation of the rounded sum
+            }
+            self.valid_out.next = self.out_valid.q.val();
+            self.lo.next = self.s5_out[0].q.val();
+            self.hi.next = self.s5_out[1].q.val();
+        }
+    }
+}
+pub use trilinear_two_pass::TexTrilinearTwoPass;

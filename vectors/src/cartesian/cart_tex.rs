@@ -64,8 +64,9 @@ pub struct Textured {
 }
 
 impl Textured {
-    pub fn new(filter: Filter, host: &'static UnitModel, ports: &[Port]) -> Textured {
-        let front = if has_colour(ports) { Front::with_colour(filter) } else { Front::new(filter) };
+    /// The pipeline on a front that reads its levels in `passes` clocks (1, or 2 for trilinear's two passes).
+    pub fn new(filter: Filter, passes: usize, host: &'static UnitModel, ports: &[Port]) -> Textured {
+        let front = if has_colour(ports) { Front::with_colour(filter) } else { Front::in_passes(filter, passes) };
         Textured { front, at: At::of(ports, filter.mip()), src: sources(host, ports), host }
     }
 }
@@ -299,7 +300,7 @@ pub fn expected_ports(filter: Filter, host: &UnitModel, colour: bool) -> Vec<Por
 }
 
 macro_rules! textured {
-    ($m:ident, $name:literal, $filter:expr, $host:path, inputs: [$($ports:tt)*]) => {
+    ($m:ident, $name:literal, $filter:expr, $host:path, $(passes: $passes:literal,)? inputs: [$($ports:tt)*]) => {
         pub mod $m {
             use super::*;
             crate::ports! {
@@ -307,6 +308,8 @@ macro_rules! textured {
                 outputs: [p: u 10, out_r: u 8, out_g: u 8, out_b: u 8],
             }
             pub const FILTER: Filter = $filter;
+            /// The clocks a pixel takes: the front's passes.
+            pub const PASSES: usize = 1 $(* $passes)?;
             pub fn host() -> &'static UnitModel {
                 &$host
             }
@@ -315,7 +318,7 @@ macro_rules! textured {
             pub struct Unit(Textured);
             impl Default for Unit {
                 fn default() -> Unit {
-                    Unit(Textured::new(FILTER, host(), INPUTS))
+                    Unit(Textured::new(FILTER, PASSES, host(), INPUTS))
                 }
             }
             impl Machine for Unit {
@@ -367,6 +370,15 @@ textured!(nearest_mip_matte, "cart_tex_nearest_mip_matte", Filter::NearestMip, c
 ]);
 
 textured!(trilinear_matte, "cart_tex_trilinear_matte", Filter::Trilinear, crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    trilinear_two_pass_matte, "cart_tex_trilinear_two_pass_matte", Filter::Trilinear,
+    crate::cart_pipeline::MODEL_MATTE, passes: 2, inputs: [
     u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
     du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
     l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
@@ -427,13 +439,14 @@ textured!(
 ]);
 
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 12] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 13] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
         (&nearest_matte::MODEL, nearest_matte::FILTER, nearest_matte::host()),
         (&nearest_mip_matte::MODEL, nearest_mip_matte::FILTER, nearest_mip_matte::host()),
         (&trilinear_matte::MODEL, trilinear_matte::FILTER, trilinear_matte::host()),
+        (&trilinear_two_pass_matte::MODEL, trilinear_two_pass_matte::FILTER, trilinear_two_pass_matte::host()),
         (&bilinear_hemi_oct::MODEL, bilinear_hemi_oct::FILTER, bilinear_hemi_oct::host()),
         (&bilinear_surface::MODEL, bilinear_surface::FILTER, bilinear_surface::host()),
         (&bilinear_surface_matte::MODEL, bilinear_surface_matte::FILTER, bilinear_surface_matte::host()),

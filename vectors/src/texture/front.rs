@@ -149,6 +149,16 @@ impl Front {
         }
     }
 
+    /// A front that reads its levels in passes, one a clock, from one memory holding the whole chain
+    /// (`rtl::texture::front::TexTrilinearTwoPass`): with two passes trilinear needs no parity split. The same
+    /// outputs as `new`'s.
+    pub fn in_passes(filter: Filter, passes: usize) -> Front {
+        match passes {
+            1 => Front::new(filter),
+            _ => Front { filter, mem: tex_fetch::Memory::default(), odd: None, colour: None },
+        }
+    }
+
     /// A front with a colour map's memory beside the bump map's.
     pub fn with_colour(filter: Filter) -> Front {
         Front { colour: Some(tex_fetch::Memory::default()), ..Front::new(filter) }
