@@ -28,9 +28,10 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
                 println!("  {:<12} {}  (placed, with the serial I/O wrapper)", p.logic_cell_name(), share(lc, p.lut4));
             }
             println!(
-                "  fmax         {:>6} MHz  latency {} clocks, one pixel per clock",
+                "  fmax         {:>6} MHz  latency {} clocks, {}",
                 f.map(|x| format!("{x:.1}")).unwrap_or("-".into()),
-                r.latency
+                r.latency,
+                rate(r.interval, f)
             );
             println!("               {}", placements(r));
         }
@@ -45,6 +46,16 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
         println!("  registers    every one in the fabric, as yosys placed them (--fabric-registers)");
     }
     println!("  tools        {}", synth::tools::toolchain().versions(p.family));
+}
+
+/// The pixel rate a unit keeps: "one pixel per clock", or for a k-clock variant "a pixel every 2 clocks
+/// (60.0 M pixels/s at fmax)".
+pub fn rate(interval: usize, fmax_mhz: Option<f64>) -> String {
+    match (interval, fmax_mhz) {
+        (0 | 1, _) => "one pixel per clock".into(),
+        (k, Some(f)) => format!("a pixel every {k} clocks ({:.1} M pixels/s at fmax)", f / k as f64),
+        (k, None) => format!("a pixel every {k} clocks"),
+    }
 }
 
 /// What an fmax is the median of: "the median of 5 placements (nextpnr seeds), slowest 120.3, fastest 131.0 MHz".

@@ -19,6 +19,8 @@ use vectors::UnitModel;
 pub trait RtlBlock: Sync {
     fn name(&self) -> &'static str;
     fn latency(&self) -> usize;
+    /// Clocks a vector (`StreamUnit::INTERVAL`).
+    fn interval(&self) -> usize;
     /// The exported module's text.
     fn verilog(&self) -> String;
     /// The module written to `dir/<name>.v`: that path.
@@ -146,6 +148,9 @@ impl<U: StreamUnit + Send + 'static> RtlBlock for Rtl<U> {
     }
     fn latency(&self) -> usize {
         U::LATENCY
+    }
+    fn interval(&self) -> usize {
+        U::INTERVAL
     }
     fn verilog(&self) -> String {
         synth::export::<U>().text

@@ -39,6 +39,8 @@ pub struct PointFigures {
     pub fmax_range: Option<(f64, f64)>,
     pub placements: u32,
     pub latency: usize,
+    /// clocks a pixel (2 for a two-clock variant; 0 read as 1: `clocks`)
+    pub interval: usize,
     /// the AXI4-Stream wrapper around the pipeline: its FIFO and what it adds in iCE40 cells
     pub axis: Option<AxisCost>,
 }
@@ -56,6 +58,11 @@ pub struct AxisCost {
 }
 
 impl PointFigures {
+    /// Clocks a pixel: 1, or k for a k-clock variant.
+    pub fn clocks(&self) -> usize {
+        self.interval.max(1)
+    }
+
     pub fn cost(&self) -> u64 {
         self.lut4 + LUT4_PER_MAC16 * self.dsp
     }
@@ -91,6 +98,7 @@ impl PointFigures {
             ("fmax_range", o(self.fmax_range.map(|(a, b)| format!("{a} {b}")))),
             ("placements", self.placements.to_string()),
             ("latency", self.latency.to_string()),
+            ("interval", self.interval.to_string()),
             (
                 "axis",
                 o(self.axis.map(|a| format!("{} {} {} {} {} {}", a.depth, a.words, a.bits, a.lut4, a.ff, a.bram))),
@@ -142,6 +150,7 @@ impl PointFigures {
             }),
             placements: get("placements").and_then(|v| v.parse().ok()).unwrap_or(0),
             latency: get("latency")?.parse().ok()?,
+            interval: get("interval").and_then(|v| v.parse().ok()).unwrap_or(1),
             axis: get("axis").and_then(|v| {
                 match v.split(' ').filter_map(|x| x.parse::<u64>().ok()).collect::<Vec<_>>()[..] {
                     [depth, words, bits, lut4, ff, bram] => Some(AxisCost {
@@ -175,7 +184,7 @@ mod tests {
         let mut a = r("quad.cart_surface.t6n1f8d0", "quad", 1234, 6, 0.75);
         (a.angle, a.encoding, a.method, a.datapath, a.fmax, a.lc, a.estimated, a.spram) =
             (Some((0.1, 2.0)), Some((0.2, 3.0)), None, Some((0.5, 1.5)), Some(37.5), Some(3082), true, 4);
-        (a.fmax_range, a.placements) = (Some((36.25, 39.0)), 5);
+        (a.fmax_range, a.placements, a.interval) = (Some((36.25, 39.0)), 5, 2);
         (a.units, a.knob, a.pipeline, a.part, a.model_mpx) =
             ("x → y".into(), "normalise 2^6 table, 1 Newton".into(), "cart_surface".into(), "up5k".into(), 12.5);
         assert_eq!(PointFigures::from_text(&a.to_text()), Some(a.clone()));

@@ -31,7 +31,8 @@ pub fn markdown(rs: &[PointFigures], budgets: &[f64]) -> String {
             "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}{} | {} | {} | {} | {} | {} | {:.2} |",
             r.id, r.pipeline, r.knob, f2(Some(r.colour)), f2(Some(r.shade)), f2(r.angle), f2(r.encoding), f2(r.method), f2(r.datapath),
             r.lut4, r.ff, r.dsp, r.bram, r.spram, r.soft, r.cost(), if r.estimated { " est." } else { "" }, r.part,
-            r.lc.map(|x| x.to_string()).unwrap_or("-".into()), fmax(r), r.latency,
+            r.lc.map(|x| x.to_string()).unwrap_or("-".into()), fmax(r),
+            if r.clocks() == 1 { r.latency.to_string() } else { format!("{}, {} clocks a pixel", r.latency, r.clocks()) },
             if *p { "P" } else { "" }, r.model_mpx
         );
     }

@@ -110,6 +110,7 @@ pub fn run_point(p: &Point, dir: &Path, place: Option<u32>) -> Result<PointFigur
         datapath: three.map(|t| t[2]),
         model_mpx: n as f64 / secs / 1e6,
         latency: pipe.rtl().latency(),
+        interval: pipe.rtl().interval(),
         ..Default::default()
     };
     // cost: the pipeline's own rtl block; a knob adds the swept unit's difference

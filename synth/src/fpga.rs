@@ -244,6 +244,8 @@ pub struct SynthReport {
     pub part: String,
     pub cells: Cells,
     pub latency: usize,
+    /// clocks a pixel (`StreamUnit::INTERVAL`: 1 but for a k-clock variant), so the pixel rate is fmax / interval
+    pub interval: usize,
     /// why this part: the resource that ruled out each smaller one (empty when the user named the part)
     pub choice: String,
     /// from nextpnr, with the I/O wrapper: logic cells used (ICESTORM_LC, TRELLIS_COMB), fmax of the real clock,
@@ -647,6 +649,7 @@ fn wrapped<U: StreamUnit>(dir: &Path, part: Part, choice: &str) -> Result<SynthR
         part: part.name.into(),
         cells: c,
         latency: U::LATENCY,
+        interval: U::INTERVAL,
         choice: choice.into(),
         blocks,
         packed,
@@ -809,6 +812,7 @@ pub fn synth_and_place<U: StreamUnit>(
     }
     let mut r = median(have).ok_or("no placement in hand")?;
     r.choice = choice.into();
+    r.interval = U::INTERVAL; // the unit's, whatever a placement cached before the field said
     write_atomic(&dir.join("report.txt"), r.to_text().as_bytes())?;
     Ok(r)
 }
@@ -819,12 +823,13 @@ impl SynthReport {
         let c = &self.cells;
         let (lo, hi) = (self.fmax_range.map(|r| r.0.to_string()), self.fmax_range.map(|r| r.1.to_string()));
         format!(
-            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nplacements={}\nseed={}\nfmax_min={}\nfmax_max={}\nblocks={}\npacked={}\n",
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nplacements={}\nseed={}\nfmax_min={}\nfmax_max={}\nblocks={}\npacked={}\ninterval={}\n",
             self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, c.spram, self.latency, self.choice.replace('\n', " "),
             o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
             o(self.critical.clone()), o(self.place_error.clone()), self.placements, self.seed, o(lo), o(hi),
             self.blocks.to_text(),
-            self.packed
+            self.packed,
+            self.interval
         )
     }
 
@@ -846,6 +851,8 @@ impl SynthReport {
                 spram: get("spram").and_then(|v| v.parse().ok()).unwrap_or(0),
             },
             latency: get("latency")?.parse().ok()?,
+            // a report saved before the field: every unit then took a pixel a clock
+            interval: get("interval").and_then(|v| v.parse().ok()).unwrap_or(1),
             choice: get("choice")?.to_string(),
             lc: opt("lc").and_then(|v| v.parse().ok()),
             fmax_mhz: opt("fmax_mhz").and_then(|v| v.parse().ok()),
@@ -883,6 +890,7 @@ mod tests {
             part: "ecp5-45f".into(),
             cells: Cells { lut4: 1, ff: 3, dsp: 4, bram: 5, carry: 2, soft: 9, spram: 10 },
             latency: 8,
+            interval: 2,
             choice: "not up5k: it needs 9 SB_MAC16".into(),
             lc: Some(6),
             fmax_mhz: Some(7.5),
