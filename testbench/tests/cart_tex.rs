@@ -5,14 +5,15 @@
 use rtl::cart_tex::{
     CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearMatte, CartTexBilinearSurface,
     CartTexBilinearSurfaceColour, CartTexBilinearSurfaceMatte, CartTexNearestMatte, CartTexNearestMipMatte,
-    CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte, CartTexTrilinearMatte, CartTexTrilinearTwoPassMatte,
+    CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte, CartTexTrilinear, CartTexTrilinearHemiOct,
+    CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearTwoPassMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::cart_tex::{
     bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_matte, bilinear_surface, bilinear_surface_colour,
     bilinear_surface_matte, nearest_matte, nearest_mip_matte, nearest_surface_hemi_oct_matte, nearest_surface_matte,
-    trilinear_matte, trilinear_two_pass_matte,
+    trilinear, trilinear_hemi_oct, trilinear_matte, trilinear_surface, trilinear_two_pass_matte,
 };
 use vectors::UnitModel;
 
@@ -21,6 +22,9 @@ unit_tests!(cart_tex_bilinear_matte, CartTexBilinearMatte, bilinear_matte::MODEL
 unit_tests!(cart_tex_nearest_matte, CartTexNearestMatte, nearest_matte::MODEL);
 unit_tests!(cart_tex_nearest_mip_matte, CartTexNearestMipMatte, nearest_mip_matte::MODEL);
 unit_tests!(cart_tex_trilinear_matte, CartTexTrilinearMatte, trilinear_matte::MODEL);
+unit_tests!(cart_tex_trilinear, CartTexTrilinear, trilinear::MODEL);
+unit_tests!(cart_tex_trilinear_hemi_oct, CartTexTrilinearHemiOct, trilinear_hemi_oct::MODEL);
+unit_tests!(cart_tex_trilinear_surface, CartTexTrilinearSurface, trilinear_surface::MODEL);
 unit_tests!(cart_tex_trilinear_two_pass_matte, CartTexTrilinearTwoPassMatte, trilinear_two_pass_matte::MODEL);
 unit_tests!(cart_tex_bilinear_hemi_oct, CartTexBilinearHemiOct, bilinear_hemi_oct::MODEL);
 unit_tests!(cart_tex_bilinear_surface, CartTexBilinearSurface, bilinear_surface::MODEL);
@@ -70,6 +74,21 @@ fn cart_tex_nearest_mip_matte_streams() {
 #[test]
 fn cart_tex_trilinear_matte_streams() {
     three_streams::<CartTexTrilinearMatte>(&trilinear_matte::MODEL, 27);
+}
+
+#[test]
+fn cart_tex_trilinear_streams() {
+    three_streams::<CartTexTrilinear>(&trilinear::MODEL, 37);
+}
+
+#[test]
+fn cart_tex_trilinear_hemi_oct_streams() {
+    three_streams::<CartTexTrilinearHemiOct>(&trilinear_hemi_oct::MODEL, 38);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_streams() {
+    three_streams::<CartTexTrilinearSurface>(&trilinear_surface::MODEL, 39);
 }
 
 #[test]

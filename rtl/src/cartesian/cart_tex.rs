@@ -58,6 +58,41 @@ cartesian_pipeline! {
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
 }
 
+// trilinear with the gloss unit: lights per vertex, seed or hemi-oct texels; one light per surface (the light word
+// waits AT_DOT = 57 clocks: front 42 + decode 4 + normalise 11, 2^6 words)
+cartesian_pipeline! {
+    module: trilinear,
+    block: CartTexTrilinear,
+    unit: "cart_tex_trilinear",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: trilinear_hemi_oct,
+    block: CartTexTrilinearHemiOct,
+    unit: "cart_tex_trilinear_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: trilinear_surface,
+    block: CartTexTrilinearSurface,
+    unit: "cart_tex_trilinear_surface",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
 // trilinear in two passes of one set of the front's units, a pixel every other clock (beside the one above)
 cartesian_pipeline! {
     module: trilinear_two_pass_matte,

@@ -66,6 +66,10 @@ pub const LIGHT_DELAY: usize = AT_NORMALISE - crate::light_iter::LATENCY;)?
 /// Cycles from the pipeline's input to the blend's colour line: 0, or with a colour map the front's latency (the
 /// pixel's mode and lit colour wait that long beside the front).
 pub const AT_COLOUR: usize = 0 $(+ AT_NORMALISE - crate::$dec_mod::LATENCY + 0 * stringify!($sd).len())?;
+/// Address bits of C's line and of the blend's colour line: 2^6 words, more behind the trilinear front.
+#[allow(dead_code)] // a matte pipeline has no C line
+const CONC_LINE_BITS: usize = crate::prim::ram_delay::addr_bits(AT_GLOSS, 6);
+const BLEND_LINE_BITS: usize = crate::prim::ram_delay::addr_bits(AT_BLEND - AT_COLOUR, 6);
 /// The map stream's ports: the front's write port, with a colour map its memory select too.
 #[allow(dead_code)] // a pipeline without the texture unit has no map stream
 const MAP_PORTS: &[&str] = {
@@ -144,12 +148,12 @@ crate::stream_block! {
         $lvd: [Delay<Sq7_2, LIGHT_DELAY>; 3],)?
         pub dot: Dot3,
         $(pub $gl: Gloss,
-        $cd: RamDelay<8, 6, AT_GLOSS>,)?
+        $cd: RamDelay<8, CONC_LINE_BITS, AT_GLOSS>,)?
         $($lsd: RamDelay<36, $lab, AT_DOT>, // (l_x, l_y, l_z) packed low to high
         $lw: Signal<Local, Bits<36>>,)?
         $($sd: RamDelay<25, 6, AT_COLOUR>, // (src_r, src_g, src_b, mode) packed low to high
         colour_word: Signal<Local, Bits<25>>,)?
-        pub blend: DelayedBlend<6, { AT_BLEND - AT_COLOUR }>,
+        pub blend: DelayedBlend<BLEND_LINE_BITS, { AT_BLEND - AT_COLOUR }>,
         p_dly: Delay<Bits<10>, { crate::blend::LATENCY }>,
         bump_x10: Signal<Local, Sq9_0>,
         bump_z10: Signal<Local, Sq9_0>,

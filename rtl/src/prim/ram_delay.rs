@@ -26,6 +26,16 @@ crate::block! {
     }
 }
 
+/// The address bits of an N-clock line: at least `least` (a pipeline's lines keep one size where they fit it), more
+/// where N − 2 ≥ 2^least (the long lines behind the trilinear front).
+pub const fn addr_bits(n: usize, least: usize) -> usize {
+    let mut a = least;
+    while n >= 2 + (1 << a) {
+        a += 1;
+    }
+    a
+}
+
 impl<const W: usize, const A: usize, const N: usize> Default for RamDelay<W, A, N> {
     fn default() -> Self {
         assert!(N >= 3 && N - 2 < (1 << A), "RamDelay needs 3 <= N <= 2^A + 1 (N = {N}, A = {A})");

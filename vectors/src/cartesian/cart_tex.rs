@@ -376,6 +376,30 @@ textured!(trilinear_matte, "cart_tex_trilinear_matte", Filter::Trilinear, crate:
     w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
+textured!(trilinear, "cart_tex_trilinear", Filter::Trilinear, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    trilinear_hemi_oct, "cart_tex_trilinear_hemi_oct", Filter::Trilinear, crate::cart_pipeline::MODEL_HEMI_OCT,
+    inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    trilinear_surface, "cart_tex_trilinear_surface", Filter::Trilinear, crate::cart_surface::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1,
+    src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
 textured!(
     trilinear_two_pass_matte, "cart_tex_trilinear_two_pass_matte", Filter::Trilinear,
     crate::cart_pipeline::MODEL_MATTE, passes: 2, inputs: [
@@ -439,7 +463,7 @@ textured!(
 ]);
 
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 13] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 16] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
@@ -447,6 +471,9 @@ pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 13] {
         (&nearest_mip_matte::MODEL, nearest_mip_matte::FILTER, nearest_mip_matte::host()),
         (&trilinear_matte::MODEL, trilinear_matte::FILTER, trilinear_matte::host()),
         (&trilinear_two_pass_matte::MODEL, trilinear_two_pass_matte::FILTER, trilinear_two_pass_matte::host()),
+        (&trilinear::MODEL, trilinear::FILTER, trilinear::host()),
+        (&trilinear_hemi_oct::MODEL, trilinear_hemi_oct::FILTER, trilinear_hemi_oct::host()),
+        (&trilinear_surface::MODEL, trilinear_surface::FILTER, trilinear_surface::host()),
         (&bilinear_hemi_oct::MODEL, bilinear_hemi_oct::FILTER, bilinear_hemi_oct::host()),
         (&bilinear_surface::MODEL, bilinear_surface::FILTER, bilinear_surface::host()),
         (&bilinear_surface_matte::MODEL, bilinear_surface_matte::FILTER, bilinear_surface_matte::host()),
