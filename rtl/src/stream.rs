@@ -18,7 +18,8 @@ pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
     const MAP: &'static [&'static str] = &[];
     /// Clocks a vector takes: 1 for every unit that takes one a clock; k for a variant that takes k clocks a pixel
     /// to save area (`texture::front::TexTrilinearTwoPass`), which may be given a vector at most every k-th clock
-    /// (what comes on the clocks between is not read). The harnesses and the AXI4-Stream wrapper keep that gap.
+    /// (the clocks between carry none, `valid_in` low; their data are not read). The harnesses and the AXI4-Stream
+    /// wrapper keep that gap.
     const INTERVAL: usize = 1;
     fn build() -> Self;
     fn set_clock(&mut self, level: bool);

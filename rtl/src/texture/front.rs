@@ -591,9 +591,10 @@ pub use trilinear::TexTrilinear;
 /// level's, and the first are held a clock for the blend by frac(λ), as `TexTrilinear`'s. Ports and outputs as
 /// `TexTrilinear`'s, the same values (the same model, one memory holding the chain).
 ///
-/// A vector (a read or a write) may come at most every other clock: the clock after one is the second pass's,
-/// and whatever comes on it (valid or not, a write or not) is not read; the AXI4-Stream wrapper takes a beat
-/// every other clock (`StreamUnit::INTERVAL`). A write's second pass reads nothing (its texel leaves as zero).
+/// A vector (a read or a write) may come at most every other clock: the clock after one is the second pass's and
+/// carries no vector (`valid_in` low; a valid vector there would be lost to the second pass), and its data (a
+/// write enable among them) are not read; the AXI4-Stream wrapper takes a beat every other clock
+/// (`StreamUnit::INTERVAL`). A write's second pass reads nothing (its texel leaves as zero).
 pub mod trilinear_two_pass {
     use crate::prim::delay::Delay;
     use crate::prim::q::{SBits, Sq11_8, Sq3_8, Sq8_8, U16, U8};
