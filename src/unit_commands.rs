@@ -63,7 +63,7 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     if waivers {
         let files = [(format!("{name}.v"), name.clone()), (format!("{module}.v"), module.clone())];
         let files: Vec<(&str, &str)> = files.iter().map(|(f, m)| (f.as_str(), m.as_str())).collect();
-        let (p, design) = synth::lint::write_waivers(&out, &name, &files, unit.waivers)?;
+        let (p, design) = synth::lint::write_waivers(&out, &name, &files, &unit.waivers())?;
         println!("{}", p.display());
         for d in design {
             println!("  not waived (the design's): {d}");

@@ -27,17 +27,30 @@ pub struct Unit {
     pub rtl: &'static dyn RtlPaths,
     /// The block behind its AXI4-Stream wrapper.
     pub axis: &'static dyn AxisPaths,
-    /// The design's own lint waivers: (signal as `instance$port`, why the Verilog leaves it unused).
-    pub waivers: &'static [(&'static str, &'static str)],
+    /// The design's own lint waivers: (signal as `instance$port`, why the Verilog leaves it unused); `waivers()`
+    /// reads them with the shared ones.
+    own: &'static [(&'static str, &'static str)],
+    /// Lists of waivers the unit shares with others (the parts it holds): see `waivers()`.
+    shared: &'static [&'static [(&'static str, &'static str)]],
 }
 
 impl Unit {
     pub const fn new(model: &'static UnitModel, rtl: &'static dyn RtlPaths, axis: &'static dyn AxisPaths) -> Unit {
-        Unit { model, rtl, axis, waivers: &[] }
+        Unit { model, rtl, axis, own: &[], shared: &[] }
     }
 
-    pub const fn waiving(self, waivers: &'static [(&'static str, &'static str)]) -> Unit {
-        Unit { waivers, ..self }
+    pub const fn waiving(self, own: &'static [(&'static str, &'static str)]) -> Unit {
+        Unit { own, ..self }
+    }
+
+    /// The waivers of the parts the unit holds, each list written once for every unit holding that part.
+    pub const fn sharing(self, shared: &'static [&'static [(&'static str, &'static str)]]) -> Unit {
+        Unit { shared, ..self }
+    }
+
+    /// Every waiver: the shared lists' and the unit's own.
+    pub fn waivers(&self) -> Vec<(&'static str, &'static str)> {
+        self.shared.iter().flat_map(|l| l.iter()).chain(self.own).copied().collect()
     }
 
     /// The unit's name (its model's and its block's: a test holds them alike).
@@ -45,6 +58,62 @@ impl Unit {
         self.model.name
     }
 }
+
+// The lint waivers the pipelines on the texture unit share, a list a part: each pipeline's row names the parts it
+// holds (`Unit::sharing`).
+
+/// A per-vertex light path beside the bump path (the host-fed pipelines' `light$valid_out` waiver).
+const PER_VERTEX: &[(&str, &str)] = &[
+    (
+        "light$valid_out",
+        "the light path runs in lockstep with the bump path, whose valid is used (as in cart_pipeline)",
+    ),
+    ("light_norm$valid_out", "as light$valid_out"),
+];
+/// A bilinear front (`TexBilinear`).
+const BILINEAR: &[(&str, &str)] = &[
+    ("filter$0$wide", "the front's bilinear units, read rounded as in cart_pipeline"),
+    ("filter$1$wide", "as filter$0$wide"),
+];
+/// A colour map beside a bilinear front.
+const COLOUR: &[(&str, &str)] = &[
+    ("colour_filter$0$wide", "as filter$0$wide: the front reads each colour unit's rounded byte"),
+    ("colour_filter$1$wide", "as colour_filter$0$wide"),
+    ("colour_filter$2$wide", "as colour_filter$0$wide"),
+    ("colour_fetch$valid_out", "the two fetches run in step: the valid chain follows the bump map's"),
+];
+/// A nearest-texel front (`TexNearest`, `TexNearestMip`).
+const NEAREST: &[(&str, &str)] = &[
+    ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
+    ("addr$vblend", "as addr$ublend"),
+    ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
+    ("fetch$t01", "as fetch$t10"),
+    ("fetch$t11", "as fetch$t10"),
+];
+/// The LOD unit under a nearest-MIP front.
+const NEAREST_MIP: &[(&str, &str)] = &[
+    (
+        "lod$level",
+        "the nearest level is the LOD unit's `nearest`; the floor of lambda and its fraction are trilinear's",
+    ),
+    ("lod$frac", "as lod$level"),
+];
+/// A one-clock trilinear front (`TexTrilinear`).
+const TRILINEAR: &[(&str, &str)] = &[
+    ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
+    ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
+    ("filter$1$wide", "as filter$0$wide"),
+    ("filter$2$wide", "as filter$0$wide"),
+    ("filter$3$wide", "as filter$0$wide"),
+    ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
+];
+/// The two-pass trilinear front (`TexTrilinearTwoPass`).
+const TRILINEAR_TWO_PASS: &[(&str, &str)] = &[
+    ("lod$nearest", "as in a one-clock trilinear front"),
+    ("fetch$valid_out", "the front's valid follows each vector's second pass from the address unit, not the fetch's"),
+    ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
+    ("filter$1$wide", "as filter$0$wide"),
+];
 
 /// Every unit with an rtl block, in the order the command line lists them and `bumprtl accuracy` prints them.
 pub static UNITS: &[Unit] = &[
@@ -150,138 +219,22 @@ pub static UNITS: &[Unit] = &[
     unit!(&vectors::lod::MODEL, rtl::lod::Lod),
     unit!(&vectors::tex_addr::MODEL, rtl::tex_addr::TexAddr),
     unit!(map: &vectors::tex_fetch::MODEL, rtl::tex_fetch::TexFetch),
-    unit!(map: &vectors::cart_tex::bilinear::MODEL, rtl::cart_tex::CartTexBilinear).waiving(&[
-        ("filter$0$wide", "the front's bilinear units, read rounded as in cart_pipeline"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-    ]),
-    unit!(map: &vectors::cart_tex::bilinear_matte::MODEL, rtl::cart_tex::CartTexBilinearMatte).waiving(&[
-        ("filter$0$wide", "as in cart_tex_bilinear"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-    ]),
-    unit!(map: &vectors::cart_tex::nearest_matte::MODEL, rtl::cart_tex::CartTexNearestMatte).waiving(&[
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-        ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
-        ("addr$vblend", "as addr$ublend"),
-        ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
-        ("fetch$t01", "as fetch$t10"),
-        ("fetch$t11", "as fetch$t10"),
-    ]),
-    unit!(map: &vectors::cart_tex::nearest_mip_matte::MODEL, rtl::cart_tex::CartTexNearestMipMatte).waiving(&[
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-        (
-            "lod$level",
-            "the nearest level is the LOD unit's `nearest`; the floor of lambda and its fraction are trilinear's",
-        ),
-        ("lod$frac", "as lod$level"),
-        ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
-        ("addr$vblend", "as addr$ublend"),
-        ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
-        ("fetch$t01", "as fetch$t10"),
-        ("fetch$t11", "as fetch$t10"),
-    ]),
-    unit!(map: &vectors::cart_tex::trilinear_matte::MODEL, rtl::cart_tex::CartTexTrilinearMatte).waiving(&[
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-        ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
-        ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("filter$2$wide", "as filter$0$wide"),
-        ("filter$3$wide", "as filter$0$wide"),
-        ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
-    ]),
-    unit!(map: &vectors::cart_tex::trilinear::MODEL, rtl::cart_tex::CartTexTrilinear).waiving(&[
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-        ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
-        ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("filter$2$wide", "as filter$0$wide"),
-        ("filter$3$wide", "as filter$0$wide"),
-        ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
-    ]),
-    unit!(map: &vectors::cart_tex::trilinear_hemi_oct::MODEL, rtl::cart_tex::CartTexTrilinearHemiOct).waiving(&[
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-        ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
-        ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("filter$2$wide", "as filter$0$wide"),
-        ("filter$3$wide", "as filter$0$wide"),
-        ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
-    ]),
-    unit!(map: &vectors::cart_tex::trilinear_surface::MODEL, rtl::cart_tex::CartTexTrilinearSurface).waiving(&[
-        ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
-        ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("filter$2$wide", "as filter$0$wide"),
-        ("filter$3$wide", "as filter$0$wide"),
-        ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
-    ]),
-    unit!(map: &vectors::cart_tex::trilinear_two_pass_matte::MODEL, rtl::cart_tex::CartTexTrilinearTwoPassMatte)
-        .waiving(&[
-            ("light$valid_out", "as in cart_pipeline"),
-            ("light_norm$valid_out", "as in cart_pipeline"),
-            ("lod$nearest", "as in cart_tex_trilinear_matte"),
-            (
-                "fetch$valid_out",
-                "the front's valid follows each vector's second pass from the address unit, not the fetch's",
-            ),
-            ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
-            ("filter$1$wide", "as filter$0$wide"),
-        ]),
-    unit!(map: &vectors::cart_tex::bilinear_hemi_oct::MODEL, rtl::cart_tex::CartTexBilinearHemiOct).waiving(&[
-        ("filter$0$wide", "as in cart_tex_bilinear"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-    ]),
-    unit!(map: &vectors::cart_tex::bilinear_surface::MODEL, rtl::cart_tex::CartTexBilinearSurface)
-        .waiving(&[("filter$0$wide", "as in cart_tex_bilinear"), ("filter$1$wide", "as filter$0$wide")]),
-    unit!(map: &vectors::cart_tex::bilinear_surface_matte::MODEL, rtl::cart_tex::CartTexBilinearSurfaceMatte)
-        .waiving(&[("filter$0$wide", "as in cart_tex_bilinear"), ("filter$1$wide", "as filter$0$wide")]),
-    unit!(map: &vectors::cart_tex::bilinear_colour::MODEL, rtl::cart_tex::CartTexBilinearColour).waiving(&[
-        ("filter$0$wide", "as in cart_tex_bilinear"),
-        ("filter$1$wide", "as filter$0$wide"),
-        ("colour_filter$0$wide", "as filter$0$wide: the front reads each colour unit's rounded byte"),
-        ("colour_filter$1$wide", "as colour_filter$0$wide"),
-        ("colour_filter$2$wide", "as colour_filter$0$wide"),
-        ("colour_fetch$valid_out", "the two fetches run in step: the valid chain follows the bump map's"),
-        ("light$valid_out", "as in cart_pipeline"),
-        ("light_norm$valid_out", "as in cart_pipeline"),
-    ]),
-    unit!(map: &vectors::cart_tex::bilinear_surface_colour::MODEL, rtl::cart_tex::CartTexBilinearSurfaceColour)
-        .waiving(&[
-            ("filter$0$wide", "as in cart_tex_bilinear"),
-            ("filter$1$wide", "as filter$0$wide"),
-            ("colour_filter$0$wide", "as in cart_tex_bilinear_colour"),
-            ("colour_filter$1$wide", "as colour_filter$0$wide"),
-            ("colour_filter$2$wide", "as colour_filter$0$wide"),
-            ("colour_fetch$valid_out", "as in cart_tex_bilinear_colour"),
-        ]),
-    unit!(map: &vectors::cart_tex::nearest_surface_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceMatte).waiving(&[
-        ("addr$ublend", "as in cart_tex_nearest_matte"),
-        ("addr$vblend", "as addr$ublend"),
-        ("fetch$t10", "as in cart_tex_nearest_matte"),
-        ("fetch$t01", "as fetch$t10"),
-        ("fetch$t11", "as fetch$t10"),
-    ]),
-    unit!(
-        map: &vectors::cart_tex::nearest_surface_hemi_oct_matte::MODEL,
-        rtl::cart_tex::CartTexNearestSurfaceHemiOctMatte
-    )
-    .waiving(&[
-        ("addr$ublend", "as in cart_tex_nearest_matte"),
-        ("addr$vblend", "as addr$ublend"),
-        ("fetch$t10", "as in cart_tex_nearest_matte"),
-        ("fetch$t01", "as fetch$t10"),
-        ("fetch$t11", "as fetch$t10"),
-    ]),
+    unit!(map: &vectors::cart_tex::bilinear::MODEL, rtl::cart_tex::CartTexBilinear).sharing(&[PER_VERTEX, BILINEAR]),
+    unit!(map: &vectors::cart_tex::bilinear_matte::MODEL, rtl::cart_tex::CartTexBilinearMatte).sharing(&[PER_VERTEX, BILINEAR]),
+    unit!(map: &vectors::cart_tex::nearest_matte::MODEL, rtl::cart_tex::CartTexNearestMatte).sharing(&[PER_VERTEX, NEAREST]),
+    unit!(map: &vectors::cart_tex::nearest_mip_matte::MODEL, rtl::cart_tex::CartTexNearestMipMatte).sharing(&[PER_VERTEX, NEAREST, NEAREST_MIP]),
+    unit!(map: &vectors::cart_tex::trilinear_matte::MODEL, rtl::cart_tex::CartTexTrilinearMatte).sharing(&[PER_VERTEX, TRILINEAR]),
+    unit!(map: &vectors::cart_tex::trilinear::MODEL, rtl::cart_tex::CartTexTrilinear).sharing(&[PER_VERTEX, TRILINEAR]),
+    unit!(map: &vectors::cart_tex::trilinear_hemi_oct::MODEL, rtl::cart_tex::CartTexTrilinearHemiOct).sharing(&[PER_VERTEX, TRILINEAR]),
+    unit!(map: &vectors::cart_tex::trilinear_surface::MODEL, rtl::cart_tex::CartTexTrilinearSurface).sharing(&[TRILINEAR]),
+    unit!(map: &vectors::cart_tex::trilinear_two_pass_matte::MODEL, rtl::cart_tex::CartTexTrilinearTwoPassMatte).sharing(&[PER_VERTEX, TRILINEAR_TWO_PASS]),
+    unit!(map: &vectors::cart_tex::bilinear_hemi_oct::MODEL, rtl::cart_tex::CartTexBilinearHemiOct).sharing(&[PER_VERTEX, BILINEAR]),
+    unit!(map: &vectors::cart_tex::bilinear_surface::MODEL, rtl::cart_tex::CartTexBilinearSurface).sharing(&[BILINEAR]),
+    unit!(map: &vectors::cart_tex::bilinear_surface_matte::MODEL, rtl::cart_tex::CartTexBilinearSurfaceMatte).sharing(&[BILINEAR]),
+    unit!(map: &vectors::cart_tex::bilinear_colour::MODEL, rtl::cart_tex::CartTexBilinearColour).sharing(&[PER_VERTEX, BILINEAR, COLOUR]),
+    unit!(map: &vectors::cart_tex::bilinear_surface_colour::MODEL, rtl::cart_tex::CartTexBilinearSurfaceColour).sharing(&[BILINEAR, COLOUR]),
+    unit!(map: &vectors::cart_tex::nearest_surface_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceMatte).sharing(&[NEAREST]),
+    unit!(map: &vectors::cart_tex::nearest_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceHemiOctMatte).sharing(&[NEAREST]),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

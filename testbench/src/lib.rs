@@ -171,10 +171,10 @@ pub fn lint<U: StreamUnit>() -> Vec<String> {
     let dir = work_dir("lint", U::NAME);
     synth::export::<U>().write(&dir).unwrap_or_else(|e| panic!("{e}"));
     let waivers =
-        sim::units::find(U::NAME).unwrap_or_else(|| panic!("{} is not in sim::units::UNITS", U::NAME)).waivers;
+        sim::units::find(U::NAME).unwrap_or_else(|| panic!("{} is not in sim::units::UNITS", U::NAME)).waivers();
     let file = format!("{}.v", U::NAME);
     let (vlt, mut found) =
-        synth::lint::write_waivers(&dir, U::NAME, &[(&file, U::NAME)], waivers).unwrap_or_else(|e| panic!("{e}"));
+        synth::lint::write_waivers(&dir, U::NAME, &[(&file, U::NAME)], &waivers).unwrap_or_else(|e| panic!("{e}"));
     let again = synth::lint::warnings(&dir, &[&vlt, Path::new(&file)], U::NAME).unwrap_or_else(|e| panic!("{e}"));
     found.extend(again.into_iter().map(|w| format!("with {}.vlt: {w}", U::NAME)));
     found

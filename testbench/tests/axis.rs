@@ -166,7 +166,7 @@ fn every_unit_behind_its_wrapper_lints_clean() {
         let file = format!("{module}.v");
         std::fs::create_dir_all(&dir).unwrap();
         synth::export::write_atomic(&dir.join(&file), u.axis.verilog().as_bytes()).unwrap();
-        let (vlt, design) = synth::lint::write_waivers(&dir, u.name(), &[(&file, &module)], u.waivers)
+        let (vlt, design) = synth::lint::write_waivers(&dir, u.name(), &[(&file, &module)], &u.waivers())
             .unwrap_or_else(|e| panic!("{e}"));
         bad.extend(design);
         // and with the waiver file it writes, as the exported `<unit>.vlt` carries it: silent

@@ -313,6 +313,79 @@ texture_front! {
     unfiltered: { texel: t00 },
 }
 
+/// Both trilinear fronts' block of their own: the blend of the two levels.
+pub mod level {
+    use crate::prim::delay::Delay;
+    use crate::prim::q::{SBits, U8};
+    use crate::prim::sm_mul::{self, SmMul};
+    use rust_hdl::prelude::*;
+
+    /// `LevelLerp`'s clocks: the difference (f registered beside it); the product; the rounded sum.
+    pub const LERP_LATENCY: usize = 1 + sm_mul::LATENCY + 1;
+
+    crate::block! {
+        /// One byte of the blend of two levels by frac(λ): `round_half_up(b₀·2^8 + (b₁ − b₀)·f, 8)` (U8,
+        /// `vectors::front::lerp`), b₀ the level ⌊λ⌋'s byte, b₁ the second level's, f = frac(λ) (U0.8), the three
+        /// on one clock; `out` LERP_LATENCY clocks later.
+        #[derive(Default)]
+        pub struct LevelLerp {
+            pub clock: Signal<In, Clock>,
+            pub b0: Signal<In, U8>,
+            pub b1: Signal<In, U8>,
+            pub f: Signal<In, U8>,
+            pub out: Signal<Out, U8>,
+            // stage 1: b₁ − b₀ (S9 in 16, two's complement), b₀·2^8 (U16 in 17), f beside them
+            s1_d: DFF<SBits<16>>,
+            s1_base: DFF<Bits<17>>,
+            s1_f: DFF<U8>,
+            w_b0: Signal<Local, Bits<16>>,   // b₀ widened (U8 in 16)
+            w_b1: Signal<Local, Bits<16>>,   // b₁ widened (U8 in 16)
+            w_base: Signal<Local, Bits<17>>, // b₀ widened (U8 in 17)
+            w_frac: Signal<Local, Bits<16>>, // f widened (U8 in 16)
+            // stages 2–5: |b₁ − b₀|·f ≤ 255·255 (U16), the base beside it
+            mul: SmMul<16>,
+            base: Delay<Bits<17>, { sm_mul::LATENCY }>,
+            w_prod: Signal<Local, Bits<17>>, // the product's low 17 bits: exact (< 2^16)
+            w_sum: Signal<Local, Bits<17>>,  // b₀·2^8 ± |b₁ − b₀|·f ∈ 0..=65280, exact (a mean of b₀, b₁ times 2^8)
+            w_r: Signal<Local, Bits<17>>,    // that + 2^7 ≤ 65408, exact
+            // the last stage: bits 8.. of the rounded sum (truncation of it: round half up overall)
+            s5_out: DFF<U8>,
+        }
+    }
+
+    impl Logic for LevelLerp {
+        #[hdl_gen]
+        fn update(&mut self) {
+            dff_setup!(self, clock, s1_d, s1_base, s1_f, s5_out);
+            self.mul.clock.next = self.clock.val();
+            self.base.clock.next = self.clock.val();
+            // stage 1: b₁ − b₀, wrapping in 16 bits to its two's complement; b₀·2^8 (exact in 17)
+            self.w_b0.next = bit_cast::<16, 8>(self.b0.val());
+            self.w_b1.next = bit_cast::<16, 8>(self.b1.val());
+            self.w_base.next = bit_cast::<17, 8>(self.b0.val());
+            self.s1_d.d.next = self.w_b1.val() - self.w_b0.val();
+            self.s1_base.d.next = self.w_base.val() << 8;
+            self.s1_f.d.next = self.f.val();
+            // stages 2–5: |b₁ − b₀|·f, the base beside it
+            self.w_frac.next = bit_cast::<16, 8>(self.s1_f.q.val());
+            self.mul.x.next = self.s1_d.q.val();
+            self.mul.w.next = self.w_frac.val();
+            self.base.d.next = self.s1_base.q.val();
+            // the last stage: b₀·2^8 ± |b₁ − b₀|·f + 2^7, then bits 8..
+            self.w_prod.next = self.mul.p.val().get_bits::<17>(0);
+            if self.mul.neg.val() {
+                self.w_sum.next = self.base.q.val() - self.w_prod.val();
+            } else {
+                self.w_sum.next = self.base.q.val() + self.w_prod.val();
+            }
+            self.w_r.next = self.w_sum.val() + 128;
+            self.s5_out.d.next = self.w_r.val().get_bits::<8>(8); // truncation of the rounded sum
+            self.out.next = self.s5_out.q.val();
+        }
+    }
+}
+pub use level::LevelLerp;
+
 /// `TexTrilinear`: the trilinear front, two sets of the unit blocks side by side, one a level: the LOD unit gives
 /// ⌊λ⌋ and frac(λ); the second level is ⌊λ⌋ + 1, or at the last level (where frac(λ) is 0) ⌊λ⌋ − 1
 /// (`vectors::front::neighbour`). Two levels a step apart have sides of different parity (log2), so the map is
@@ -323,10 +396,10 @@ texture_front! {
 /// (⌊λ⌋'s picked by the parity it had) is blended by frac(λ): `round_half_up(b₀·2^8 + (b₁ − b₀)·f, 8)` (U8,
 /// `vectors::front::lerp`). Ports as `TexNearestMip`'s.
 pub mod trilinear {
+    use super::level::{LevelLerp, LERP_LATENCY};
     use crate::prim::delay::Delay;
-    use crate::prim::q::{SBits, Sq11_8, Sq3_8, Sq8_8, U16, U8};
+    use crate::prim::q::{Sq11_8, Sq3_8, Sq8_8, U16, U8};
     use crate::prim::ram_delay::RamDelay;
-    use crate::prim::sm_mul::{self, SmMul};
     use crate::tex_fetch::{TexFetch, EVEN, EVEN_ADDR_BITS, ODD};
     use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr};
     use rust_hdl::prelude::*;
@@ -337,7 +410,7 @@ pub mod trilinear {
     pub const AT_FETCH: usize = AT_ADDR + crate::tex_addr::LATENCY;
     pub const AT_FILTER: usize = AT_FETCH + crate::tex_fetch::LATENCY;
     pub const AT_LERP: usize = AT_FILTER + crate::bilinear::LATENCY;
-    pub const LATENCY: usize = AT_LERP + 1 + sm_mul::LATENCY + 1;
+    pub const LATENCY: usize = AT_LERP + LERP_LATENCY;
 
     crate::block! {
         #[derive(Default)]
@@ -381,23 +454,10 @@ pub mod trilinear {
             blend_word: [Signal<Local, U16>; 2],
             filter_valid: Delay<Bit, { crate::bilinear::LATENCY }>,
             // frac(λ), from the LOD unit to the blend of the two levels
-            frac_dly: RamDelay<8, 5, { AT_LERP + 1 - crate::lod::LATENCY }>,
-            // the blend, per byte: stage 1, b₁ − b₀ (S9 in 16, two's complement) and b₀·2^8 (U16 in 17)
-            s1_d: [DFF<SBits<16>>; 2],
-            s1_base: [DFF<Bits<17>>; 2],
-            w_b0: [Signal<Local, Bits<16>>; 2], // b₀ widened (U8 in 16)
-            w_b1: [Signal<Local, Bits<16>>; 2], // b₁ widened (U8 in 16)
-            w_base: [Signal<Local, Bits<17>>; 2], // b₀ widened (U8 in 17)
-            w_frac: Signal<Local, Bits<16>>,    // f widened (U8 in 16)
-            // stages 2–4: |b₁ − b₀|·f ≤ 255·255 (U16), the base beside it
-            mul: [SmMul<16>; 2],
-            base: [Delay<Bits<17>, { sm_mul::LATENCY }>; 2],
-            w_prod: [Signal<Local, Bits<17>>; 2], // the product's low 17 bits: exact (< 2^16)
-            w_sum: [Signal<Local, Bits<17>>; 2],  // b₀·2^8 ± |b₁ − b₀|·f ∈ 0..=65280, exact (a mean of b₀, b₁ times 2^8)
-            w_r: [Signal<Local, Bits<17>>; 2],    // that + 2^7 ≤ 65408, exact
-            // stage 5: bits 8.. of the rounded sum (truncation of it: round half up overall)
-            s5_out: [DFF<U8>; 2],
-            lerp_valid: Delay<Bit, { 1 + sm_mul::LATENCY + 1 }>,
+            frac_dly: RamDelay<8, 5, { AT_LERP - crate::lod::LATENCY }>,
+            // the blend of the two levels, a byte each (low, high)
+            lerp: [LevelLerp; 2],
+            lerp_valid: Delay<Bit, LERP_LATENCY>,
         }
     }
 
@@ -532,51 +592,27 @@ pub mod trilinear {
             self.filter_valid.d.next = self.fetch_even.valid_out.val();
             // frac(λ) waits for the two levels' bytes
             self.frac_dly.d.next = self.lod.frac.val();
-            self.w_frac.next = bit_cast::<16, 8>(self.frac_dly.q.val());
-            // the blend of the two levels, per byte c: b₀ from unit c, b₁ from unit 2 + c
-            // b₀ from ⌊λ⌋'s fetch's units (the odd one's, 2 + c, where its side log2 is odd), b₁ from the other's
+            // the blend of the two levels, per byte c: b₀ from ⌊λ⌋'s fetch's units (the odd one's, 2 + c, where its
+            // side log2 is odd), b₁ from the other's
             if self.odd_first_dly.q.val() {
-                self.w_b0[0].next = bit_cast::<16, 8>(self.filter[2].out.val());
-                self.w_b0[1].next = bit_cast::<16, 8>(self.filter[3].out.val());
-                self.w_b1[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
-                self.w_b1[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
-                self.w_base[0].next = bit_cast::<17, 8>(self.filter[2].out.val());
-                self.w_base[1].next = bit_cast::<17, 8>(self.filter[3].out.val());
+                self.lerp[0].b0.next = self.filter[2].out.val();
+                self.lerp[1].b0.next = self.filter[3].out.val();
+                self.lerp[0].b1.next = self.filter[0].out.val();
+                self.lerp[1].b1.next = self.filter[1].out.val();
             } else {
-                self.w_b0[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
-                self.w_b0[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
-                self.w_b1[0].next = bit_cast::<16, 8>(self.filter[2].out.val());
-                self.w_b1[1].next = bit_cast::<16, 8>(self.filter[3].out.val());
-                self.w_base[0].next = bit_cast::<17, 8>(self.filter[0].out.val());
-                self.w_base[1].next = bit_cast::<17, 8>(self.filter[1].out.val());
+                self.lerp[0].b0.next = self.filter[0].out.val();
+                self.lerp[1].b0.next = self.filter[1].out.val();
+                self.lerp[0].b1.next = self.filter[2].out.val();
+                self.lerp[1].b1.next = self.filter[3].out.val();
+            }
+            for c in 0..2 {
+                self.lerp[c].clock.next = self.clock.val();
+                self.lerp[c].f.next = self.frac_dly.q.val();
             }
             self.lerp_valid.d.next = self.filter_valid.q.val();
-            for c in 0..2 {
-                self.s1_d[c].clock.next = self.clock.val();
-                self.s1_base[c].clock.next = self.clock.val();
-                self.mul[c].clock.next = self.clock.val();
-                self.base[c].clock.next = self.clock.val();
-                self.s5_out[c].clock.next = self.clock.val();
-                // stage 1: b₁ − b₀, wrapping in 16 bits to its two's complement; b₀·2^8 (exact in 17)
-                self.s1_d[c].d.next = self.w_b1[c].val() - self.w_b0[c].val();
-                self.s1_base[c].d.next = self.w_base[c].val() << 8;
-                // stages 2–4: |b₁ − b₀|·f, the base beside it
-                self.mul[c].x.next = self.s1_d[c].q.val();
-                self.mul[c].w.next = self.w_frac.val();
-                self.base[c].d.next = self.s1_base[c].q.val();
-                // stage 5: b₀·2^8 ± |b₁ − b₀|·f + 2^7, then bits 8..
-                self.w_prod[c].next = self.mul[c].p.val().get_bits::<17>(0);
-                if self.mul[c].neg.val() {
-                    self.w_sum[c].next = self.base[c].q.val() - self.w_prod[c].val();
-                } else {
-                    self.w_sum[c].next = self.base[c].q.val() + self.w_prod[c].val();
-                }
-                self.w_r[c].next = self.w_sum[c].val() + 128;
-                self.s5_out[c].d.next = self.w_r[c].val().get_bits::<8>(8); // truncation of the rounded sum
-            }
             self.valid_out.next = self.lerp_valid.q.val();
-            self.lo.next = self.s5_out[0].q.val();
-            self.hi.next = self.s5_out[1].q.val();
+            self.lo.next = self.lerp[0].out.val();
+            self.hi.next = self.lerp[1].out.val();
         }
     }
 }
@@ -596,10 +632,10 @@ pub use trilinear::TexTrilinear;
 /// write enable among them) are not read; the AXI4-Stream wrapper takes a beat every other clock
 /// (`StreamUnit::INTERVAL`). A write's second pass reads nothing (its texel leaves as zero).
 pub mod trilinear_two_pass {
+    use super::level::{LevelLerp, LERP_LATENCY};
     use crate::prim::delay::Delay;
-    use crate::prim::q::{SBits, Sq11_8, Sq3_8, Sq8_8, U16, U8};
+    use crate::prim::q::{Sq11_8, Sq3_8, Sq8_8, U16, U8};
     use crate::prim::ram_delay::RamDelay;
-    use crate::prim::sm_mul::{self, SmMul};
     use crate::tex_fetch::TexFetch;
     use crate::{bilinear::BilinearUnit, lod::Lod, tex_addr::TexAddr};
     use rust_hdl::prelude::*;
@@ -611,7 +647,7 @@ pub mod trilinear_two_pass {
     pub const AT_FETCH: usize = AT_ADDR + crate::tex_addr::LATENCY;
     pub const AT_FILTER: usize = AT_FETCH + crate::tex_fetch::LATENCY;
     pub const AT_LERP: usize = AT_FILTER + crate::bilinear::LATENCY + 1;
-    pub const LATENCY: usize = AT_LERP + 1 + sm_mul::LATENCY + 1;
+    pub const LATENCY: usize = AT_LERP + LERP_LATENCY;
     /// Clocks a vector takes: the two passes.
     pub const INTERVAL: usize = 2;
 
@@ -662,22 +698,9 @@ pub mod trilinear_two_pass {
             // ⌊λ⌋'s two bytes, held a clock for the second level's
             first: [DFF<U8>; 2],
             // frac(λ), from the LOD unit to the blend of the two levels
-            frac_dly: RamDelay<8, 5, { AT_LERP + 1 - crate::lod::LATENCY }>,
-            // the blend, per byte: stage 1, b₁ − b₀ (S9 in 16, two's complement) and b₀·2^8 (U16 in 17)
-            s1_d: [DFF<SBits<16>>; 2],
-            s1_base: [DFF<Bits<17>>; 2],
-            w_b0: [Signal<Local, Bits<16>>; 2], // b₀ widened (U8 in 16)
-            w_b1: [Signal<Local, Bits<16>>; 2], // b₁ widened (U8 in 16)
-            w_base: [Signal<Local, Bits<17>>; 2], // b₀ widened (U8 in 17)
-            w_frac: Signal<Local, Bits<16>>,    // f widened (U8 in 16)
-            // stages 2–4: |b₁ − b₀|·f ≤ 255·255 (U16), the base beside it
-            mul: [SmMul<16>; 2],
-            base: [Delay<Bits<17>, { sm_mul::LATENCY }>; 2],
-            w_prod: [Signal<Local, Bits<17>>; 2], // the product's low 17 bits: exact (< 2^16)
-            w_sum: [Signal<Local, Bits<17>>; 2],  // b₀·2^8 ± |b₁ − b₀|·f ∈ 0..=65280, exact (a mean of b₀, b₁ times 2^8)
-            w_r: [Signal<Local, Bits<17>>; 2],    // that + 2^7 ≤ 65408, exact
-            // stage 5: bits 8.. of the rounded sum (truncation of it: round half up overall)
-            s5_out: [DFF<U8>; 2],
+            frac_dly: RamDelay<8, 5, { AT_LERP - crate::lod::LATENCY }>,
+            // the blend of the two levels, a byte each (low, high)
+            lerp: [LevelLerp; 2],
             // a vector's second pass, from the address unit to the output
             out_valid: Delay<Bit, { LATENCY - AT_ADDR - 1 }>,
         }
@@ -796,44 +819,20 @@ pub mod trilinear_two_pass {
             self.filter[1].t11.next = self.fetch.t11.val().get_bits::<8>(8);
             // frac(λ) waits for the second level's bytes
             self.frac_dly.d.next = self.lod.frac.val();
-            self.w_frac.next = bit_cast::<16, 8>(self.frac_dly.q.val());
             self.out_valid.d.next = self.p2_valid.q.val();
-            // b₀: ⌊λ⌋'s byte, held a clock from the first pass; b₁: the second level's, as it leaves its unit
-            // (written out: a loop's index cannot reach into a cast's argument under `hdl_gen`)
-            self.w_b0[0].next = bit_cast::<16, 8>(self.first[0].q.val());
-            self.w_b0[1].next = bit_cast::<16, 8>(self.first[1].q.val());
-            self.w_b1[0].next = bit_cast::<16, 8>(self.filter[0].out.val());
-            self.w_b1[1].next = bit_cast::<16, 8>(self.filter[1].out.val());
-            self.w_base[0].next = bit_cast::<17, 8>(self.first[0].q.val());
-            self.w_base[1].next = bit_cast::<17, 8>(self.first[1].q.val());
+            // the blend of the two levels, per byte c: b₀ ⌊λ⌋'s, held a clock from the first pass; b₁ the second
+            // level's, as it leaves its unit
             for c in 0..2 {
                 self.first[c].clock.next = self.clock.val();
-                self.s1_d[c].clock.next = self.clock.val();
-                self.s1_base[c].clock.next = self.clock.val();
-                self.mul[c].clock.next = self.clock.val();
-                self.base[c].clock.next = self.clock.val();
-                self.s5_out[c].clock.next = self.clock.val();
                 self.first[c].d.next = self.filter[c].out.val();
-                // stage 1: b₁ − b₀, wrapping in 16 bits to its two's complement; b₀·2^8 (exact in 17)
-                self.s1_d[c].d.next = self.w_b1[c].val() - self.w_b0[c].val();
-                self.s1_base[c].d.next = self.w_base[c].val() << 8;
-                // stages 2–4: |b₁ − b₀|·f, the base beside it
-                self.mul[c].x.next = self.s1_d[c].q.val();
-                self.mul[c].w.next = self.w_frac.val();
-                self.base[c].d.next = self.s1_base[c].q.val();
-                // stage 5: b₀·2^8 ± |b₁ − b₀|·f + 2^7, then bits 8..
-                self.w_prod[c].next = self.mul[c].p.val().get_bits::<17>(0);
-                if self.mul[c].neg.val() {
-                    self.w_sum[c].next = self.base[c].q.val() - self.w_prod[c].val();
-                } else {
-                    self.w_sum[c].next = self.base[c].q.val() + self.w_prod[c].val();
-                }
-                self.w_r[c].next = self.w_sum[c].val() + 128;
-                self.s5_out[c].d.next = self.w_r[c].val().get_bits::<8>(8); // truncation of the rounded sum
+                self.lerp[c].clock.next = self.clock.val();
+                self.lerp[c].b0.next = self.first[c].q.val();
+                self.lerp[c].b1.next = self.filter[c].out.val();
+                self.lerp[c].f.next = self.frac_dly.q.val();
             }
             self.valid_out.next = self.out_valid.q.val();
-            self.lo.next = self.s5_out[0].q.val();
-            self.hi.next = self.s5_out[1].q.val();
+            self.lo.next = self.lerp[0].out.val();
+            self.hi.next = self.lerp[1].out.val();
         }
     }
 }
