@@ -20,6 +20,11 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("seed", true, "bilinear", false),
     ("seed", true, "nearest", false),
     ("hemi_oct", true, "nearest", false),
+    ("seed", false, "nearest", true),
+    ("seed", false, "nearest_mip", true),
+    ("hemi_oct", false, "bilinear", false),
+    ("hemi_oct", false, "trilinear", false),
+    ("seed", true, "trilinear", false),
 ];
 
 /// The pipelines with a colour map, likewise: `cart_tex_<filter>[_surface]_colour`.

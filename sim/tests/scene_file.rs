@@ -62,6 +62,15 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     // each pipeline has its scene
     let kind = |f: &str| scene_file::load(&scenes_dir().join(f)).unwrap().pipeline.name;
     assert_eq!(kind("hemi_oct.toml"), "cart_tex_bilinear_hemi_oct");
+    for (f, want) in [
+        ("hemi_oct_matte.toml", "cart_tex_bilinear_hemi_oct_matte"),
+        ("torus_nearest_gloss.toml", "cart_tex_nearest"),
+        ("torus_nearest_mip_gloss.toml", "cart_tex_nearest_mip"),
+        ("torus_trilinear_hemi_oct_matte.toml", "cart_tex_trilinear_hemi_oct_matte"),
+        ("torus_trilinear_surface_matte.toml", "cart_tex_trilinear_surface_matte"),
+    ] {
+        assert_eq!(kind(f), want, "{f}");
+    }
     assert_eq!(kind("polar.toml"), "polar_pipeline");
     assert_eq!(scene_file::load(&scenes_dir().join("polar.toml")).unwrap().settings.pw, 16);
     assert_eq!(kind("height.toml"), "height_pipeline");
@@ -136,20 +145,26 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         "s.toml:5:10:",
         &["filter = \"trilinear\"", "only the texture unit has MIP levels"],
     );
+    assert_eq!(kind(scene("seed", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n")), "cart_tex_nearest_mip");
+    // a MIP filter no pipeline on the unit serves: one line at the filter, naming the choices
     refused(
-        &scene("seed", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n"),
+        &scene("hemi_oct", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n"),
         "s.toml:5:10:",
-        &["nearest_mip", "texture unit", "gloss"],
+        &["nearest_mip", "texture unit", "hemi_oct", "a gloss"],
     );
     refused(
         &scene("seed", "filter = \"nearest_mip\"\nfetch = \"host\"\n", "vertex", "gloss = 0\n"),
         "s.toml:5:10:",
         &["only the texture unit has MIP levels"],
     );
+    assert_eq!(
+        kind(scene("hemi_oct", "fetch = \"unit\"\n", "vertex", "gloss = 0\n")),
+        "cart_tex_bilinear_hemi_oct_matte"
+    );
     refused(
-        &scene("hemi_oct", "fetch = \"unit\"\n", "vertex", "gloss = 0\n"),
+        &scene("hemi_oct", "fetch = \"unit\"\n", "surface", "gloss = 3\n"),
         "s.toml:5:9:",
-        &["fetch = \"unit\"", "hemi_oct", "gloss = 0"],
+        &["fetch = \"unit\"", "hemi_oct", "per = \"surface\"", "a gloss"],
     );
     refused(
         "size = 64\n[bump]\nsource = \"procedural\"\ntexels = 256\nfetch = \"unit\"\n[material]\ngloss = 0\n",
@@ -159,7 +174,10 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     assert_eq!(kind(scene("hemi_oct", "", "vertex", "")), "cart_tex_bilinear_hemi_oct", "the default gloss is 96");
     let host = "fetch = \"host\"\n";
     assert_eq!(kind(scene("hemi_oct", host, "vertex", "")), cart(Decode::HemiOct, true));
-    assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), cart(Decode::HemiOct, false));
+    assert_eq!(kind(scene("hemi_oct", host, "vertex", "gloss = 0\n")), cart(Decode::HemiOct, false));
+    // hemi-oct matte, per vertex, goes to the unit now it has the pipeline; per surface with gloss still to the host
+    assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), "cart_tex_bilinear_hemi_oct_matte");
+    assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 3\n")), v(Decode::HemiOct, false, true));
     // one light per surface: on the texture unit where it serves the material, the host's on asking
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), "cart_tex_bilinear_surface_matte");
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), "cart_tex_bilinear_surface");
@@ -172,11 +190,9 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     let nearest_host = format!("{nearest}{host}");
     assert_eq!(kind(scene("hemi_oct", &nearest_host, "surface", "gloss = 0\n")), v(Decode::HemiOct, true, false));
     assert_eq!(kind(scene("seed", "filter = \"bilinear\"\n", "surface", "gloss = 5\n")), "cart_tex_bilinear_surface");
-    refused(
-        &scene("seed", "filter = \"nearest\"\n", "vertex", ""),
-        "s.toml:5:10:",
-        &["one light", "per = \"surface\""],
-    );
+    // lights per vertex: the nearest texel on the texture unit; the host-fed nearest-texel pipelines have one light
+    assert_eq!(kind(scene("seed", "filter = \"nearest\"\n", "vertex", "")), "cart_tex_nearest");
+    refused(&scene("seed", &nearest_host, "vertex", ""), "s.toml:5:10:", &["one light", "per = \"surface\""]);
     refused(
         &scene("polar", "filter = \"nearest\"\n", "surface", ""),
         "s.toml:5:10:",

@@ -3,17 +3,19 @@
 //! loaded first); random streams through rust-hdl, and through Verilator after the hard cases have loaded the chain
 //! they read.
 use rtl::cart_tex::{
-    CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearMatte, CartTexBilinearSurface,
-    CartTexBilinearSurfaceColour, CartTexBilinearSurfaceMatte, CartTexNearestMatte, CartTexNearestMipMatte,
-    CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte, CartTexTrilinear, CartTexTrilinearHemiOct,
-    CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearTwoPassMatte,
+    CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearHemiOctMatte, CartTexBilinearMatte,
+    CartTexBilinearSurface, CartTexBilinearSurfaceColour, CartTexBilinearSurfaceMatte, CartTexNearest,
+    CartTexNearestMatte, CartTexNearestMip, CartTexNearestMipMatte, CartTexNearestSurfaceHemiOctMatte,
+    CartTexNearestSurfaceMatte, CartTexTrilinear, CartTexTrilinearHemiOct, CartTexTrilinearHemiOctMatte,
+    CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearSurfaceMatte, CartTexTrilinearTwoPassMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::cart_tex::{
-    bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_matte, bilinear_surface, bilinear_surface_colour,
-    bilinear_surface_matte, nearest_matte, nearest_mip_matte, nearest_surface_hemi_oct_matte, nearest_surface_matte,
-    trilinear, trilinear_hemi_oct, trilinear_matte, trilinear_surface, trilinear_two_pass_matte,
+    bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_hemi_oct_matte, bilinear_matte, bilinear_surface,
+    bilinear_surface_colour, bilinear_surface_matte, nearest, nearest_matte, nearest_mip, nearest_mip_matte,
+    nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear, trilinear_hemi_oct, trilinear_hemi_oct_matte,
+    trilinear_matte, trilinear_surface, trilinear_surface_matte, trilinear_two_pass_matte,
 };
 use vectors::UnitModel;
 
@@ -32,6 +34,11 @@ unit_tests!(cart_tex_bilinear_surface_matte, CartTexBilinearSurfaceMatte, biline
 unit_tests!(cart_tex_nearest_surface_matte, CartTexNearestSurfaceMatte, nearest_surface_matte::MODEL);
 unit_tests!(cart_tex_bilinear_colour, CartTexBilinearColour, bilinear_colour::MODEL);
 unit_tests!(cart_tex_bilinear_surface_colour, CartTexBilinearSurfaceColour, bilinear_surface_colour::MODEL);
+unit_tests!(cart_tex_nearest, CartTexNearest, nearest::MODEL);
+unit_tests!(cart_tex_nearest_mip, CartTexNearestMip, nearest_mip::MODEL);
+unit_tests!(cart_tex_bilinear_hemi_oct_matte, CartTexBilinearHemiOctMatte, bilinear_hemi_oct_matte::MODEL);
+unit_tests!(cart_tex_trilinear_hemi_oct_matte, CartTexTrilinearHemiOctMatte, trilinear_hemi_oct_matte::MODEL);
+unit_tests!(cart_tex_trilinear_surface_matte, CartTexTrilinearSurfaceMatte, trilinear_surface_matte::MODEL);
 unit_tests!(
     cart_tex_nearest_surface_hemi_oct_matte,
     CartTexNearestSurfaceHemiOctMatte,
@@ -171,4 +178,29 @@ fn the_two_pass_trilinear_reads_nothing_of_the_clock_between_two_vectors_and_nee
     let got = Runner::<U>::new().run(back_to_back.iter().cloned());
     let r = testbench::check(m, <U as StreamUnit>::LATENCY, &inputs, &back_to_back, &got);
     assert!(r.mismatches > 0, "back to back the second passes would be lost: {r:?}");
+}
+
+#[test]
+fn cart_tex_nearest_streams() {
+    three_streams::<CartTexNearest>(&nearest::MODEL, 40);
+}
+
+#[test]
+fn cart_tex_nearest_mip_streams() {
+    three_streams::<CartTexNearestMip>(&nearest_mip::MODEL, 41);
+}
+
+#[test]
+fn cart_tex_bilinear_hemi_oct_matte_streams() {
+    three_streams::<CartTexBilinearHemiOctMatte>(&bilinear_hemi_oct_matte::MODEL, 42);
+}
+
+#[test]
+fn cart_tex_trilinear_hemi_oct_matte_streams() {
+    three_streams::<CartTexTrilinearHemiOctMatte>(&trilinear_hemi_oct_matte::MODEL, 43);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_matte_streams() {
+    three_streams::<CartTexTrilinearSurfaceMatte>(&trilinear_surface_matte::MODEL, 44);
 }

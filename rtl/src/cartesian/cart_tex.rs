@@ -156,6 +156,59 @@ cartesian_pipeline! {
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }
 
+// the gloss unit behind the nearest texel and the nearest texel of the nearest MIP level (lights per vertex)
+cartesian_pipeline! {
+    module: nearest,
+    block: CartTexNearest,
+    unit: "cart_tex_nearest",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearest, module: nearest, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_mip,
+    block: CartTexNearestMip,
+    unit: "cart_tex_nearest_mip",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+// matte hemi-oct texels, lights per vertex: bilinear and trilinear
+cartesian_pipeline! {
+    module: bilinear_hemi_oct_matte,
+    block: CartTexBilinearHemiOctMatte,
+    unit: "cart_tex_bilinear_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinear, module: bilinear, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    module: trilinear_hemi_oct_matte,
+    block: CartTexTrilinearHemiOctMatte,
+    unit: "cart_tex_trilinear_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+// matte, one light per surface, trilinear: the light word waits AT_DOT = 57 clocks, as with gloss
+cartesian_pipeline! {
+    module: trilinear_surface_matte,
+    block: CartTexTrilinearSurfaceMatte,
+    unit: "cart_tex_trilinear_surface_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
 // the blend's destination colour from a colour map in the front's second memory (RGB565), filtered on the bump
 // texel's footprint and blend factors; the mode and lit colour wait for it beside the front (22 clocks)
 cartesian_pipeline! {

@@ -462,8 +462,47 @@ textured!(
     l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
 ]);
 
+textured!(nearest, "cart_tex_nearest", Filter::Nearest, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(nearest_mip, "cart_tex_nearest_mip", Filter::NearestMip, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    bilinear_hemi_oct_matte, "cart_tex_bilinear_hemi_oct_matte", Filter::Bilinear,
+    crate::cart_pipeline::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    trilinear_hemi_oct_matte, "cart_tex_trilinear_hemi_oct_matte", Filter::Trilinear,
+    crate::cart_pipeline::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
+textured!(
+    trilinear_surface_matte, "cart_tex_trilinear_surface_matte", Filter::Trilinear, crate::cart_surface::MODEL_MATTE,
+    inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1,
+    src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 16] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 21] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
@@ -483,6 +522,11 @@ pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 16] {
             nearest_surface_hemi_oct_matte::FILTER,
             nearest_surface_hemi_oct_matte::host(),
         ),
+        (&nearest::MODEL, nearest::FILTER, nearest::host()),
+        (&nearest_mip::MODEL, nearest_mip::FILTER, nearest_mip::host()),
+        (&bilinear_hemi_oct_matte::MODEL, bilinear_hemi_oct_matte::FILTER, bilinear_hemi_oct_matte::host()),
+        (&trilinear_hemi_oct_matte::MODEL, trilinear_hemi_oct_matte::FILTER, trilinear_hemi_oct_matte::host()),
+        (&trilinear_surface_matte::MODEL, trilinear_surface_matte::FILTER, trilinear_surface_matte::host()),
         (&bilinear_colour::MODEL, bilinear_colour::FILTER, bilinear_colour::host()),
         (&bilinear_surface_colour::MODEL, bilinear_surface_colour::FILTER, bilinear_surface_colour::host()),
     ]
