@@ -594,6 +594,22 @@ pub static PIPELINES: &[Row] = &[
         &["tex_addr", "tex_fetch", "bilinear", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
     ),
     tex_colour(
+        "cart_tex_nearest_colour",
+        "Cartesian, texture unit, nearest, colour map",
+        "cart_pipeline",
+        cartesian(S, Per::Vertex, true, Filter::Bilinear),
+        Filter::Nearest,
+        &["tex_addr", "tex_fetch", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
+    ),
+    tex_colour(
+        "cart_tex_nearest_mip_colour",
+        "Cartesian, texture unit, nearest MIP level, colour map",
+        "cart_pipeline",
+        cartesian(S, Per::Vertex, true, Filter::Bilinear),
+        Filter::NearestMip,
+        &["lod", "tex_addr", "tex_fetch", "cart_decode", "normalise", "light_iter", "dot3", "gloss", "blend"],
+    ),
+    tex_colour(
         "cart_tex_bilinear_surface_colour",
         "Cartesian, one light, texture unit, bilinear, colour map",
         "cart_surface",

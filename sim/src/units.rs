@@ -90,6 +90,13 @@ const NEAREST: &[(&str, &str)] = &[
     ("fetch$t01", "as fetch$t10"),
     ("fetch$t11", "as fetch$t10"),
 ];
+/// A colour map beside a nearest-texel front: the colour texel is the footprint's first, as the bump texel is.
+const NEAREST_COLOUR: &[(&str, &str)] = &[
+    ("colour_fetch$t10", "as fetch$t10"),
+    ("colour_fetch$t01", "as fetch$t10"),
+    ("colour_fetch$t11", "as fetch$t10"),
+    ("colour_fetch$valid_out", "the two fetches run in step: the valid chain follows the bump map's"),
+];
 /// The LOD unit under a nearest-MIP front.
 const NEAREST_MIP: &[(&str, &str)] = &[
     (
@@ -238,6 +245,10 @@ pub static UNITS: &[Unit] = &[
     unit!(map: &vectors::cart_tex::trilinear_surface_matte::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceMatte).sharing(&[TRILINEAR]),
     unit!(map: &vectors::cart_tex::bilinear_colour::MODEL, rtl::cart_tex::CartTexBilinearColour).sharing(&[PER_VERTEX, BILINEAR, COLOUR]),
     unit!(map: &vectors::cart_tex::bilinear_surface_colour::MODEL, rtl::cart_tex::CartTexBilinearSurfaceColour).sharing(&[BILINEAR, COLOUR]),
+    unit!(map: &vectors::cart_tex::nearest_colour::MODEL, rtl::cart_tex::CartTexNearestColour)
+        .sharing(&[PER_VERTEX, NEAREST, NEAREST_COLOUR]),
+    unit!(map: &vectors::cart_tex::nearest_mip_colour::MODEL, rtl::cart_tex::CartTexNearestMipColour)
+        .sharing(&[PER_VERTEX, NEAREST, NEAREST_MIP, NEAREST_COLOUR]),
     unit!(map: &vectors::cart_tex::nearest_surface_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceMatte).sharing(&[NEAREST]),
     unit!(map: &vectors::cart_tex::nearest_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceHemiOctMatte).sharing(&[NEAREST]),
 ];

@@ -28,7 +28,12 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
 ];
 
 /// The pipelines with a colour map, likewise: `cart_tex_<filter>[_surface]_colour`.
-const WITH_COLOUR: &[(&str, bool, &str, bool)] = &[("seed", false, "bilinear", true), ("seed", true, "bilinear", true)];
+const WITH_COLOUR: &[(&str, bool, &str, bool)] = &[
+    ("seed", false, "bilinear", true),
+    ("seed", true, "bilinear", true),
+    ("seed", false, "nearest", true),
+    ("seed", false, "nearest_mip", true),
+];
 
 /// The pipeline a scene's choices name, by the project's naming of its rtl tops; None where the reader refuses.
 fn expected(

@@ -68,6 +68,8 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         ("torus_nearest_mip_gloss.toml", "cart_tex_nearest_mip"),
         ("torus_trilinear_hemi_oct_matte.toml", "cart_tex_trilinear_hemi_oct_matte"),
         ("torus_trilinear_surface_matte.toml", "cart_tex_trilinear_surface_matte"),
+        ("torus_colour_nearest.toml", "cart_tex_nearest_colour"),
+        ("torus_colour_nearest_mip.toml", "cart_tex_nearest_mip_colour"),
     ] {
         assert_eq!(kind(f), want, "{f}");
     }
@@ -652,6 +654,11 @@ fn a_colour_map_picks_the_colour_pipeline_and_bad_ones_are_one_line_at_the_field
         &["no pipeline on the texture unit with a colour map"],
     );
     refused(&with_colour(&rgb, "fetch = \"host\"\n", ""), at, &["host-fed"]);
+    // the nearest texel and the nearest MIP level's, with gloss and lights per vertex, have a colour path
+    for (filter, want) in [("nearest", "cart_tex_nearest_colour"), ("nearest_mip", "cart_tex_nearest_mip_colour")] {
+        let s = parse(&with_colour(&rgb, &format!("filter = \"{filter}\"\n"), "")).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(s.pipeline.name, want);
+    }
     // a bump map the memory does not hold (256 texels)
     let big = "size = 32\n[bump]\nsource = \"procedural\"\ntexels = 256\n[material]\ncolour_map = \"X\"\n";
     refused(&big.replace('X', &rgb.display().to_string()), "s.toml:6:14:", &["side 1, 2, 4 … 128", "256"]);

@@ -5,17 +5,19 @@
 use rtl::cart_tex::{
     CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearHemiOctMatte, CartTexBilinearMatte,
     CartTexBilinearSurface, CartTexBilinearSurfaceColour, CartTexBilinearSurfaceMatte, CartTexNearest,
-    CartTexNearestMatte, CartTexNearestMip, CartTexNearestMipMatte, CartTexNearestSurfaceHemiOctMatte,
-    CartTexNearestSurfaceMatte, CartTexTrilinear, CartTexTrilinearHemiOct, CartTexTrilinearHemiOctMatte,
-    CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearSurfaceMatte, CartTexTrilinearTwoPassMatte,
+    CartTexNearestColour, CartTexNearestMatte, CartTexNearestMip, CartTexNearestMipColour, CartTexNearestMipMatte,
+    CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte, CartTexTrilinear, CartTexTrilinearHemiOct,
+    CartTexTrilinearHemiOctMatte, CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearSurfaceMatte,
+    CartTexTrilinearTwoPassMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::cart_tex::{
     bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_hemi_oct_matte, bilinear_matte, bilinear_surface,
-    bilinear_surface_colour, bilinear_surface_matte, nearest, nearest_matte, nearest_mip, nearest_mip_matte,
-    nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear, trilinear_hemi_oct, trilinear_hemi_oct_matte,
-    trilinear_matte, trilinear_surface, trilinear_surface_matte, trilinear_two_pass_matte,
+    bilinear_surface_colour, bilinear_surface_matte, nearest, nearest_colour, nearest_matte, nearest_mip,
+    nearest_mip_colour, nearest_mip_matte, nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear,
+    trilinear_hemi_oct, trilinear_hemi_oct_matte, trilinear_matte, trilinear_surface, trilinear_surface_matte,
+    trilinear_two_pass_matte,
 };
 use vectors::UnitModel;
 
@@ -34,6 +36,8 @@ unit_tests!(cart_tex_bilinear_surface_matte, CartTexBilinearSurfaceMatte, biline
 unit_tests!(cart_tex_nearest_surface_matte, CartTexNearestSurfaceMatte, nearest_surface_matte::MODEL);
 unit_tests!(cart_tex_bilinear_colour, CartTexBilinearColour, bilinear_colour::MODEL);
 unit_tests!(cart_tex_bilinear_surface_colour, CartTexBilinearSurfaceColour, bilinear_surface_colour::MODEL);
+unit_tests!(cart_tex_nearest_colour, CartTexNearestColour, nearest_colour::MODEL);
+unit_tests!(cart_tex_nearest_mip_colour, CartTexNearestMipColour, nearest_mip_colour::MODEL);
 unit_tests!(cart_tex_nearest, CartTexNearest, nearest::MODEL);
 unit_tests!(cart_tex_nearest_mip, CartTexNearestMip, nearest_mip::MODEL);
 unit_tests!(cart_tex_bilinear_hemi_oct_matte, CartTexBilinearHemiOctMatte, bilinear_hemi_oct_matte::MODEL);
@@ -203,4 +207,14 @@ fn cart_tex_trilinear_hemi_oct_matte_streams() {
 #[test]
 fn cart_tex_trilinear_surface_matte_streams() {
     three_streams::<CartTexTrilinearSurfaceMatte>(&trilinear_surface_matte::MODEL, 44);
+}
+
+#[test]
+fn cart_tex_nearest_colour_streams() {
+    three_streams::<CartTexNearestColour>(&nearest_colour::MODEL, 45);
+}
+
+#[test]
+fn cart_tex_nearest_mip_colour_streams() {
+    three_streams::<CartTexNearestMipColour>(&nearest_mip_colour::MODEL, 46);
 }

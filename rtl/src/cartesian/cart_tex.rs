@@ -232,3 +232,28 @@ cartesian_pipeline! {
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
     gloss: { unit: gloss, c: conc, delay: conc_dly },
 }
+
+// the colour map beside the nearest texel, of level 0 or of the nearest MIP level: the colour texel is the one the
+// bump texel is, widened to bytes and not filtered
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_colour,
+    block: CartTexNearestColour,
+    unit: "cart_tex_nearest_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_colour,
+    block: CartTexNearestMipColour,
+    unit: "cart_tex_nearest_mip_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}

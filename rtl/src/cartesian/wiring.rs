@@ -49,7 +49,10 @@ use super::*; // the decode the invocation names
 #[allow(unused_imports)] // each variant holds some of these
 use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightIter, normalise::Normalise};
 #[allow(unused_imports)]
-use crate::texture::front::{TexBilinear, TexBilinearColour, TexNearest, TexNearestMip, TexTrilinear, TexTrilinearTwoPass};
+use crate::texture::front::{
+    TexBilinear, TexBilinearColour, TexNearest, TexNearestColour, TexNearestMip, TexNearestMipColour, TexTrilinear,
+    TexTrilinearTwoPass,
+};
 #[allow(unused_imports)]
 use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq11_8, Sq3_8, Sq7_2, Sq8_8, Sq9_0, U16, U8}, ram_delay::RamDelay}};
 

@@ -14,7 +14,9 @@
 //!   and three more bilinear units (R, G, B) on the same blend factors; the port `wcolour` beside the write port
 //!   picks the memory a write goes to, its delay line keeping it beside the write; outputs `c_r`, `c_g`, `c_b`,
 //!   in step with `lo` and `hi` (`vectors::front`). A write leaves as zeros on every output, as on a front without
-//!   one: the fetch a write does not go to reads as for a read, so its path's outputs are cleared at the end.
+//!   one: the fetch a write does not go to reads as for a read, so its path's outputs are cleared at the end;
+//! - `colour_texel:` (with `unfiltered:`) the same colour map beside the nearest texel: the colour texel read at the
+//!   bump texel's place and widened, not filtered; the same port, outputs and writes.
 //!
 //! Ports (every front): the position u, v (Sq11.8, texels of level 0), the map's side log2 and the two wrap modes
 //! (per frame), and the memory's write port (we, w_log2, wx, wy, wdata: `tex_fetch`'s). Outputs: `lo` and `hi`, the
@@ -64,6 +66,7 @@ macro_rules! texture_front {
         $(, filter: { units: $fl:ident, blend: $bd:ident, valid: $flv:ident })?
         $(, colour: { fetch: $cf:ident, widen: $cx:ident, units: $cu:ident, select: $cs:ident, blend: $cbd:ident })?
         $(, unfiltered: { texel: $tx:ident })?
+        $(, colour_texel: { fetch: $nf:ident, widen: $nx:ident, select: $ns:ident })?
         $(,)?
     ) => {
 pub mod $m {
@@ -112,6 +115,17 @@ crate::block! {
         $cs: Delay<Bits<1>, AT_FETCH>, // wcolour, beside the write
         // (a write to the colour map, a write to the bump map) from the fetch to the front's output
         written: Delay<Bits<2>, { crate::tex_fetch::LATENCY + crate::bilinear::LATENCY }>,
+        wrote_colour: Signal<Local, Bits<1>>,
+        wrote_bump: Signal<Local, Bits<1>>,
+        pub c_r: Signal<Out, U8>,
+        pub c_g: Signal<Out, U8>,
+        pub c_b: Signal<Out, U8>,)?
+        $(pub wcolour: Signal<In, Bits<1>>,
+        pub $nf: TexFetch, // the colour map's memory
+        $nx: Rgb565, // the nearest texel widened
+        $ns: Delay<Bits<1>, AT_FETCH>, // wcolour, beside the write
+        // (a write to the colour map, a write to the bump map) from the fetch to the front's output
+        written: Delay<Bits<2>, { crate::tex_fetch::LATENCY }>,
         wrote_colour: Signal<Local, Bits<1>>,
         wrote_bump: Signal<Local, Bits<1>>,
         pub c_r: Signal<Out, U8>,
@@ -269,6 +283,41 @@ impl Logic for $t {
         $(self.valid_out.next = self.fetch.valid_out.val();
         self.lo.next = self.fetch.$tx.val().get_bits::<8>(0);
         self.hi.next = self.fetch.$tx.val().get_bits::<8>(8);)?
+        // the colour map beside the nearest texel: its own memory read at the same texel (the footprint's first, t00),
+        // the write it takes picked by wcolour (the bump map's fetch takes the others), widened to three bytes
+        $(self.$nf.clock.next = self.clock.val();
+        self.$ns.clock.next = self.clock.val();
+        self.$ns.d.next = self.wcolour.val();
+        self.$nf.valid_in.next = self.addr.valid_out.val();
+        self.$nf.level_log2.next = self.addr.level_log2.val();
+        self.$nf.x0.next = self.addr.x0.val();
+        self.$nf.x1.next = self.addr.x1.val();
+        self.$nf.y0.next = self.addr.y0.val();
+        self.$nf.y1.next = self.addr.y1.val();
+        self.$nf.we.next = self.write_dly.q.val().get_bits::<1>(0) & self.$ns.q.val();
+        self.fetch.we.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$ns.q.val();
+        self.$nf.w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
+        self.$nf.wx.next = self.write_dly.q.val().get_bits::<8>(5);
+        self.$nf.wy.next = self.write_dly.q.val().get_bits::<8>(13);
+        self.$nf.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
+        self.$nx.t.next = self.$nf.t00.val();
+        self.c_r.next = self.$nx.c.val().get_bits::<8>(0); // bit copies: R, G, B of the widened texel
+        self.c_g.next = self.$nx.c.val().get_bits::<8>(8); // likewise
+        self.c_b.next = self.$nx.c.val().get_bits::<8>(16); // likewise
+        // a write leaves as zeros: the path it did not write read a texel, so clear it (the one it wrote gave zeros)
+        self.written.clock.next = self.clock.val();
+        self.wrote_colour.next = self.write_dly.q.val().get_bits::<1>(0) & self.$ns.q.val();
+        self.wrote_bump.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$ns.q.val();
+        self.written.d.next = bit_cast::<2, 1>(self.wrote_colour.val()) | (bit_cast::<2, 1>(self.wrote_bump.val()) << 1);
+        if self.written.q.val().get_bit(0) {
+            self.lo.next = 0.into();
+            self.hi.next = 0.into();
+        }
+        if self.written.q.val().get_bit(1) {
+            self.c_r.next = 0.into();
+            self.c_g.next = 0.into();
+            self.c_b.next = 0.into();
+        })?
     }
 }
 }
@@ -292,6 +341,26 @@ texture_front! {
     write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
     level: 0,
     filter: { units: filter, blend: blend_dly, valid: filter_valid },
+}
+
+texture_front! {
+    module: nearest_colour,
+    block: TexNearestColour,
+    linear: 0,
+    write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
+    level: 0,
+    unfiltered: { texel: t00 },
+    colour_texel: { fetch: colour_fetch, widen: colour_widen, select: wcolour_dly },
+}
+
+texture_front! {
+    module: nearest_mip_colour,
+    block: TexNearestMipColour,
+    linear: 0,
+    write_delay: RamDelay<37, 5, { crate::lod::LATENCY + crate::tex_addr::LATENCY }>,
+    lod: { unit: lod, pick: nearest, position: pos_dly },
+    unfiltered: { texel: t00 },
+    colour_texel: { fetch: colour_fetch, widen: colour_widen, select: wcolour_dly },
 }
 
 texture_front! {

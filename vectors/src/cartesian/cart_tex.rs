@@ -501,8 +501,23 @@ textured!(
     src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
+textured!(nearest_colour, "cart_tex_nearest_colour", Filter::Nearest, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(nearest_mip_colour, "cart_tex_nearest_mip_colour", Filter::NearestMip, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 21] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 23] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
@@ -529,6 +544,8 @@ pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 21] {
         (&trilinear_surface_matte::MODEL, trilinear_surface_matte::FILTER, trilinear_surface_matte::host()),
         (&bilinear_colour::MODEL, bilinear_colour::FILTER, bilinear_colour::host()),
         (&bilinear_surface_colour::MODEL, bilinear_surface_colour::FILTER, bilinear_surface_colour::host()),
+        (&nearest_colour::MODEL, nearest_colour::FILTER, nearest_colour::host()),
+        (&nearest_mip_colour::MODEL, nearest_mip_colour::FILTER, nearest_mip_colour::host()),
     ]
 }
 
