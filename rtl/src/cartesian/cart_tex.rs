@@ -59,7 +59,7 @@ cartesian_pipeline! {
 }
 
 // trilinear with the gloss unit: lights per vertex, seed or hemi-oct texels; one light per surface (the light word
-// waits AT_DOT = 57 clocks: front 42 + decode 4 + normalise 11, 2^6 words)
+// waits AT_DOT = 58 clocks: front 43 + decode 4 + normalise 11, 2^6 words)
 cartesian_pipeline! {
     module: trilinear,
     block: CartTexTrilinear,
@@ -198,7 +198,7 @@ cartesian_pipeline! {
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
 }
 
-// matte, one light per surface, trilinear: the light word waits AT_DOT = 57 clocks, as with gloss
+// matte, one light per surface, trilinear: the light word waits AT_DOT = 58 clocks, as with gloss
 cartesian_pipeline! {
     module: trilinear_surface_matte,
     block: CartTexTrilinearSurfaceMatte,

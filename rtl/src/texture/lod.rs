@@ -2,9 +2,9 @@
 //! derivatives of u and v (Sq8.8, texels of level 0 a pixel), the map's side 2^n and the bias (Sq3.8, levels), the
 //! level ⌊λ⌋, frac(λ) in 8 bits and the nearest level ⌊λ + ½⌋, λ = log2 ρ + bias clamped to [0, n]; see
 //! `vectors::lod` for the exact recipe. ρ² comes from four squarers, log2 from the leading one of ρ² and a 256-entry
-//! table of its next 8 bits. Latency 12: magnitudes; their saturation to U16; the squarers' operand register; the
+//! table of its next 8 bits. Latency 13: magnitudes; their saturation to U16; the squarers' operand register; the
 //! squares; the two sums; their comparison; the larger; the leading one; the normalising shift; the table (its read
-//! register) beside the exponent plus the bias; λ; the clamps. (With the comparison and the
+//! register) beside the exponent plus the bias; the table's output register; λ; the clamps. (With the comparison and the
 //! choice in one stage on 33-bit sums, the UP5K placed the unit at 41.5 MHz, that path the critical one; with the
 //! negation and the saturation in one stage, 44.6 MHz.)
 
@@ -14,7 +14,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 12;
+pub const LATENCY: usize = 13;
 
 /// The table: entry f = round(log2(1 + (f + ½)/256)·2^9), the log of the midpoint of the mantissa's bin. The
 /// model's `vectors::lod::table_entry` is the same formula written apart; a test compares the two entry by entry.
@@ -94,6 +94,11 @@ crate::stream_block! {
         s7_t: DFF<Uq0_9>,
         s7_eb: DFF<Sq5_10>,
         s7_big: DFF<Bit>,
+        // the table word registered again (the block RAM's output register on the ECP5: its read alone is 5.6 ns
+        // clock-to-out, the critical path of every MIP front without it), the others beside it
+        s7r_t: DFF<Uq0_9>,
+        s7r_eb: DFF<Sq5_10>,
+        s7r_big: DFF<Bit>,
         // stage 8: λ·2^10 = (e << 9) + T + (bias << 2) (Sq5.10)
         s8_l: DFF<Sq5_10>,
         s8_big: DFF<Bit>,
@@ -101,7 +106,7 @@ crate::stream_block! {
         s9_level: DFF<Bits<4>>,
         s9_frac: DFF<U8>,
         s9_near: DFF<Bits<4>>,
-        n_dly: Delay<Bits<4>, 11>, // log_side beside the stages up to λ
+        n_dly: Delay<Bits<4>, 12>, // log_side beside the stages up to λ
         b_dly: Delay<Sq3_8, 9>, // the bias beside the stages up to the table's address
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
         w_mag: [Signal<Local, Bits<17>>; 4],
@@ -125,7 +130,7 @@ impl Logic for Lod {
     fn update(&mut self) {
         dff_setup!(
             self, clock, s3_lx, s3_ly, s4_gt, s4_lx, s4_ly, s4b_m, s5_sh, s5_e, s5_m, s5_big, s6_addr, s6_e, s6_big,
-            s7_t, s7_eb, s7_big, s8_l, s8_big, s9_level, s9_frac, s9_near
+            s7_t, s7_eb, s7_big, s7r_t, s7r_eb, s7r_big, s8_l, s8_big, s9_level, s9_frac, s9_near
         );
         clock!(self, clock, n_dly, b_dly, valid);
         self.valid.d.next = self.valid_in.val();
@@ -286,10 +291,14 @@ impl Logic for Lod {
         self.w_bs.next = self.w_b16.val() << 2; // bias·4, −8,192 ..= 8,188: S16, exact
         self.s7_eb.d.next = self.w_es.val() + self.w_bs.val(); // −12,288 ..= 16,380: S16, exact (modulo 2^16)
         self.s7_big.d.next = self.s6_big.q.val();
+        // the table's output register, nothing between it and the read
+        self.s7r_t.d.next = self.s7_t.q.val();
+        self.s7r_eb.d.next = self.s7_eb.q.val();
+        self.s7r_big.d.next = self.s7_big.q.val();
         // stage 8: λ·2^10 = (e << 9) + (bias << 2) + T, −12,288 ..= 16,891: S16, exact (modulo 2^16)
-        self.w_t16.next = bit_cast::<16, 9>(self.s7_t.q.val()); // U9 widened to S16, exact
-        self.s8_l.d.next = self.s7_eb.q.val() + self.w_t16.val(); // Sq5.10, exact (see above)
-        self.s8_big.d.next = self.s7_big.q.val();
+        self.w_t16.next = bit_cast::<16, 9>(self.s7r_t.q.val()); // U9 widened to S16, exact
+        self.s8_l.d.next = self.s7r_eb.q.val() + self.w_t16.val(); // Sq5.10, exact (see above)
+        self.s8_big.d.next = self.s7r_big.q.val();
         // stage 9: λ < 0 (its sign, bit 15) or m = 0 reads level 0; else ⌊λ⌋ (bits 14..10, ≤ 16), frac(λ) to 8 bits
         // (bits 9..2, truncated), ⌊λ + ½⌋ (rounded half up: ≤ 17,403, no wrap), each clamped to the last level n
         self.w_n5.next = bit_cast::<5, 4>(self.n_dly.q.val()); // U4 widened to U5, exact
