@@ -489,15 +489,19 @@ fn field<const N: usize>(w: Bits<N>, at: usize, width: usize) -> u64 {
 
 /// `values` of `ports` packed into a word, the first in the low bits.
 fn pack<'a, const N: usize>(ports: impl Iterator<Item = &'a (&'a str, usize)>, values: &[u64]) -> Bits<N> {
-    let mut w = Bits::<N>::default();
+    // gathered in 64-bit words, then made Bits a word at a time: a wide Bits is an array of bits, and setting them
+    // one by one copies the array for each
+    let mut words = vec![0u64; N.div_ceil(64)];
     let mut at = 0;
-    for (&(_, width), v) in ports.zip(values) {
-        for b in 0..width.min(64) {
-            w = w.replace_bit(at + b, (v >> b) & 1 == 1);
+    for (&(_, width), &v) in ports.zip(values) {
+        let v = if width < 64 { v & ((1 << width) - 1) } else { v };
+        words[at / 64] |= v << (at % 64);
+        if at % 64 + width.min(64) > 64 {
+            words[at / 64 + 1] |= v >> (64 - at % 64);
         }
         at += width;
     }
-    w
+    words.iter().enumerate().fold(Bits::<N>::default(), |w, (k, &x)| w | Bits::<N>::from(x) << (64 * k) as u64)
 }
 
 /// The values of `ports` unpacked from `word`, the first from the low bits.

@@ -100,3 +100,34 @@ pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
 pub use shared::{bilinear, blend, delayed_blend, div255, dot3, gloss, normalise};
 pub use stream::StreamUnit;
 pub use texture::{lod, tex_addr, tex_fetch};
+
+/// rust-hdl-core is vendored with its short values' shifts computed in `u64` (vendor/rust-hdl-core/BUMPRTL.md): they
+/// must stay the published definition, the value shifted and then masked to its width.
+#[cfg(test)]
+mod vendored {
+    use rust_hdl::prelude::*;
+
+    fn check<const N: usize>() {
+        let mask = (1u128 << N) - 1;
+        let mut x: u128 = 0x9e37_79b9_7f4a_7c15;
+        for _ in 0..64 {
+            x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            for v in [(x >> 64) & mask, mask, 1, 0] {
+                let b = Bits::<N>::from(v as u64);
+                for k in 0..=70u64 {
+                    let (right, left) = if k >= 128 { (0, 0) } else { (v >> k, (v << k) & mask) };
+                    assert_eq!((b >> k).to_u64() as u128, right, "Bits<{N}> {v:#x} >> {k}");
+                    assert_eq!((b << k).to_u64() as u128, left, "Bits<{N}> {v:#x} << {k}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn short_shifts_are_the_published_definition() {
+        macro_rules! at {
+            ($($n:literal)*) => { $(check::<$n>();)* };
+        }
+        at!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32);
+    }
+}
