@@ -251,6 +251,20 @@ pub static UNITS: &[Unit] = &[
         .sharing(&[PER_VERTEX, NEAREST, NEAREST_MIP, NEAREST_COLOUR]),
     unit!(map: &vectors::cart_tex::nearest_surface_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceMatte).sharing(&[NEAREST]),
     unit!(map: &vectors::cart_tex::nearest_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexNearestSurfaceHemiOctMatte).sharing(&[NEAREST]),
+    unit!(map: &vectors::cart_tex::nearest_hemi_oct::MODEL, rtl::cart_tex::CartTexNearestHemiOct).sharing(&[PER_VERTEX, NEAREST]),
+    unit!(map: &vectors::cart_tex::nearest_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexNearestHemiOctMatte).sharing(&[PER_VERTEX, NEAREST]),
+    unit!(map: &vectors::cart_tex::nearest_surface::MODEL, rtl::cart_tex::CartTexNearestSurface).sharing(&[NEAREST]),
+    unit!(map: &vectors::cart_tex::nearest_surface_hemi_oct::MODEL, rtl::cart_tex::CartTexNearestSurfaceHemiOct).sharing(&[NEAREST]),
+    unit!(map: &vectors::cart_tex::nearest_mip_hemi_oct::MODEL, rtl::cart_tex::CartTexNearestMipHemiOct).sharing(&[PER_VERTEX, NEAREST, NEAREST_MIP]),
+    unit!(map: &vectors::cart_tex::nearest_mip_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexNearestMipHemiOctMatte).sharing(&[PER_VERTEX, NEAREST, NEAREST_MIP]),
+    unit!(map: &vectors::cart_tex::nearest_mip_surface::MODEL, rtl::cart_tex::CartTexNearestMipSurface).sharing(&[NEAREST, NEAREST_MIP]),
+    unit!(map: &vectors::cart_tex::nearest_mip_surface_matte::MODEL, rtl::cart_tex::CartTexNearestMipSurfaceMatte).sharing(&[NEAREST, NEAREST_MIP]),
+    unit!(map: &vectors::cart_tex::nearest_mip_surface_hemi_oct::MODEL, rtl::cart_tex::CartTexNearestMipSurfaceHemiOct).sharing(&[NEAREST, NEAREST_MIP]),
+    unit!(map: &vectors::cart_tex::nearest_mip_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexNearestMipSurfaceHemiOctMatte).sharing(&[NEAREST, NEAREST_MIP]),
+    unit!(map: &vectors::cart_tex::bilinear_surface_hemi_oct::MODEL, rtl::cart_tex::CartTexBilinearSurfaceHemiOct).sharing(&[BILINEAR]),
+    unit!(map: &vectors::cart_tex::bilinear_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexBilinearSurfaceHemiOctMatte).sharing(&[BILINEAR]),
+    unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOct).sharing(&[TRILINEAR]),
+    unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOctMatte).sharing(&[TRILINEAR]),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -25,6 +25,20 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("hemi_oct", false, "bilinear", false),
     ("hemi_oct", false, "trilinear", false),
     ("seed", true, "trilinear", false),
+    ("hemi_oct", false, "nearest", true),
+    ("hemi_oct", false, "nearest", false),
+    ("seed", true, "nearest", true),
+    ("hemi_oct", true, "nearest", true),
+    ("hemi_oct", false, "nearest_mip", true),
+    ("hemi_oct", false, "nearest_mip", false),
+    ("seed", true, "nearest_mip", true),
+    ("seed", true, "nearest_mip", false),
+    ("hemi_oct", true, "nearest_mip", true),
+    ("hemi_oct", true, "nearest_mip", false),
+    ("hemi_oct", true, "bilinear", true),
+    ("hemi_oct", true, "bilinear", false),
+    ("hemi_oct", true, "trilinear", true),
+    ("hemi_oct", true, "trilinear", false),
 ];
 
 /// The pipelines with a colour map, likewise: `cart_tex_<filter>[_surface]_colour`.

@@ -44,6 +44,15 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         }
     }
     assert!(seen >= 6, "{seen} scenes");
+    // scenes/texture_unit/: one scene per pipeline on the texture unit that no scene above shows, named after it
+    let mut named = 0;
+    for e in std::fs::read_dir(scenes_dir().join("texture_unit")).unwrap() {
+        let p = e.unwrap().path();
+        let got = scene_file::load(&p).unwrap_or_else(|e| panic!("{e}")).pipeline.name;
+        assert_eq!(got, p.file_stem().unwrap().to_str().unwrap(), "{}", p.display());
+        named += 1;
+    }
+    assert_eq!(named, 14);
     // the quad every pipeline is compared on is the default scene; the demo's own is a torus, lit per vertex
     let quad = scene_file::load(&scenes_dir().join("quad.toml")).unwrap();
     let d = Scene::default();
@@ -148,11 +157,16 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         &["filter = \"trilinear\"", "only the texture unit has MIP levels"],
     );
     assert_eq!(kind(scene("seed", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n")), "cart_tex_nearest_mip");
-    // a MIP filter no pipeline on the unit serves: one line at the filter, naming the choices
+    assert_eq!(
+        kind(scene("hemi_oct", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n")),
+        "cart_tex_nearest_mip_hemi_oct"
+    );
+    // a MIP filter no pipeline on the unit serves (trilinear in two passes is built matte, seed texels, lights per
+    // vertex only): one line at the filter, naming the choices
     refused(
-        &scene("hemi_oct", "filter = \"nearest_mip\"\n", "vertex", "gloss = 3\n"),
+        &scene("hemi_oct", "filter = \"trilinear_two_pass\"\n", "vertex", "gloss = 3\n"),
         "s.toml:5:10:",
-        &["nearest_mip", "texture unit", "hemi_oct", "a gloss"],
+        &["trilinear_two_pass", "texture unit", "hemi_oct", "a gloss"],
     );
     refused(
         &scene("seed", "filter = \"nearest_mip\"\nfetch = \"host\"\n", "vertex", "gloss = 0\n"),
@@ -163,9 +177,13 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         kind(scene("hemi_oct", "fetch = \"unit\"\n", "vertex", "gloss = 0\n")),
         "cart_tex_bilinear_hemi_oct_matte"
     );
+    assert_eq!(
+        kind(scene("hemi_oct", "fetch = \"unit\"\n", "surface", "gloss = 3\n")),
+        "cart_tex_bilinear_surface_hemi_oct"
+    );
     refused(
-        &scene("hemi_oct", "fetch = \"unit\"\n", "surface", "gloss = 3\n"),
-        "s.toml:5:9:",
+        &scene("hemi_oct", "filter = \"trilinear_two_pass\"\nfetch = \"unit\"\n", "surface", "gloss = 3\n"),
+        "s.toml:6:9:",
         &["fetch = \"unit\"", "hemi_oct", "per = \"surface\"", "a gloss"],
     );
     refused(
@@ -177,16 +195,18 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
     let host = "fetch = \"host\"\n";
     assert_eq!(kind(scene("hemi_oct", host, "vertex", "")), cart(Decode::HemiOct, true));
     assert_eq!(kind(scene("hemi_oct", host, "vertex", "gloss = 0\n")), cart(Decode::HemiOct, false));
-    // hemi-oct matte, per vertex, goes to the unit now it has the pipeline; per surface with gloss still to the host
+    // hemi-oct texels on the unit, per vertex and per surface, matte and glossy
     assert_eq!(kind(scene("hemi_oct", "", "vertex", "gloss = 0\n")), "cart_tex_bilinear_hemi_oct_matte");
-    assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 3\n")), v(Decode::HemiOct, false, true));
+    assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 3\n")), "cart_tex_bilinear_surface_hemi_oct");
+    assert_eq!(kind(scene("hemi_oct", host, "surface", "gloss = 3\n")), v(Decode::HemiOct, false, true));
     // one light per surface: on the texture unit where it serves the material, the host's on asking
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 0\n")), "cart_tex_bilinear_surface_matte");
     assert_eq!(kind(scene("seed", "", "surface", "gloss = 12\n")), "cart_tex_bilinear_surface");
     assert_eq!(kind(scene("seed", "", "surface", "")), "cart_tex_bilinear_surface", "the default gloss is 96");
     assert_eq!(kind(scene("seed", host, "surface", "gloss = 0\n")), v(Decode::Seed, false, false));
     assert_eq!(kind(scene("seed", host, "surface", "gloss = 12\n")), v(Decode::Seed, false, true));
-    assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 12\n")), v(Decode::HemiOct, false, true));
+    assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 12\n")), "cart_tex_bilinear_surface_hemi_oct");
+    assert_eq!(kind(scene("hemi_oct", "", "surface", "gloss = 0\n")), "cart_tex_bilinear_surface_hemi_oct_matte");
     let nearest = "filter = \"nearest\"\n";
     assert_eq!(kind(scene("hemi_oct", nearest, "surface", "gloss = 0\n")), "cart_tex_nearest_surface_hemi_oct_matte");
     let nearest_host = format!("{nearest}{host}");

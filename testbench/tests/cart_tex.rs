@@ -4,20 +4,27 @@
 //! they read.
 use rtl::cart_tex::{
     CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearHemiOctMatte, CartTexBilinearMatte,
-    CartTexBilinearSurface, CartTexBilinearSurfaceColour, CartTexBilinearSurfaceMatte, CartTexNearest,
-    CartTexNearestColour, CartTexNearestMatte, CartTexNearestMip, CartTexNearestMipColour, CartTexNearestMipMatte,
-    CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte, CartTexTrilinear, CartTexTrilinearHemiOct,
-    CartTexTrilinearHemiOctMatte, CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearSurfaceMatte,
-    CartTexTrilinearTwoPassMatte,
+    CartTexBilinearSurface, CartTexBilinearSurfaceColour, CartTexBilinearSurfaceHemiOct,
+    CartTexBilinearSurfaceHemiOctMatte, CartTexBilinearSurfaceMatte, CartTexNearest, CartTexNearestColour,
+    CartTexNearestHemiOct, CartTexNearestHemiOctMatte, CartTexNearestMatte, CartTexNearestMip, CartTexNearestMipColour,
+    CartTexNearestMipHemiOct, CartTexNearestMipHemiOctMatte, CartTexNearestMipMatte, CartTexNearestMipSurface,
+    CartTexNearestMipSurfaceHemiOct, CartTexNearestMipSurfaceHemiOctMatte, CartTexNearestMipSurfaceMatte,
+    CartTexNearestSurface, CartTexNearestSurfaceHemiOct, CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte,
+    CartTexTrilinear, CartTexTrilinearHemiOct, CartTexTrilinearHemiOctMatte, CartTexTrilinearMatte,
+    CartTexTrilinearSurface, CartTexTrilinearSurfaceHemiOct, CartTexTrilinearSurfaceHemiOctMatte,
+    CartTexTrilinearSurfaceMatte, CartTexTrilinearTwoPassMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::cart_tex::{
     bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_hemi_oct_matte, bilinear_matte, bilinear_surface,
-    bilinear_surface_colour, bilinear_surface_matte, nearest, nearest_colour, nearest_matte, nearest_mip,
-    nearest_mip_colour, nearest_mip_matte, nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear,
-    trilinear_hemi_oct, trilinear_hemi_oct_matte, trilinear_matte, trilinear_surface, trilinear_surface_matte,
-    trilinear_two_pass_matte,
+    bilinear_surface_colour, bilinear_surface_hemi_oct, bilinear_surface_hemi_oct_matte, bilinear_surface_matte,
+    nearest, nearest_colour, nearest_hemi_oct, nearest_hemi_oct_matte, nearest_matte, nearest_mip, nearest_mip_colour,
+    nearest_mip_hemi_oct, nearest_mip_hemi_oct_matte, nearest_mip_matte, nearest_mip_surface,
+    nearest_mip_surface_hemi_oct, nearest_mip_surface_hemi_oct_matte, nearest_mip_surface_matte, nearest_surface,
+    nearest_surface_hemi_oct, nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear, trilinear_hemi_oct,
+    trilinear_hemi_oct_matte, trilinear_matte, trilinear_surface, trilinear_surface_hemi_oct,
+    trilinear_surface_hemi_oct_matte, trilinear_surface_matte, trilinear_two_pass_matte,
 };
 use vectors::UnitModel;
 
@@ -47,6 +54,36 @@ unit_tests!(
     cart_tex_nearest_surface_hemi_oct_matte,
     CartTexNearestSurfaceHemiOctMatte,
     nearest_surface_hemi_oct_matte::MODEL
+);
+unit_tests!(cart_tex_nearest_hemi_oct, CartTexNearestHemiOct, nearest_hemi_oct::MODEL);
+unit_tests!(cart_tex_nearest_hemi_oct_matte, CartTexNearestHemiOctMatte, nearest_hemi_oct_matte::MODEL);
+unit_tests!(cart_tex_nearest_surface, CartTexNearestSurface, nearest_surface::MODEL);
+unit_tests!(cart_tex_nearest_surface_hemi_oct, CartTexNearestSurfaceHemiOct, nearest_surface_hemi_oct::MODEL);
+unit_tests!(cart_tex_nearest_mip_hemi_oct, CartTexNearestMipHemiOct, nearest_mip_hemi_oct::MODEL);
+unit_tests!(cart_tex_nearest_mip_hemi_oct_matte, CartTexNearestMipHemiOctMatte, nearest_mip_hemi_oct_matte::MODEL);
+unit_tests!(cart_tex_nearest_mip_surface, CartTexNearestMipSurface, nearest_mip_surface::MODEL);
+unit_tests!(cart_tex_nearest_mip_surface_matte, CartTexNearestMipSurfaceMatte, nearest_mip_surface_matte::MODEL);
+unit_tests!(
+    cart_tex_nearest_mip_surface_hemi_oct,
+    CartTexNearestMipSurfaceHemiOct,
+    nearest_mip_surface_hemi_oct::MODEL
+);
+unit_tests!(
+    cart_tex_nearest_mip_surface_hemi_oct_matte,
+    CartTexNearestMipSurfaceHemiOctMatte,
+    nearest_mip_surface_hemi_oct_matte::MODEL
+);
+unit_tests!(cart_tex_bilinear_surface_hemi_oct, CartTexBilinearSurfaceHemiOct, bilinear_surface_hemi_oct::MODEL);
+unit_tests!(
+    cart_tex_bilinear_surface_hemi_oct_matte,
+    CartTexBilinearSurfaceHemiOctMatte,
+    bilinear_surface_hemi_oct_matte::MODEL
+);
+unit_tests!(cart_tex_trilinear_surface_hemi_oct, CartTexTrilinearSurfaceHemiOct, trilinear_surface_hemi_oct::MODEL);
+unit_tests!(
+    cart_tex_trilinear_surface_hemi_oct_matte,
+    CartTexTrilinearSurfaceHemiOctMatte,
+    trilinear_surface_hemi_oct_matte::MODEL
 );
 
 /// Random streams through rust-hdl (from an empty memory, which both read as zero), the hard cases with bubbles,
@@ -217,4 +254,74 @@ fn cart_tex_nearest_colour_streams() {
 #[test]
 fn cart_tex_nearest_mip_colour_streams() {
     three_streams::<CartTexNearestMipColour>(&nearest_mip_colour::MODEL, 46);
+}
+
+#[test]
+fn cart_tex_nearest_hemi_oct_streams() {
+    three_streams::<CartTexNearestHemiOct>(&nearest_hemi_oct::MODEL, 47);
+}
+
+#[test]
+fn cart_tex_nearest_hemi_oct_matte_streams() {
+    three_streams::<CartTexNearestHemiOctMatte>(&nearest_hemi_oct_matte::MODEL, 48);
+}
+
+#[test]
+fn cart_tex_nearest_surface_streams() {
+    three_streams::<CartTexNearestSurface>(&nearest_surface::MODEL, 49);
+}
+
+#[test]
+fn cart_tex_nearest_surface_hemi_oct_streams() {
+    three_streams::<CartTexNearestSurfaceHemiOct>(&nearest_surface_hemi_oct::MODEL, 50);
+}
+
+#[test]
+fn cart_tex_nearest_mip_hemi_oct_streams() {
+    three_streams::<CartTexNearestMipHemiOct>(&nearest_mip_hemi_oct::MODEL, 51);
+}
+
+#[test]
+fn cart_tex_nearest_mip_hemi_oct_matte_streams() {
+    three_streams::<CartTexNearestMipHemiOctMatte>(&nearest_mip_hemi_oct_matte::MODEL, 52);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_streams() {
+    three_streams::<CartTexNearestMipSurface>(&nearest_mip_surface::MODEL, 53);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_matte_streams() {
+    three_streams::<CartTexNearestMipSurfaceMatte>(&nearest_mip_surface_matte::MODEL, 54);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_hemi_oct_streams() {
+    three_streams::<CartTexNearestMipSurfaceHemiOct>(&nearest_mip_surface_hemi_oct::MODEL, 55);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_hemi_oct_matte_streams() {
+    three_streams::<CartTexNearestMipSurfaceHemiOctMatte>(&nearest_mip_surface_hemi_oct_matte::MODEL, 56);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_hemi_oct_streams() {
+    three_streams::<CartTexBilinearSurfaceHemiOct>(&bilinear_surface_hemi_oct::MODEL, 57);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_hemi_oct_matte_streams() {
+    three_streams::<CartTexBilinearSurfaceHemiOctMatte>(&bilinear_surface_hemi_oct_matte::MODEL, 58);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_hemi_oct_streams() {
+    three_streams::<CartTexTrilinearSurfaceHemiOct>(&trilinear_surface_hemi_oct::MODEL, 59);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_hemi_oct_matte_streams() {
+    three_streams::<CartTexTrilinearSurfaceHemiOctMatte>(&trilinear_surface_hemi_oct_matte::MODEL, 60);
 }

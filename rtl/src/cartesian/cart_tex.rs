@@ -257,3 +257,148 @@ cartesian_pipeline! {
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
     gloss: { unit: gloss, c: conc, delay: conc_dly },
 }
+
+// the rest of issue 24's matrix (texels seed or hemi-oct × lights per vertex or per surface × gloss or matte × the
+// four filters): one light per surface, the light word waits AT_DOT = front + decode (4, hemi-oct 3) + normalise 11
+// clocks, in the fewest address bits that hold it (front: nearest 11, bilinear 22, nearest MIP 24, trilinear 43)
+cartesian_pipeline! {
+    module: nearest_hemi_oct,
+    block: CartTexNearestHemiOct,
+    unit: "cart_tex_nearest_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearest, module: nearest, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_hemi_oct_matte,
+    block: CartTexNearestHemiOctMatte,
+    unit: "cart_tex_nearest_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearest, module: nearest, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    module: nearest_surface,
+    block: CartTexNearestSurface,
+    unit: "cart_tex_nearest_surface",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearest, module: nearest, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_surface_hemi_oct,
+    block: CartTexNearestSurfaceHemiOct,
+    unit: "cart_tex_nearest_surface_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearest, module: nearest, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_mip_hemi_oct,
+    block: CartTexNearestMipHemiOct,
+    unit: "cart_tex_nearest_mip_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_mip_hemi_oct_matte,
+    block: CartTexNearestMipHemiOctMatte,
+    unit: "cart_tex_nearest_mip_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    module: nearest_mip_surface,
+    block: CartTexNearestMipSurface,
+    unit: "cart_tex_nearest_mip_surface",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_mip_surface_matte,
+    block: CartTexNearestMipSurfaceMatte,
+    unit: "cart_tex_nearest_mip_surface_matte",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+cartesian_pipeline! {
+    module: nearest_mip_surface_hemi_oct,
+    block: CartTexNearestMipSurfaceHemiOct,
+    unit: "cart_tex_nearest_mip_surface_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: nearest_mip_surface_hemi_oct_matte,
+    block: CartTexNearestMipSurfaceHemiOctMatte,
+    unit: "cart_tex_nearest_mip_surface_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMip, module: nearest_mip, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+cartesian_pipeline! {
+    module: bilinear_surface_hemi_oct,
+    block: CartTexBilinearSurfaceHemiOct,
+    unit: "cart_tex_bilinear_surface_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinear, module: bilinear, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: bilinear_surface_hemi_oct_matte,
+    block: CartTexBilinearSurfaceHemiOctMatte,
+    unit: "cart_tex_bilinear_surface_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinear, module: bilinear, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+cartesian_pipeline! {
+    module: trilinear_surface_hemi_oct,
+    block: CartTexTrilinearSurfaceHemiOct,
+    unit: "cart_tex_trilinear_surface_hemi_oct",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    module: trilinear_surface_hemi_oct_matte,
+    block: CartTexTrilinearSurfaceHemiOctMatte,
+    unit: "cart_tex_trilinear_surface_hemi_oct_matte",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinear, module: trilinear, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
