@@ -1,6 +1,6 @@
 //! `tex_fetch`: the texture unit's map memory and fetch: 16-bit texels with the whole MIP chain (levels up to
-//! 128 × 128) in four 2×2-interleaved banks, one bilinear footprint read a clock, written texel by texel through
-//! the same stream (`we`). See `vectors::tex_fetch` for the layout and the ports.
+//! 128 × 128, or with `L` = 8 up to 256 × 256) in four 2×2-interleaved banks, one bilinear footprint read a clock,
+//! written texel by texel through the same stream (`we`). See `vectors::tex_fetch` for the layout and the ports.
 //!
 //! Latency 6: the level's side and the coordinates taken modulo it (and the write's); each bank's column and its
 //! row shifted to the level's row length, with the level's base; the bank addresses (and the write's address and
@@ -25,44 +25,53 @@ pub const EVEN: usize = 1;
 pub const ODD: usize = 2;
 /// A bank's address bits for the even levels: 1,093 words of 2,048.
 pub const EVEN_ADDR_BITS: usize = 11;
+/// The largest level's side log2 (the unit's `L`): 7, a 128 × 128 map. With `L` = 8 a bank holds a 256 × 256 map's
+/// chain, 21,846 words (`A` = 15; 4 × 2^15 16-bit words, more block RAM than the ECP5-45F's 108 DP16KD give).
+pub const MAX_LOG_SIDE: usize = 7;
+/// A bank's address bits for a 256 × 256 map's chain (`L` = 8).
+pub const ADDR_BITS_256: usize = 15;
 
 /// Where each level starts in a bank of a memory holding the levels `p` (ALL, EVEN, ODD): the words of the held
 /// levels below it (the 1 × 1 level one word, the side 2^m one 4^(m−1)); a level not held is never placed (its
-/// writes are dropped and its reads give zeros).
-pub fn bases(p: usize) -> [u64; 8] {
-    let held = |m: usize| p == ALL || m.is_multiple_of(2) == (p == EVEN);
+/// writes are dropped and its reads give zeros). Entry 9 is where a chain of side 2^8 ends.
+pub fn bases(p: usize) -> [u64; 10] {
     let size = |k: usize| if k == 0 { 1u64 } else { 1 << (2 * (k - 1)) };
-    std::array::from_fn(|m| (0..m).filter(|&k| held(k)).map(size).sum())
+    std::array::from_fn(|m| (0..m).filter(|&k| holds(p, k)).map(size).sum())
+}
+
+/// Whether a memory holding the levels `p` holds the level of side 2^m.
+pub fn holds(p: usize, m: usize) -> bool {
+    p == ALL || m.is_multiple_of(2) == (p == EVEN)
 }
 
 crate::block! {
-    /// The level's base and whether the memory holds it, for a memory holding the levels `P` (`bases`): a table of
-    /// eight constants read by the saturated side log2 m (0 ..= 7). Combinational.
-    pub struct LevelBase<const P: usize> {
-        pub m: Signal<In, Bits<3>>,
-        pub base: Signal<Out, Bits<13>>,
+    /// The level's base (UA) and whether the memory holds it, for a memory of `A`-bit banks holding the levels `P`
+    /// (`bases`): a table of nine constants read by the saturated side log2 m (0 ..= 8). Combinational.
+    pub struct LevelBase<const P: usize, const A: usize> {
+        pub m: Signal<In, Bits<4>>,
+        pub base: Signal<Out, Bits<A>>,
         pub held: Signal<Out, Bit>,
-        tab: [Constant<Bits<13>>; 8],
-        holds: Constant<Bits<8>>,
+        tab: [Constant<Bits<A>>; 9],
+        holds: Constant<Bits<16>>,
     }
 }
 
-impl<const P: usize> Default for LevelBase<P> {
+impl<const P: usize, const A: usize> Default for LevelBase<P, A> {
     fn default() -> Self {
         let b = bases(P);
-        let mask: u64 =
-            (0..8).filter(|&m: &usize| P == ALL || m.is_multiple_of(2) == (P == EVEN)).map(|m| 1 << m).sum();
+        let mask: u64 = (0..9).filter(|&m| holds(P, m)).map(|m| 1 << m).sum();
         Self {
             m: Default::default(),
             base: Default::default(),
             held: Default::default(),
-            tab: std::array::from_fn(|k| Constant::new(Bits::<13>::from(b[k]))),
-            holds: Constant::new(Bits::<8>::from(mask)),
+            // a base past the A-bit banks is never read: the unit's L keeps m below it (`TexFetch` asserts so)
+            tab: std::array::from_fn(|k| Constant::new(Bits::<A>::from(b[k] & ((1 << A) - 1)))),
+            holds: Constant::new(Bits::<16>::from(mask)),
         }
     }
 }
 
-impl<const P: usize> Logic for LevelBase<P> {
+impl<const P: usize, const A: usize> Logic for LevelBase<P, A> {
     #[hdl_gen]
     fn update(&mut self) {
         self.base.next = self.tab[0].val();
@@ -87,15 +96,44 @@ impl<const P: usize> Logic for LevelBase<P> {
         if self.m.val() == 7 {
             self.base.next = self.tab[7].val();
         }
+        if self.m.val() == 8 {
+            self.base.next = self.tab[8].val();
+        }
         self.held.next = self.holds.val().get_bit(self.m.val().index());
     }
 }
+crate::block! {
+    /// A side log2 saturated to `L` (≤ 8), the largest level a memory of side 2^L holds. Combinational.
+    pub struct LevelCap<const L: usize> {
+        pub m_in: Signal<In, Bits<4>>,
+        pub m: Signal<Out, Bits<4>>,
+        top: Constant<Bits<4>>,
+    }
+}
+
+impl<const L: usize> Default for LevelCap<L> {
+    fn default() -> Self {
+        assert!(L <= 8, "LevelCap: the memory holds sides up to 2^8, not 2^{L}");
+        Self { m_in: Default::default(), m: Default::default(), top: Constant::new(Bits::<4>::from(L as u64)) }
+    }
+}
+
+impl<const L: usize> Logic for LevelCap<L> {
+    #[hdl_gen]
+    fn update(&mut self) {
+        self.m.next = self.m_in.val();
+        if self.m_in.val() > self.top.val() {
+            self.m.next = self.top.val();
+        }
+    }
+}
+
 /// The write port (`StreamUnit::MAP`): a write beat writes one texel and reads nothing.
 pub const MAP: &[&str] = &["we", "w_log2", "wx", "wy", "wdata"];
 
 crate::stream_block! {
     #[derive(Default)]
-    pub struct TexFetch<const P: usize = 0, const A: usize = 13>: unit("tex_fetch", LATENCY, map = MAP) {
+    pub struct TexFetch<const P: usize = 0, const A: usize = 13, const L: usize = 7>: unit("tex_fetch", LATENCY, map = MAP) {
         in {
             level_log2: Bits<4>,
             x0: U8,
@@ -117,9 +155,12 @@ crate::stream_block! {
         /// the four banks, (x mod 2) + 2·(y mod 2), each single-port: a clock reads it or writes it
         pub bank: [SpRam<U16, A>; 4],
         /// the read's and the write's level bases, for the levels the memory holds (`P`)
-        read_base: LevelBase<P>,
-        write_base: LevelBase<P>,
-        // stage 1: the level's side log2 (saturated to 7), the coordinates modulo its side; the write's likewise
+        read_base: LevelBase<P, 15>,
+        write_base: LevelBase<P, 15>,
+        /// the read's and the write's side log2, saturated to L
+        read_cap: LevelCap<L>,
+        write_cap: LevelCap<L>,
+        // stage 1: the level's side log2 (saturated to L), the coordinates modulo its side; the write's likewise
         s1_m: DFF<Bits<4>>,
         s1_x: [DFF<U8>; 2],
         s1_y: [DFF<U8>; 2],
@@ -129,24 +170,26 @@ crate::stream_block! {
         s1_wx: DFF<U8>,
         s1_wy: DFF<U8>,
         s1_wdata: DFF<U16>,
-        // stage 2: per parity p the column that bank column p reads, halved (U7 in 13), and the row likewise,
-        // shifted to its place (row·2^(m−1), U13); the level's base (U13); the parities for the select
-        s2_col: [DFF<Bits<13>>; 2],
-        s2_row: [DFF<Bits<13>>; 2],
-        s2_base: DFF<Bits<13>>,
+        // stage 2: per parity p the column that bank column p reads, halved (U7 in 15), and the row likewise,
+        // shifted to its place (row·2^(m−1) < 2^(2L−1), U15 at L = 8); the level's base (U15); the parities for the
+        // select. The addresses are 15 bits whatever the banks' A (a bank takes its A low bits, all of the address
+        // where the level is held; yosys drops the rest)
+        s2_col: [DFF<Bits<15>>; 2],
+        s2_row: [DFF<Bits<15>>; 2],
+        s2_base: DFF<Bits<15>>,
         s2_px: [DFF<Bit>; 2],
         s2_py: [DFF<Bit>; 2],
         s2_rd: DFF<Bit>,
         s2_we: DFF<Bit>,
         s2_wpx: DFF<Bit>,
         s2_wpy: DFF<Bit>,
-        s2_wcol: DFF<Bits<13>>,
-        s2_wrow: DFF<Bits<13>>,
-        s2_wbase: DFF<Bits<13>>,
+        s2_wcol: DFF<Bits<15>>,
+        s2_wrow: DFF<Bits<15>>,
+        s2_wbase: DFF<Bits<15>>,
         s2_wdata: DFF<U16>,
         // stage 3: the four bank addresses, the write's in the bank it writes (registered: the banks read and write
         // them)
-        s3_addr: [DFF<Bits<13>>; 4],
+        s3_addr: [DFF<Bits<15>>; 4],
         s3_px: [DFF<Bit>; 2],
         s3_py: [DFF<Bit>; 2],
         s3_rd: DFF<Bit>,
@@ -164,29 +207,31 @@ crate::stream_block! {
         valid: Delay<Bit, LATENCY>,
         w_m: Signal<Local, Bits<4>>,
         w_wm: Signal<Local, Bits<4>>,
-        w_one: Signal<Local, U8>,
-        w_side: Signal<Local, U8>,
+        w_one: Signal<Local, Bits<9>>,
+        w_side: Signal<Local, Bits<9>>,
+        w_mask9: Signal<Local, Bits<9>>,
         w_mask: Signal<Local, U8>,
-        w_wside: Signal<Local, U8>,
+        w_wside: Signal<Local, Bits<9>>,
+        w_wmask9: Signal<Local, Bits<9>>,
         w_wmask: Signal<Local, U8>,
         w_cx: [Signal<Local, U8>; 2],
         w_ry: [Signal<Local, U8>; 2],
-        w_c13: [Signal<Local, Bits<13>>; 2],
-        w_r13: [Signal<Local, Bits<13>>; 2],
-        w_rm: [Signal<Local, Bits<13>>; 2],
-        w_wc13: Signal<Local, Bits<13>>,
-        w_wr13: Signal<Local, Bits<13>>,
-        w_wrm: Signal<Local, Bits<13>>,
-        w_base: Signal<Local, Bits<13>>,
-        w_wbase: Signal<Local, Bits<13>>,
-        w_sum: [Signal<Local, Bits<13>>; 4],
+        w_c13: [Signal<Local, Bits<15>>; 2],
+        w_r13: [Signal<Local, Bits<15>>; 2],
+        w_rm: [Signal<Local, Bits<15>>; 2],
+        w_wc13: Signal<Local, Bits<15>>,
+        w_wr13: Signal<Local, Bits<15>>,
+        w_wrm: Signal<Local, Bits<15>>,
+        w_base: Signal<Local, Bits<15>>,
+        w_wbase: Signal<Local, Bits<15>>,
+        w_sum: [Signal<Local, Bits<15>>; 4],
         w_kx: [Signal<Local, Bit>; 4],
         w_ky: [Signal<Local, Bit>; 4],
-        w_wsum: Signal<Local, Bits<13>>,
+        w_wsum: Signal<Local, Bits<15>>,
     }
 }
 
-impl<const P: usize, const A: usize> Logic for TexFetch<P, A> {
+impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L> {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
@@ -217,22 +262,18 @@ impl<const P: usize, const A: usize> Logic for TexFetch<P, A> {
         }
         self.valid.d.next = self.valid_in.val();
 
-        // stage 1: m = min(level_log2, 7) (saturate), the side's mask 2^m − 1, each coordinate modulo the side
-        if self.level_log2.val().get_bit(3) {
-            self.w_m.next = 7.into();
-        } else {
-            self.w_m.next = self.level_log2.val();
-        }
-        if self.w_log2.val().get_bit(3) {
-            self.w_wm.next = 7.into();
-        } else {
-            self.w_wm.next = self.w_log2.val();
-        }
+        // stage 1: m = min(level_log2, L) (saturate), the side's mask 2^m − 1, each coordinate modulo the side
+        self.read_cap.m_in.next = self.level_log2.val();
+        self.w_m.next = self.read_cap.m.val();
+        self.write_cap.m_in.next = self.w_log2.val();
+        self.w_wm.next = self.write_cap.m.val();
         self.w_one.next = 1.into();
-        self.w_side.next = self.w_one.val() << self.w_m.val(); // 2^m ≤ 128: U8, exact
-        self.w_mask.next = self.w_side.val() - 1; // U7, exact
-        self.w_wside.next = self.w_one.val() << self.w_wm.val(); // U8, exact
-        self.w_wmask.next = self.w_wside.val() - 1; // U7, exact
+        self.w_side.next = self.w_one.val() << self.w_m.val(); // 2^m ≤ 2^8: U9, exact
+        self.w_mask9.next = self.w_side.val() - 1; // U8 in 9, exact
+        self.w_mask.next = self.w_mask9.val().get_bits::<8>(0); // U8, exact
+        self.w_wside.next = self.w_one.val() << self.w_wm.val(); // U9, exact
+        self.w_wmask9.next = self.w_wside.val() - 1; // U8 in 9, exact
+        self.w_wmask.next = self.w_wmask9.val().get_bits::<8>(0); // U8, exact
         self.s1_m.d.next = self.w_m.val();
         self.s1_x[0].d.next = self.x0.val() & self.w_mask.val(); // modulo 2^m
         self.s1_x[1].d.next = self.x1.val() & self.w_mask.val();
@@ -260,35 +301,35 @@ impl<const P: usize, const A: usize> Logic for TexFetch<P, A> {
             self.w_ry[0].next = self.s1_y[0].q.val();
             self.w_ry[1].next = self.s1_y[1].q.val();
         }
-        // the word column x >> 1 and row y >> 1 (U7 in 13, a slice widened; written out: the loop index does not
+        // the word column x >> 1 and row y >> 1 (U7 in 15, a slice widened; written out: the loop index does not
         // reach into a function's argument under #[hdl_gen])
-        self.w_c13[0].next = bit_cast::<13, 7>(self.w_cx[0].val().get_bits::<7>(1));
-        self.w_c13[1].next = bit_cast::<13, 7>(self.w_cx[1].val().get_bits::<7>(1));
-        self.w_r13[0].next = bit_cast::<13, 7>(self.w_ry[0].val().get_bits::<7>(1));
-        self.w_r13[1].next = bit_cast::<13, 7>(self.w_ry[1].val().get_bits::<7>(1));
+        self.w_c13[0].next = bit_cast::<15, 7>(self.w_cx[0].val().get_bits::<7>(1));
+        self.w_c13[1].next = bit_cast::<15, 7>(self.w_cx[1].val().get_bits::<7>(1));
+        self.w_r13[0].next = bit_cast::<15, 7>(self.w_ry[0].val().get_bits::<7>(1));
+        self.w_r13[1].next = bit_cast::<15, 7>(self.w_ry[1].val().get_bits::<7>(1));
         for n in 0..2 {
             self.s2_col[n].d.next = self.w_c13[n].val();
             // (y >> 1)·2^(m−1) as ((y >> 1) << m) >> 1, which is 0 for m = 0 with no case of its own: y >> 1 < 2^m−1
-            // so (y >> 1) << m < 2^(2m−1) ≤ 2^13, U13, exact, and the last shift drops a zero
+            // so (y >> 1) << m < 2^(2m−1) ≤ 2^15, U15, exact, and the last shift drops a zero
             self.w_rm[n].next = self.w_r13[n].val() << self.s1_m.q.val();
-            self.s2_row[n].d.next = self.w_rm[n].val() >> 1; // U12, exact
+            self.s2_row[n].d.next = self.w_rm[n].val() >> 1; // U14, exact
         }
         self.s2_px[0].d.next = self.s1_x[0].q.val().get_bit(0);
         self.s2_px[1].d.next = self.s1_x[1].q.val().get_bit(0);
         self.s2_py[0].d.next = self.s1_y[0].q.val().get_bit(0);
         self.s2_py[1].d.next = self.s1_y[1].q.val().get_bit(0);
         // where the level starts in every bank: base(m) = 1 + (4^(m−1) − 1)/3 for the whole chain (`bases`)
-        self.read_base.m.next = self.s1_m.q.val().get_bits::<3>(0); // m ≤ 7: exact
+        self.read_base.m.next = self.s1_m.q.val(); // m ≤ L ≤ 8
         self.w_base.next = self.read_base.base.val();
         self.s2_base.d.next = self.w_base.val();
         self.s2_rd.d.next = self.s1_rd.q.val() & self.read_base.held.val(); // a level it does not hold reads as zeros
                                                                             // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
-        self.w_wc13.next = bit_cast::<13, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 13
-        self.w_wr13.next = bit_cast::<13, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 13
+        self.w_wc13.next = bit_cast::<15, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 15
+        self.w_wr13.next = bit_cast::<15, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 15
         self.s2_wcol.d.next = self.w_wc13.val();
-        self.w_wrm.next = self.w_wr13.val() << self.s1_wm.q.val(); // U13, exact, as the read's
-        self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U12, exact
-        self.write_base.m.next = self.s1_wm.q.val().get_bits::<3>(0); // m ≤ 7: exact
+        self.w_wrm.next = self.w_wr13.val() << self.s1_wm.q.val(); // U15, exact, as the read's
+        self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U14, exact
+        self.write_base.m.next = self.s1_wm.q.val(); // m ≤ L ≤ 8
         self.w_wbase.next = self.write_base.base.val();
         self.s2_wbase.d.next = self.w_wbase.val();
         self.s2_wpx.d.next = self.s1_wx.q.val().get_bit(0);
@@ -296,12 +337,12 @@ impl<const P: usize, const A: usize> Logic for TexFetch<P, A> {
         self.s2_we.d.next = self.s1_we.q.val() & self.write_base.held.val(); // a level it does not hold: no write
         self.s2_wdata.d.next = self.s1_wdata.q.val();
 
-        // stage 3: bank (p, q) = p + 2q at base + row q + column p (< 5,462: U13, exact)
+        // stage 3: bank (p, q) = p + 2q at base + row q + column p (< 5,462 at L = 7, < 21,846 at L = 8: U15, exact)
         self.w_sum[0].next = self.s2_base.q.val() + self.s2_row[0].q.val() + self.s2_col[0].q.val();
         self.w_sum[1].next = self.s2_base.q.val() + self.s2_row[0].q.val() + self.s2_col[1].q.val();
         self.w_sum[2].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[0].q.val();
         self.w_sum[3].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[1].q.val();
-        self.w_wsum.next = self.s2_wbase.q.val() + self.s2_wrow.q.val() + self.s2_wcol.q.val(); // U13, exact
+        self.w_wsum.next = self.s2_wbase.q.val() + self.s2_wrow.q.val() + self.s2_wcol.q.val(); // U15, exact
 
         // one address a bank a clock: the write's in the bank it writes, else the read's (a vector either reads or
         // writes, so nothing is lost), as a single-port RAM (the UP5K's SPRAM) needs it

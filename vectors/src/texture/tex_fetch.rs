@@ -11,6 +11,10 @@
 //!   level at word 0 of bank 0, the level of side 2^m (m ≥ 1) at base(m) = 1 + (4^(m−1) − 1)/3 = 1, 2, 6, 22, 86,
 //!   342, 1366 in every bank, each level taking 4^(m−1) words of each;
 //! - levels up to side 2^7 (a 128 × 128 map and its chain: 5,462 words a bank, of the 8,192 of a 13-bit address);
+//!   the largest side is the unit's parameter, 2^0 … 2^8: built for 2^8 (`Chain<8>`, `rtl`'s `TexFetch<_, 15, 8>`)
+//!   a bank holds a 256 × 256 map's chain, 21,846 words of a 15-bit address, and a side log2 saturates at 8. Four
+//!   banks of 2^15 16-bit words are more block RAM than the ECP5-45F has (108 DP16KD), so the pipelines are built
+//!   for 2^7; the parameter is for a larger part;
 //! - trilinear's two reads a clock split the chain by the parity of a level's side log2 (`Levels`): each half in a
 //!   memory of its own with the same layout over the levels it holds; a write of a level a half does not hold is
 //!   dropped there, and a read of one gives zeros.
@@ -74,10 +78,15 @@ impl Levels {
 
     /// A bank's address bits.
     pub fn addr_bits(self) -> u32 {
-        match self {
-            Levels::Even => 11,
-            _ => ADDR_BITS,
-        }
+        self.addr_bits_up_to(MAX_LOG_SIDE)
+    }
+
+    /// A bank's address bits for a memory whose largest level has side 2^top: the fewest that hold the words of
+    /// its levels (13, 11 and 13 for the whole chain, the even and the odd levels of a 128 × 128 map; 15, 15 and 13
+    /// at 256 × 256).
+    pub fn addr_bits_up_to(self, top: i64) -> u32 {
+        let words = self.base(top + 1);
+        (0..).find(|&b| words <= 1 << b).unwrap()
     }
 }
 
@@ -109,11 +118,13 @@ pub fn place(x: i64, y: i64, m: i64) -> (usize, usize) {
     ((x & 1) as usize + 2 * (y & 1) as usize, (base(m) + ((y >> 1) << m >> 1) + (x >> 1)) as usize)
 }
 
-/// The four banks, word for word as the rtl holds them, and the levels they hold.
+/// The four banks, word for word as the rtl holds them, the levels they hold, and the largest level's side log2
+/// (`top`: the unit's own 7, or 8 for the 256 × 256 parameter, `rtl`'s `TexFetch<_, 15, 8>`).
 #[derive(Clone)]
 pub struct Memory {
     pub banks: [Vec<u16>; 4],
     pub levels: Levels,
+    pub top: i64,
 }
 
 impl Default for Memory {
@@ -123,9 +134,15 @@ impl Default for Memory {
 }
 
 impl Memory {
-    /// An empty (zero) memory holding these levels.
+    /// An empty (zero) memory holding these levels of a map up to 128 × 128.
     pub fn holding(levels: Levels) -> Memory {
-        Memory { banks: std::array::from_fn(|_| vec![0; 1 << levels.addr_bits()]), levels }
+        Memory::sized(levels, MAX_LOG_SIDE)
+    }
+
+    /// An empty (zero) memory holding these levels of a map up to side 2^top (top ≤ 8).
+    pub fn sized(levels: Levels, top: i64) -> Memory {
+        assert!((0..=8).contains(&top), "the memory holds sides up to 2^8, not 2^{top}");
+        Memory { banks: std::array::from_fn(|_| vec![0; 1 << levels.addr_bits_up_to(top)]), levels, top }
     }
 
     /// (bank, word) of texel (x, y) of the level of side 2^m (inside it), in this memory's layout: `place` for the
@@ -133,12 +150,12 @@ impl Memory {
     fn at(&self, x: i64, y: i64, m: i64) -> (usize, usize) {
         let (b, w) = place(x, y, m);
         let w = (w as i64 - base(m) + self.levels.base(m)) as usize;
-        (b, w & ((1 << self.levels.addr_bits()) - 1))
+        (b, w & ((1 << self.levels.addr_bits_up_to(self.top)) - 1))
     }
 
     /// A write of a level the memory does not hold writes nothing.
     pub fn write(&mut self, m: i64, x: i64, y: i64, texel: i64) {
-        let m = level(m);
+        let m = m.min(self.top);
         if !self.levels.holds(m) {
             return;
         }
@@ -155,7 +172,7 @@ impl Memory {
     /// The footprint t00, t10, t01, t11 as the banks read it: bank (p, q) reads column x0 if x0 mod 2 = p, else
     /// x1, and row y0 if y0 mod 2 = q, else y1; each output takes the word of its column's and row's bank.
     pub fn footprint(&self, m: i64, x: [i64; 2], y: [i64; 2]) -> [i64; 4] {
-        let m = level(m);
+        let m = m.min(self.top);
         if !self.levels.holds(m) {
             return [0; 4]; // a level the memory does not hold reads as zeros
         }
@@ -204,6 +221,23 @@ impl Machine for Memory {
     }
 }
 
+/// The unit built for maps up to side 2^L as a machine: `Chain<7>` is `Memory`'s default, `Chain<8>` the
+/// 256 × 256 parameter.
+#[derive(Clone)]
+pub struct Chain<const L: i64>(pub Memory);
+
+impl<const L: i64> Default for Chain<L> {
+    fn default() -> Self {
+        Chain(Memory::sized(Levels::All, L))
+    }
+}
+
+impl<const L: i64> Machine for Chain<L> {
+    fn step(&mut self, v: &[i64]) -> Vec<i64> {
+        self.0.step(v)
+    }
+}
+
 /// The unit over a stream of vectors, from an empty (zero) memory.
 pub fn run(inputs: &[Vec<i64>]) -> Vec<Vec<i64>> {
     run_machine::<Memory>(inputs)
@@ -233,6 +267,11 @@ fn footprint_at(x: i64, y: i64, m: i64, second: bool) -> ([i64; 2], [i64; 2]) {
 /// after writing the texels they read; side log2 above 7, coordinates above the level's side, non-neighbour
 /// columns; and a write followed at once by a read of that texel.
 pub fn hard_cases() -> Vec<Vec<i64>> {
+    hard_cases_with(MAX_LOG_SIDE)
+}
+
+/// The hard cases of the unit built for maps up to side 2^top.
+pub fn hard_cases_with(top: i64) -> Vec<Vec<i64>> {
     let mut v = load(REGION_LOG2, pattern);
     for m in 0..=REGION_LOG2 {
         for y in 0..1 << m {
@@ -245,10 +284,20 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
         }
     }
     // the largest level: its corners and the middles of its edges, written first
-    let top = MAX_LOG_SIDE;
     let last = (1 << top) - 1;
+    let half = 1 << (top - 1);
     let mut reads = vec![];
-    for (x, y) in [(last, last), (0, last), (last, 0), (0, 0), (63, last), (last, 64), (64, 0), (0, 63), (100, 27)] {
+    for (x, y) in [
+        (last, last),
+        (0, last),
+        (last, 0),
+        (0, 0),
+        (half - 1, last),
+        (last, half),
+        (half, 0),
+        (0, half - 1),
+        (100 & last, 27 & last),
+    ] {
         for second in [true, false] {
             let (xs, ys) = footprint_at(x, y, top, second);
             reads.push(read(top, xs, ys));
@@ -266,15 +315,16 @@ pub fn hard_cases() -> Vec<Vec<i64>> {
         v.push(write(top, x, y, pattern(top, x, y)));
     }
     v.extend(reads);
-    // a side log2 past the memory (read as 7), and its texels written the same way; coordinates past the level
+    // a side log2 past the memory (read as top), and its texels written the same way; coordinates past the level
     v.push(read(15, [last, 0], [last, 0]));
-    // (200 mod 128, 130 mod 128) = (72, 2) of level 7 and the three beside it (every texel a read touches is
-    // written first: an unwritten word is undefined in a simulator that models it so)
+    // (200, 130) written at a side log2 past the memory's, so into its top level: at 128, (200 mod 128, 130 mod
+    // 128) = (72, 2) of level 7, and the three beside it (every texel a read touches is written first: an unwritten
+    // word is undefined in a simulator that models it so); at 256 (200, 130) itself
     v.push(write(9, 200, 130, 0xbeef));
     v.push(write(9, 201, 130, 0x0001));
     v.push(write(9, 200, 131, 0x8000));
     v.push(write(9, 201, 131, 0xffff));
-    v.push(read(7, [72, 73], [2, 3]));
+    v.push(read(top, [200 & last, 201 & last], [130 & last, 131 & last]));
     v.push(read(3, [8 + 7, 16], [255, 0])); // level 3: (7, 0) and (7, 0)
                                             // columns that are not neighbours: the second of x0's parity reads as x0
     v.push(read(4, [2, 6], [5, 9]));
