@@ -698,7 +698,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                     ));
                 }
                 Some(Fetch::Unit) if !fits => {
-                    return Err(at.err(fetch_span.unwrap_or(bump_span.clone()), format!("[bump] fetch = \"unit\": the texture unit's memory holds maps of side 1, 2, 4 … 128; this map's side is {side}")));
+                    return Err(at.err(fetch_span.unwrap_or(bump_span.clone()), format!("[bump] fetch = \"unit\": the texture unit's pipelines hold maps of side 1, 2, 4 … 128 (its memory built for 256 needs more block RAM than the ECP5-45F has, and no pipeline holds it); this map's side is {side}")));
                 }
                 Some(Fetch::Unit) => unit,
                 None if on_unit && fits => unit,

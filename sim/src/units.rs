@@ -92,9 +92,9 @@ const NEAREST: &[(&str, &str)] = &[
 ];
 /// A colour map beside a nearest-texel front: the colour texel is the footprint's first, as the bump texel is.
 const NEAREST_COLOUR: &[(&str, &str)] = &[
-    ("colour_fetch$t10", "as fetch$t10"),
-    ("colour_fetch$t01", "as fetch$t10"),
-    ("colour_fetch$t11", "as fetch$t10"),
+    ("colour_t$1", "the nearest colour texel is the footprint's first, colour_t[0]; the fetch reads four, as fetch"),
+    ("colour_t$2", "as colour_t$1"),
+    ("colour_t$3", "as colour_t$1"),
     ("colour_fetch$valid_out", "the two fetches run in step: the valid chain follows the bump map's"),
 ];
 /// The LOD unit under a nearest-MIP front.

@@ -9,14 +9,15 @@
 //! - `filter:` the two bilinear units (the low byte and the high byte), the blend factors' delay line beside the
 //!   fetch, and their valid chain; without it the address unit takes the nearest texel (`linear` = 0) and the
 //!   texel leaves as it is read;
-//! - `colour:` (with `filter:`) the colour map: a second fetch holding the colour map's memory (RGB565 texels, the
-//!   same layout), read at the same footprint, each texel's channels widened to 8 bits by repeating their top bits,
-//!   and three more bilinear units (R, G, B) on the same blend factors; the port `wcolour` beside the write port
-//!   picks the memory a write goes to, its delay line keeping it beside the write; outputs `c_r`, `c_g`, `c_b`,
-//!   in step with `lo` and `hi` (`vectors::front`). A write leaves as zeros on every output, as on a front without
-//!   one: the fetch a write does not go to reads as for a read, so its path's outputs are cleared at the end;
-//! - `colour_texel:` (with `unfiltered:`) the same colour map beside the nearest texel: the colour texel read at the
-//!   bump texel's place and widened, not filtered; the same port, outputs and writes.
+//! - `colour_map:` the colour map's memory: a second fetch (RGB565 texels, the same layout) read at the same
+//!   footprint; the port `wcolour` beside the write port picks the memory a write goes to, its delay line keeping
+//!   it beside the write; outputs `c_r`, `c_g`, `c_b`, in step with `lo` and `hi` (`vectors::front`); `written`,
+//!   the front's clocks from the fetch to its output. A write leaves as zeros on every output, as on a front
+//!   without one: the fetch a write does not go to reads as for a read, so its path's outputs are cleared at the
+//!   end. Its four texels reach the channel path (one of the next two groups) as `colour_t`;
+//! - `colour:` (with `filter:`) each colour texel's channels widened to 8 bits by repeating their top bits, and
+//!   three more bilinear units (R, G, B) on the bump texel's blend factors;
+//! - `colour_texel:` (with `unfiltered:`) the colour texel at the bump texel's place, widened, not filtered.
 //!
 //! Ports (every front): the position u, v (Sq11.8, texels of level 0), the map's side log2 and the two wrap modes
 //! (per frame), and the memory's write port (we, w_log2, wx, wy, wdata: `tex_fetch`'s). Outputs: `lo` and `hi`, the
@@ -64,9 +65,10 @@ macro_rules! texture_front {
         $(, level: $lv:tt)?
         $(, lod: { unit: $lod:ident, pick: $pick:ident, position: $pd:ident })?
         $(, filter: { units: $fl:ident, blend: $bd:ident, valid: $flv:ident })?
-        $(, colour: { fetch: $cf:ident, widen: $cx:ident, units: $cu:ident, select: $cs:ident, blend: $cbd:ident })?
         $(, unfiltered: { texel: $tx:ident })?
-        $(, colour_texel: { fetch: $nf:ident, widen: $nx:ident, select: $ns:ident })?
+        $(, colour_map: { fetch: $cf:ident, select: $cs:ident, written: $cw:expr })?
+        $(, colour: { widen: $cx:ident, units: $cu:ident, blend: $cbd:ident })?
+        $(, colour_texel: { widen: $nx:ident })?
         $(,)?
     ) => {
 pub mod $m {
@@ -110,27 +112,19 @@ crate::block! {
         pub wdata: Signal<In, U16>,
         $(pub wcolour: Signal<In, Bits<1>>,
         pub $cf: TexFetch, // the colour map's memory
-        $cx: [Rgb565; 4], // the four texels widened
-        pub $cu: [BilinearUnit<8, 8>; 3], // R, G, B
         $cs: Delay<Bits<1>, AT_FETCH>, // wcolour, beside the write
+        // the colour memory's four texels as the channel paths read them (bit copies)
+        colour_t: [Signal<Local, U16>; 4],
         // (a write to the colour map, a write to the bump map) from the fetch to the front's output
-        written: Delay<Bits<2>, { crate::tex_fetch::LATENCY + crate::bilinear::LATENCY }>,
+        written: Delay<Bits<2>, { $cw }>,
         wrote_colour: Signal<Local, Bits<1>>,
         wrote_bump: Signal<Local, Bits<1>>,
         pub c_r: Signal<Out, U8>,
         pub c_g: Signal<Out, U8>,
         pub c_b: Signal<Out, U8>,)?
-        $(pub wcolour: Signal<In, Bits<1>>,
-        pub $nf: TexFetch, // the colour map's memory
-        $nx: Rgb565, // the nearest texel widened
-        $ns: Delay<Bits<1>, AT_FETCH>, // wcolour, beside the write
-        // (a write to the colour map, a write to the bump map) from the fetch to the front's output
-        written: Delay<Bits<2>, { crate::tex_fetch::LATENCY }>,
-        wrote_colour: Signal<Local, Bits<1>>,
-        wrote_bump: Signal<Local, Bits<1>>,
-        pub c_r: Signal<Out, U8>,
-        pub c_g: Signal<Out, U8>,
-        pub c_b: Signal<Out, U8>,)?
+        $($cx: [Rgb565; 4], // the four texels widened
+        pub $cu: [BilinearUnit<8, 8>; 3],)? // R, G, B
+        $($nx: Rgb565,)? // the nearest texel widened
         pub valid_out: Signal<Out, Bit>,
         pub lo: Signal<Out, U8>,
         pub hi: Signal<Out, U8>,
@@ -230,8 +224,7 @@ impl Logic for $t {
         self.hi.next = self.$fl[1].out.val();
         )?
         // the colour map: its own memory read at the same footprint, the write it takes picked by wcolour (and the
-        // bump map's fetch takes the others); each texel's RGB565 widened to three bytes by repeating the top bits
-        // (`(c << 3) | (c >> 2)`, `(c << 2) | (c >> 4)`: bit copies), filtered on the bump texel's blend factors
+        // bump map's fetch takes the others)
         $(self.$cf.clock.next = self.clock.val();
         self.$cs.clock.next = self.clock.val();
         self.$cs.d.next = self.wcolour.val();
@@ -247,15 +240,20 @@ impl Logic for $t {
         self.$cf.wx.next = self.write_dly.q.val().get_bits::<8>(5);
         self.$cf.wy.next = self.write_dly.q.val().get_bits::<8>(13);
         self.$cf.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
-        for i in 0..3 {
+        self.colour_t[0].next = self.$cf.t00.val();
+        self.colour_t[1].next = self.$cf.t10.val();
+        self.colour_t[2].next = self.$cf.t01.val();
+        self.colour_t[3].next = self.$cf.t11.val();)?
+        // filtered: each texel's RGB565 widened to three bytes by repeating the top bits (`(c << 3) | (c >> 2)`,
+        // `(c << 2) | (c >> 4)`: bit copies), filtered on the bump texel's blend factors
+        $(for i in 0..3 {
             self.$cu[i].clock.next = self.clock.val();
             self.$cu[i].ublend.next = self.$cbd.q.val().get_bits::<8>(0); // bit copies
             self.$cu[i].vblend.next = self.$cbd.q.val().get_bits::<8>(8); // bit copies
         }
-        self.$cx[0].t.next = self.$cf.t00.val();
-        self.$cx[1].t.next = self.$cf.t10.val();
-        self.$cx[2].t.next = self.$cf.t01.val();
-        self.$cx[3].t.next = self.$cf.t11.val();
+        for k in 0..4 {
+            self.$cx[k].t.next = self.colour_t[k].val();
+        }
         for i in 0..3 {
             self.$cu[i].t00.next = self.$cx[0].c.val().get_bits::<8>(8 * i); // channel i of the widened texel: bit copies
             self.$cu[i].t10.next = self.$cx[1].c.val().get_bits::<8>(8 * i); // likewise
@@ -264,50 +262,20 @@ impl Logic for $t {
         }
         self.c_r.next = self.$cu[0].out.val();
         self.c_g.next = self.$cu[1].out.val();
-        self.c_b.next = self.$cu[2].out.val();
-        // a write leaves as zeros: the path it did not write read a texel, so clear it (the one it wrote gave zeros)
-        self.written.clock.next = self.clock.val();
-        self.wrote_colour.next = self.write_dly.q.val().get_bits::<1>(0) & self.$cs.q.val();
-        self.wrote_bump.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$cs.q.val();
-        self.written.d.next = bit_cast::<2, 1>(self.wrote_colour.val()) | (bit_cast::<2, 1>(self.wrote_bump.val()) << 1);
-        if self.written.q.val().get_bit(0) {
-            self.lo.next = 0.into();
-            self.hi.next = 0.into();
-        }
-        if self.written.q.val().get_bit(1) {
-            self.c_r.next = 0.into();
-            self.c_g.next = 0.into();
-            self.c_b.next = 0.into();
-        })?
+        self.c_b.next = self.$cu[2].out.val();)?
         // or the nearest texel as it is read (bit copies)
         $(self.valid_out.next = self.fetch.valid_out.val();
         self.lo.next = self.fetch.$tx.val().get_bits::<8>(0);
         self.hi.next = self.fetch.$tx.val().get_bits::<8>(8);)?
-        // the colour map beside the nearest texel: its own memory read at the same texel (the footprint's first, t00),
-        // the write it takes picked by wcolour (the bump map's fetch takes the others), widened to three bytes
-        $(self.$nf.clock.next = self.clock.val();
-        self.$ns.clock.next = self.clock.val();
-        self.$ns.d.next = self.wcolour.val();
-        self.$nf.valid_in.next = self.addr.valid_out.val();
-        self.$nf.level_log2.next = self.addr.level_log2.val();
-        self.$nf.x0.next = self.addr.x0.val();
-        self.$nf.x1.next = self.addr.x1.val();
-        self.$nf.y0.next = self.addr.y0.val();
-        self.$nf.y1.next = self.addr.y1.val();
-        self.$nf.we.next = self.write_dly.q.val().get_bits::<1>(0) & self.$ns.q.val();
-        self.fetch.we.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$ns.q.val();
-        self.$nf.w_log2.next = self.write_dly.q.val().get_bits::<4>(1);
-        self.$nf.wx.next = self.write_dly.q.val().get_bits::<8>(5);
-        self.$nf.wy.next = self.write_dly.q.val().get_bits::<8>(13);
-        self.$nf.wdata.next = self.write_dly.q.val().get_bits::<16>(21);
-        self.$nx.t.next = self.$nf.t00.val();
+        // beside the nearest texel: the colour texel at the same place (the footprint's first, t00), widened
+        $(self.$nx.t.next = self.colour_t[0].val();
         self.c_r.next = self.$nx.c.val().get_bits::<8>(0); // bit copies: R, G, B of the widened texel
         self.c_g.next = self.$nx.c.val().get_bits::<8>(8); // likewise
-        self.c_b.next = self.$nx.c.val().get_bits::<8>(16); // likewise
+        self.c_b.next = self.$nx.c.val().get_bits::<8>(16);)? // likewise
         // a write leaves as zeros: the path it did not write read a texel, so clear it (the one it wrote gave zeros)
-        self.written.clock.next = self.clock.val();
-        self.wrote_colour.next = self.write_dly.q.val().get_bits::<1>(0) & self.$ns.q.val();
-        self.wrote_bump.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$ns.q.val();
+        $(self.written.clock.next = self.clock.val();
+        self.wrote_colour.next = self.write_dly.q.val().get_bits::<1>(0) & self.$cs.q.val();
+        self.wrote_bump.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$cs.q.val();
         self.written.d.next = bit_cast::<2, 1>(self.wrote_colour.val()) | (bit_cast::<2, 1>(self.wrote_bump.val()) << 1);
         if self.written.q.val().get_bit(0) {
             self.lo.next = 0.into();
@@ -350,7 +318,8 @@ texture_front! {
     write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
     level: 0,
     unfiltered: { texel: t00 },
-    colour_texel: { fetch: colour_fetch, widen: colour_widen, select: wcolour_dly },
+    colour_map: { fetch: colour_fetch, select: wcolour_dly, written: crate::tex_fetch::LATENCY },
+    colour_texel: { widen: colour_widen },
 }
 
 texture_front! {
@@ -360,7 +329,8 @@ texture_front! {
     write_delay: RamDelay<37, 5, { crate::lod::LATENCY + crate::tex_addr::LATENCY }>,
     lod: { unit: lod, pick: nearest, position: pos_dly },
     unfiltered: { texel: t00 },
-    colour_texel: { fetch: colour_fetch, widen: colour_widen, select: wcolour_dly },
+    colour_map: { fetch: colour_fetch, select: wcolour_dly, written: crate::tex_fetch::LATENCY },
+    colour_texel: { widen: colour_widen },
 }
 
 texture_front! {
@@ -370,7 +340,12 @@ texture_front! {
     write_delay: Delay<Bits<37>, { crate::tex_addr::LATENCY }>,
     level: 0,
     filter: { units: filter, blend: blend_dly, valid: filter_valid },
-    colour: { fetch: colour_fetch, widen: colour_widen, units: colour_filter, select: wcolour_dly, blend: blend_dly },
+    colour_map: {
+        fetch: colour_fetch,
+        select: wcolour_dly,
+        written: crate::tex_fetch::LATENCY + crate::bilinear::LATENCY
+    },
+    colour: { widen: colour_widen, units: colour_filter, blend: blend_dly },
 }
 
 texture_front! {
