@@ -34,9 +34,18 @@ fn tex_fetch_hard_cases() {
 fn tex_fetch_a_whole_chain_written_then_every_footprint_of_every_level() {
     // 21,845 texels written, then every footprint (with its right and lower neighbour, modulo the side) of every
     // level: 21,845 reads, each against the texel pattern the writes put there
-    let mut inputs = load(MAX_LOG_SIDE, pattern);
+    let inputs = whole_chain(MAX_LOG_SIDE, vectors::tex_fetch::run);
+    external::<TexFetch>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::BackToBack)
+        .assert_clean("verilator, a whole chain");
+}
+
+/// A whole chain of a map of side 2^top written (`pattern`), then every footprint (with its right and lower
+/// neighbour, modulo the side) of every level read; the model (`run`) checked to read back the pattern there (the
+/// layout holds every texel apart). The stream, for the rtl.
+fn whole_chain(top: i64, run: fn(&[Vec<i64>]) -> Vec<Vec<i64>>) -> Vec<Vec<i64>> {
+    let mut inputs = load(top, pattern);
     let mut want = vec![];
-    for m in 0..=MAX_LOG_SIDE {
+    for m in 0..=top {
         let side = 1i64 << m;
         for y in 0..side {
             for x in 0..side {
@@ -48,14 +57,12 @@ fn tex_fetch_a_whole_chain_written_then_every_footprint_of_every_level() {
             }
         }
     }
-    // the model itself reads back the pattern: the layout holds every texel apart
-    let got = vectors::tex_fetch::run(&inputs);
+    let got = run(&inputs);
     let reads = &got[got.len() - want.len()..];
     for (k, (g, w)) in reads.iter().zip(&want).enumerate() {
-        assert_eq!(g.as_slice(), w.as_slice(), "read {k}");
+        assert_eq!(g.as_slice(), w.as_slice(), "side 2^{top}, read {k}");
     }
-    external::<TexFetch>(synth::cosim::Simulator::Verilator, &MODEL, &inputs, Bubbles::BackToBack)
-        .assert_clean("verilator, a whole chain");
+    inputs
 }
 
 fn exact_256(v: &[i64]) -> Vec<i64> {
@@ -84,25 +91,7 @@ fn tex_fetch_at_256_three_ways_and_a_whole_256_chain_under_verilator() {
     stream.extend((0..3_000).map(|_| random_256(&mut rng)));
     testbench::three_ways::<TexFetch<0, 15, 8>>(&M256, &stream, "tex_fetch_256");
 
-    let mut inputs = load(8, pattern);
-    let mut want = vec![];
-    for m in 0..=8 {
-        let side = 1i64 << m;
-        for y in 0..side {
-            for x in 0..side {
-                let (xs, ys) = ([x, (x + 1) % side], [y, (y + 1) % side]);
-                inputs.push(read(m, xs, ys));
-                want.push(
-                    [(xs[0], ys[0]), (xs[1], ys[0]), (xs[0], ys[1]), (xs[1], ys[1])].map(|(a, b)| pattern(m, a, b)),
-                );
-            }
-        }
-    }
-    let got = vectors::unit::run_machine::<tf::Chain<8>>(&inputs);
-    let reads = &got[got.len() - want.len()..];
-    for (k, (g, w)) in reads.iter().zip(&want).enumerate() {
-        assert_eq!(g.as_slice(), w.as_slice(), "read {k}");
-    }
+    let inputs = whole_chain(8, vectors::unit::run_machine::<tf::Chain<8>>);
     let built = synth::cosim::build::<TexFetch<0, 15, 8>>(
         synth::cosim::Simulator::Verilator,
         &testbench::work_dir("verilator", "tex_fetch_256_chain"),

@@ -45,18 +45,19 @@ pub fn holds(p: usize, m: usize) -> bool {
 }
 
 crate::block! {
-    /// The level's base (UA) and whether the memory holds it, for a memory of `A`-bit banks holding the levels `P`
-    /// (`bases`): a table of nine constants read by the saturated side log2 m (0 ..= 8). Combinational.
-    pub struct LevelBase<const P: usize, const A: usize> {
+    /// The level's base (U15: the largest, at side 2^8, is 5,462) and whether the memory holds it, for a memory
+    /// holding the levels `P` (`bases`): a table of nine constants read by the saturated side log2 m (0 ..= 8).
+    /// Combinational.
+    pub struct LevelBase<const P: usize> {
         pub m: Signal<In, Bits<4>>,
-        pub base: Signal<Out, Bits<A>>,
+        pub base: Signal<Out, Bits<15>>,
         pub held: Signal<Out, Bit>,
-        tab: [Constant<Bits<A>>; 9],
+        tab: [Constant<Bits<15>>; 9],
         holds: Constant<Bits<16>>,
     }
 }
 
-impl<const P: usize, const A: usize> Default for LevelBase<P, A> {
+impl<const P: usize> Default for LevelBase<P> {
     fn default() -> Self {
         let b = bases(P);
         let mask: u64 = (0..9).filter(|&m| holds(P, m)).map(|m| 1 << m).sum();
@@ -64,14 +65,13 @@ impl<const P: usize, const A: usize> Default for LevelBase<P, A> {
             m: Default::default(),
             base: Default::default(),
             held: Default::default(),
-            // a base past the A-bit banks is never read: the unit's L keeps m below it (`TexFetch` asserts so)
-            tab: std::array::from_fn(|k| Constant::new(Bits::<A>::from(b[k] & ((1 << A) - 1)))),
+            tab: std::array::from_fn(|k| Constant::new(Bits::<15>::from(b[k]))),
             holds: Constant::new(Bits::<16>::from(mask)),
         }
     }
 }
 
-impl<const P: usize, const A: usize> Logic for LevelBase<P, A> {
+impl<const P: usize> Logic for LevelBase<P> {
     #[hdl_gen]
     fn update(&mut self) {
         self.base.next = self.tab[0].val();
@@ -155,8 +155,8 @@ crate::stream_block! {
         /// the four banks, (x mod 2) + 2·(y mod 2), each single-port: a clock reads it or writes it
         pub bank: [SpRam<U16, A>; 4],
         /// the read's and the write's level bases, for the levels the memory holds (`P`)
-        read_base: LevelBase<P, 15>,
-        write_base: LevelBase<P, 15>,
+        read_base: LevelBase<P>,
+        write_base: LevelBase<P>,
         /// the read's and the write's side log2, saturated to L
         read_cap: LevelCap<L>,
         write_cap: LevelCap<L>,
@@ -216,11 +216,11 @@ crate::stream_block! {
         w_wmask: Signal<Local, U8>,
         w_cx: [Signal<Local, U8>; 2],
         w_ry: [Signal<Local, U8>; 2],
-        w_c13: [Signal<Local, Bits<15>>; 2],
-        w_r13: [Signal<Local, Bits<15>>; 2],
+        w_c15: [Signal<Local, Bits<15>>; 2],
+        w_r15: [Signal<Local, Bits<15>>; 2],
         w_rm: [Signal<Local, Bits<15>>; 2],
-        w_wc13: Signal<Local, Bits<15>>,
-        w_wr13: Signal<Local, Bits<15>>,
+        w_wc15: Signal<Local, Bits<15>>,
+        w_wr15: Signal<Local, Bits<15>>,
         w_wrm: Signal<Local, Bits<15>>,
         w_base: Signal<Local, Bits<15>>,
         w_wbase: Signal<Local, Bits<15>>,
@@ -303,15 +303,15 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         }
         // the word column x >> 1 and row y >> 1 (U7 in 15, a slice widened; written out: the loop index does not
         // reach into a function's argument under #[hdl_gen])
-        self.w_c13[0].next = bit_cast::<15, 7>(self.w_cx[0].val().get_bits::<7>(1));
-        self.w_c13[1].next = bit_cast::<15, 7>(self.w_cx[1].val().get_bits::<7>(1));
-        self.w_r13[0].next = bit_cast::<15, 7>(self.w_ry[0].val().get_bits::<7>(1));
-        self.w_r13[1].next = bit_cast::<15, 7>(self.w_ry[1].val().get_bits::<7>(1));
+        self.w_c15[0].next = bit_cast::<15, 7>(self.w_cx[0].val().get_bits::<7>(1));
+        self.w_c15[1].next = bit_cast::<15, 7>(self.w_cx[1].val().get_bits::<7>(1));
+        self.w_r15[0].next = bit_cast::<15, 7>(self.w_ry[0].val().get_bits::<7>(1));
+        self.w_r15[1].next = bit_cast::<15, 7>(self.w_ry[1].val().get_bits::<7>(1));
         for n in 0..2 {
-            self.s2_col[n].d.next = self.w_c13[n].val();
+            self.s2_col[n].d.next = self.w_c15[n].val();
             // (y >> 1)·2^(m−1) as ((y >> 1) << m) >> 1, which is 0 for m = 0 with no case of its own: y >> 1 < 2^m−1
             // so (y >> 1) << m < 2^(2m−1) ≤ 2^15, U15, exact, and the last shift drops a zero
-            self.w_rm[n].next = self.w_r13[n].val() << self.s1_m.q.val();
+            self.w_rm[n].next = self.w_r15[n].val() << self.s1_m.q.val();
             self.s2_row[n].d.next = self.w_rm[n].val() >> 1; // U14, exact
         }
         self.s2_px[0].d.next = self.s1_x[0].q.val().get_bit(0);
@@ -324,10 +324,10 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.s2_base.d.next = self.w_base.val();
         self.s2_rd.d.next = self.s1_rd.q.val() & self.read_base.held.val(); // a level it does not hold reads as zeros
                                                                             // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
-        self.w_wc13.next = bit_cast::<15, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 15
-        self.w_wr13.next = bit_cast::<15, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 15
-        self.s2_wcol.d.next = self.w_wc13.val();
-        self.w_wrm.next = self.w_wr13.val() << self.s1_wm.q.val(); // U15, exact, as the read's
+        self.w_wc15.next = bit_cast::<15, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 15
+        self.w_wr15.next = bit_cast::<15, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 15
+        self.s2_wcol.d.next = self.w_wc15.val();
+        self.w_wrm.next = self.w_wr15.val() << self.s1_wm.q.val(); // U15, exact, as the read's
         self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U14, exact
         self.write_base.m.next = self.s1_wm.q.val(); // m ≤ L ≤ 8
         self.w_wbase.next = self.write_base.base.val();
