@@ -425,6 +425,10 @@ struct State<'a> {
     /// (the assigning block's path, the signal): the exact hull of what they compute
     wraps: HashMap<(String, String), (i128, i128)>,
     changed: bool,
+    /// a count of the changes to `vals`, and the count at each signal's last change: a module whose reads have not
+    /// changed since it was last evaluated would write what it wrote then, so it is not evaluated again
+    tick: u64,
+    changed_at: HashMap<String, u64>,
 }
 
 impl State<'_> {
@@ -446,8 +450,14 @@ impl State<'_> {
         };
         if self.vals.get(name) != Some(&next) {
             self.vals.insert(name.to_string(), next);
-            self.changed = true;
+            self.mark(name);
         }
+    }
+
+    fn mark(&mut self, name: &str) {
+        self.changed = true;
+        self.tick += 1;
+        self.changed_at.insert(name.to_string(), self.tick);
     }
 }
 
@@ -465,6 +475,8 @@ struct Eval<'s, 'a> {
     /// what this path has written so far (the last write wins); a block's own local and output signals read
     /// their write on the path, as rust-hdl's `val()` of a `Local` or `Out` signal returns its `next`
     cur: HashMap<String, Write>,
+    /// the signals whose values so far this evaluation has read
+    reads: std::cell::RefCell<Vec<String>>,
 }
 
 impl Eval<'_, '_> {
@@ -483,7 +495,9 @@ impl Eval<'_, '_> {
                 return Some(self.st.fit(&n, w.0));
             }
         }
-        self.st.vals.get(&n).copied()
+        let v = self.st.vals.get(&n).copied();
+        self.reads.borrow_mut().push(n);
+        v
     }
 
     /// The exact value of an expression over integers, each signal read in its declared format, nothing
@@ -821,11 +835,10 @@ impl Eval<'_, '_> {
             let (mut v, mut ex): (Option<V>, Option<(i128, i128)>) = (None, None);
             for o in &outs {
                 // not written on this branch: what the path wrote before, or the signal's value (which fits)
-                let x = o
-                    .get(n)
-                    .cloned()
-                    .or_else(|| base.get(n).cloned())
-                    .or_else(|| self.st.vals.get(n).map(|v| (*v, None, None)));
+                let x = o.get(n).cloned().or_else(|| base.get(n).cloned()).or_else(|| {
+                    self.reads.borrow_mut().push(n.clone());
+                    self.st.vals.get(n).map(|v| (*v, None, None))
+                });
                 if let Some((xv, xe, _)) = x {
                     v = Some(v.map_or(xv, |a| a.join(xv)));
                     ex = match (ex, xe) {
@@ -859,7 +872,17 @@ pub struct Proof {
 pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&str) -> bool) -> Proof {
     let mut c = Collect::default();
     block.accept("uut", &mut c);
-    let mut st = State { vals: HashMap::new(), widths: &c.widths, signed, wraps: HashMap::new(), changed: false };
+    let mut st = State {
+        vals: HashMap::new(),
+        widths: &c.widths,
+        signed,
+        wraps: HashMap::new(),
+        changed: false,
+        tick: 0,
+        changed_at: HashMap::new(),
+    };
+    // per combinational module: the tick it was last evaluated at and the signals it read then
+    let mut evaluated: Vec<Option<(u64, Vec<String>)>> = vec![None; c.modules.len()];
     for (name, lo, hi) in inputs {
         let n = format!("uut.{name}");
         let bits = c.widths.get(&n).copied().unwrap_or(64);
@@ -875,16 +898,30 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
         sweeps += 1;
         st.changed = false;
         let before = (sweeps >= SWEEPS).then(|| st.vals.clone());
-        for md in &c.modules {
+        for (md, last) in c.modules.iter().zip(evaluated.iter_mut()) {
             let p = md.path.as_str();
             match &md.code {
                 Code::Comb(b) => {
-                    let writes = {
-                        let mut e =
-                            Eval { st: &st, path: p, loops: vec![], refine: HashMap::new(), cur: HashMap::new() };
+                    if let Some((at, reads)) = last {
+                        if reads.iter().all(|n| st.changed_at.get(n).is_none_or(|t| t <= at)) {
+                            continue;
+                        }
+                    }
+                    let (writes, mut reads) = {
+                        let mut e = Eval {
+                            st: &st,
+                            path: p,
+                            loops: vec![],
+                            refine: HashMap::new(),
+                            cur: HashMap::new(),
+                            reads: Default::default(),
+                        };
                         e.block(b);
-                        e.cur
+                        (e.cur, e.reads.into_inner())
                     };
+                    reads.sort_unstable();
+                    reads.dedup();
+                    *last = Some((st.tick, reads));
                     for (n, (v, exact, _)) in writes {
                         if n.ends_with("clock") {
                             continue;
@@ -946,7 +983,8 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
                 st.vals.iter().filter(|(n, v)| before.get(*n) != Some(*v)).map(|(n, _)| n.clone()).collect();
             for n in grew {
                 let bits = st.vals[&n].bits;
-                st.vals.insert(n, V::full(bits));
+                st.vals.insert(n.clone(), V::full(bits));
+                st.mark(&n);
             }
             if sweeps >= 4 * SWEEPS {
                 break;

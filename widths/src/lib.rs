@@ -360,15 +360,20 @@ impl Ranges {
     }
 }
 
+/// The path is only read on the first clock, when the signals are named: later clocks keep no names.
 impl Probe for Ranges {
     fn visit_start_scope(&mut self, name: &str, _node: &dyn Block) {
-        self.path.push(name.to_string());
+        if self.clocks == 0 {
+            self.path.push(name.to_string());
+        }
     }
     fn visit_end_scope(&mut self, _name: &str, _node: &dyn Block) {
         self.path.pop();
     }
     fn visit_start_namespace(&mut self, name: &str, _node: &dyn Block) {
-        self.path.push(name.to_string());
+        if self.clocks == 0 {
+            self.path.push(name.to_string());
+        }
     }
     fn visit_end_namespace(&mut self, _name: &str, _node: &dyn Block) {
         self.path.pop();
@@ -377,7 +382,7 @@ impl Probe for Ranges {
         let Some(v) = Ranges::value(a) else { return };
         let bits = a.bits();
         let s = if bits < 64 && bits > 0 && v >> (bits - 1) & 1 == 1 { v as i64 - (1i64 << bits) } else { v as i64 };
-        if self.next == self.signals.len() {
+        if self.clocks == 0 {
             // the first clock: the signals in visiting order, named as the VCD names them
             let full = format!("{}.{name}", self.path.join("."));
             self.signals.push(Seen { name: full, bits, umin: v, umax: v, smin: s, smax: s });
@@ -443,7 +448,16 @@ impl Analysis {
 pub fn analyse<U: StreamUnit>(m: &UnitModel) -> Analysis {
     let formats = Formats::of::<U>();
     let ports: Vec<(&str, i64, i64)> = m.inputs.iter().map(|p| (p.name, p.range().0, p.range().1)).collect();
-    let signed = |n: &str| formats.format(n).is_some_and(|x| x.signed);
+    // asked for every read of a signal: each path's answer kept (walking a path parses the types along it)
+    let known = std::cell::RefCell::new(HashMap::<String, bool>::new());
+    let signed = |n: &str| {
+        if let Some(&s) = known.borrow().get(n) {
+            return s;
+        }
+        let s = formats.format(n).is_some_and(|x| x.signed);
+        known.borrow_mut().insert(n.to_string(), s);
+        s
+    };
     let proof = bounds::prove(&U::build(), &ports, &signed);
     Analysis { formats, proof }
 }
