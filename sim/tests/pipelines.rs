@@ -41,12 +41,32 @@ const ON_THE_UNIT: &[(&str, bool, &str, bool)] = &[
     ("hemi_oct", true, "trilinear", false),
 ];
 
-/// The pipelines with a colour map, likewise: `cart_tex_<filter>[_surface]_colour`.
+/// The pipelines with a colour map, likewise: `cart_tex_<filter>[_surface][_hemi_oct][_matte]_colour`.
 const WITH_COLOUR: &[(&str, bool, &str, bool)] = &[
     ("seed", false, "bilinear", true),
     ("seed", true, "bilinear", true),
     ("seed", false, "nearest", true),
     ("seed", false, "nearest_mip", true),
+    ("seed", false, "nearest", false),
+    ("hemi_oct", false, "nearest", true),
+    ("hemi_oct", false, "nearest", false),
+    ("seed", true, "nearest", true),
+    ("seed", true, "nearest", false),
+    ("hemi_oct", true, "nearest", true),
+    ("hemi_oct", true, "nearest", false),
+    ("seed", false, "nearest_mip", false),
+    ("hemi_oct", false, "nearest_mip", true),
+    ("hemi_oct", false, "nearest_mip", false),
+    ("seed", true, "nearest_mip", true),
+    ("seed", true, "nearest_mip", false),
+    ("hemi_oct", true, "nearest_mip", true),
+    ("hemi_oct", true, "nearest_mip", false),
+    ("seed", false, "bilinear", false),
+    ("hemi_oct", false, "bilinear", true),
+    ("hemi_oct", false, "bilinear", false),
+    ("seed", true, "bilinear", false),
+    ("hemi_oct", true, "bilinear", true),
+    ("hemi_oct", true, "bilinear", false),
 ];
 
 /// The pipeline a scene's choices name, by the project's naming of its rtl tops; None where the reader refuses.
@@ -66,7 +86,7 @@ fn expected(
     if colour {
         let surface = if per_surface { "_surface" } else { "" };
         let served = WITH_COLOUR.contains(&(encoding, per_surface, filter, gloss)) && fetch != Some("host");
-        return served.then(|| format!("cart_tex_{filter}{surface}_colour"));
+        return served.then(|| format!("cart_tex_{filter}{surface}{hemi}{matte}_colour"));
     }
     if (!cartesian && (filter != "bilinear" || fetch.is_some())) || (fetch == Some("unit") && !on_unit) {
         return None;

@@ -52,7 +52,7 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         assert_eq!(got, p.file_stem().unwrap().to_str().unwrap(), "{}", p.display());
         named += 1;
     }
-    assert_eq!(named, 14);
+    assert_eq!(named, 34);
     // the quad every pipeline is compared on is the default scene; the demo's own is a torus, lit per vertex
     let quad = scene_file::load(&scenes_dir().join("quad.toml")).unwrap();
     let d = Scene::default();

@@ -3,27 +3,40 @@
 //! loaded first); random streams through rust-hdl, and through Verilator after the hard cases have loaded the chain
 //! they read.
 use rtl::cart_tex::{
-    CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearHemiOctMatte, CartTexBilinearMatte,
+    CartTexBilinear, CartTexBilinearColour, CartTexBilinearHemiOct, CartTexBilinearHemiOctColour,
+    CartTexBilinearHemiOctMatte, CartTexBilinearHemiOctMatteColour, CartTexBilinearMatte, CartTexBilinearMatteColour,
     CartTexBilinearSurface, CartTexBilinearSurfaceColour, CartTexBilinearSurfaceHemiOct,
-    CartTexBilinearSurfaceHemiOctMatte, CartTexBilinearSurfaceMatte, CartTexNearest, CartTexNearestColour,
-    CartTexNearestHemiOct, CartTexNearestHemiOctMatte, CartTexNearestMatte, CartTexNearestMip, CartTexNearestMipColour,
-    CartTexNearestMipHemiOct, CartTexNearestMipHemiOctMatte, CartTexNearestMipMatte, CartTexNearestMipSurface,
-    CartTexNearestMipSurfaceHemiOct, CartTexNearestMipSurfaceHemiOctMatte, CartTexNearestMipSurfaceMatte,
-    CartTexNearestSurface, CartTexNearestSurfaceHemiOct, CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceMatte,
-    CartTexTrilinear, CartTexTrilinearHemiOct, CartTexTrilinearHemiOctMatte, CartTexTrilinearMatte,
-    CartTexTrilinearSurface, CartTexTrilinearSurfaceHemiOct, CartTexTrilinearSurfaceHemiOctMatte,
-    CartTexTrilinearSurfaceMatte, CartTexTrilinearTwoPassMatte,
+    CartTexBilinearSurfaceHemiOctColour, CartTexBilinearSurfaceHemiOctMatte, CartTexBilinearSurfaceHemiOctMatteColour,
+    CartTexBilinearSurfaceMatte, CartTexBilinearSurfaceMatteColour, CartTexNearest, CartTexNearestColour,
+    CartTexNearestHemiOct, CartTexNearestHemiOctColour, CartTexNearestHemiOctMatte, CartTexNearestHemiOctMatteColour,
+    CartTexNearestMatte, CartTexNearestMatteColour, CartTexNearestMip, CartTexNearestMipColour,
+    CartTexNearestMipHemiOct, CartTexNearestMipHemiOctColour, CartTexNearestMipHemiOctMatte,
+    CartTexNearestMipHemiOctMatteColour, CartTexNearestMipMatte, CartTexNearestMipMatteColour,
+    CartTexNearestMipSurface, CartTexNearestMipSurfaceColour, CartTexNearestMipSurfaceHemiOct,
+    CartTexNearestMipSurfaceHemiOctColour, CartTexNearestMipSurfaceHemiOctMatte,
+    CartTexNearestMipSurfaceHemiOctMatteColour, CartTexNearestMipSurfaceMatte, CartTexNearestMipSurfaceMatteColour,
+    CartTexNearestSurface, CartTexNearestSurfaceColour, CartTexNearestSurfaceHemiOct,
+    CartTexNearestSurfaceHemiOctColour, CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceHemiOctMatteColour,
+    CartTexNearestSurfaceMatte, CartTexNearestSurfaceMatteColour, CartTexTrilinear, CartTexTrilinearHemiOct,
+    CartTexTrilinearHemiOctMatte, CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearSurfaceHemiOct,
+    CartTexTrilinearSurfaceHemiOctMatte, CartTexTrilinearSurfaceMatte, CartTexTrilinearTwoPassMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, rust_hdl, unit_tests, Bubbles};
 use vectors::cart_tex::{
-    bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_hemi_oct_matte, bilinear_matte, bilinear_surface,
-    bilinear_surface_colour, bilinear_surface_hemi_oct, bilinear_surface_hemi_oct_matte, bilinear_surface_matte,
-    nearest, nearest_colour, nearest_hemi_oct, nearest_hemi_oct_matte, nearest_matte, nearest_mip, nearest_mip_colour,
-    nearest_mip_hemi_oct, nearest_mip_hemi_oct_matte, nearest_mip_matte, nearest_mip_surface,
-    nearest_mip_surface_hemi_oct, nearest_mip_surface_hemi_oct_matte, nearest_mip_surface_matte, nearest_surface,
-    nearest_surface_hemi_oct, nearest_surface_hemi_oct_matte, nearest_surface_matte, trilinear, trilinear_hemi_oct,
-    trilinear_hemi_oct_matte, trilinear_matte, trilinear_surface, trilinear_surface_hemi_oct,
+    bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_hemi_oct_colour, bilinear_hemi_oct_matte,
+    bilinear_hemi_oct_matte_colour, bilinear_matte, bilinear_matte_colour, bilinear_surface, bilinear_surface_colour,
+    bilinear_surface_hemi_oct, bilinear_surface_hemi_oct_colour, bilinear_surface_hemi_oct_matte,
+    bilinear_surface_hemi_oct_matte_colour, bilinear_surface_matte, bilinear_surface_matte_colour, nearest,
+    nearest_colour, nearest_hemi_oct, nearest_hemi_oct_colour, nearest_hemi_oct_matte, nearest_hemi_oct_matte_colour,
+    nearest_matte, nearest_matte_colour, nearest_mip, nearest_mip_colour, nearest_mip_hemi_oct,
+    nearest_mip_hemi_oct_colour, nearest_mip_hemi_oct_matte, nearest_mip_hemi_oct_matte_colour, nearest_mip_matte,
+    nearest_mip_matte_colour, nearest_mip_surface, nearest_mip_surface_colour, nearest_mip_surface_hemi_oct,
+    nearest_mip_surface_hemi_oct_colour, nearest_mip_surface_hemi_oct_matte, nearest_mip_surface_hemi_oct_matte_colour,
+    nearest_mip_surface_matte, nearest_mip_surface_matte_colour, nearest_surface, nearest_surface_colour,
+    nearest_surface_hemi_oct, nearest_surface_hemi_oct_colour, nearest_surface_hemi_oct_matte,
+    nearest_surface_hemi_oct_matte_colour, nearest_surface_matte, nearest_surface_matte_colour, trilinear,
+    trilinear_hemi_oct, trilinear_hemi_oct_matte, trilinear_matte, trilinear_surface, trilinear_surface_hemi_oct,
     trilinear_surface_hemi_oct_matte, trilinear_surface_matte, trilinear_two_pass_matte,
 };
 use vectors::UnitModel;
@@ -84,6 +97,74 @@ unit_tests!(
     cart_tex_trilinear_surface_hemi_oct_matte,
     CartTexTrilinearSurfaceHemiOctMatte,
     trilinear_surface_hemi_oct_matte::MODEL
+);
+unit_tests!(cart_tex_nearest_matte_colour, CartTexNearestMatteColour, nearest_matte_colour::MODEL);
+unit_tests!(cart_tex_nearest_hemi_oct_colour, CartTexNearestHemiOctColour, nearest_hemi_oct_colour::MODEL);
+unit_tests!(
+    cart_tex_nearest_hemi_oct_matte_colour,
+    CartTexNearestHemiOctMatteColour,
+    nearest_hemi_oct_matte_colour::MODEL
+);
+unit_tests!(cart_tex_nearest_surface_colour, CartTexNearestSurfaceColour, nearest_surface_colour::MODEL);
+unit_tests!(
+    cart_tex_nearest_surface_matte_colour,
+    CartTexNearestSurfaceMatteColour,
+    nearest_surface_matte_colour::MODEL
+);
+unit_tests!(
+    cart_tex_nearest_surface_hemi_oct_colour,
+    CartTexNearestSurfaceHemiOctColour,
+    nearest_surface_hemi_oct_colour::MODEL
+);
+unit_tests!(
+    cart_tex_nearest_surface_hemi_oct_matte_colour,
+    CartTexNearestSurfaceHemiOctMatteColour,
+    nearest_surface_hemi_oct_matte_colour::MODEL
+);
+unit_tests!(cart_tex_nearest_mip_matte_colour, CartTexNearestMipMatteColour, nearest_mip_matte_colour::MODEL);
+unit_tests!(cart_tex_nearest_mip_hemi_oct_colour, CartTexNearestMipHemiOctColour, nearest_mip_hemi_oct_colour::MODEL);
+unit_tests!(
+    cart_tex_nearest_mip_hemi_oct_matte_colour,
+    CartTexNearestMipHemiOctMatteColour,
+    nearest_mip_hemi_oct_matte_colour::MODEL
+);
+unit_tests!(cart_tex_nearest_mip_surface_colour, CartTexNearestMipSurfaceColour, nearest_mip_surface_colour::MODEL);
+unit_tests!(
+    cart_tex_nearest_mip_surface_matte_colour,
+    CartTexNearestMipSurfaceMatteColour,
+    nearest_mip_surface_matte_colour::MODEL
+);
+unit_tests!(
+    cart_tex_nearest_mip_surface_hemi_oct_colour,
+    CartTexNearestMipSurfaceHemiOctColour,
+    nearest_mip_surface_hemi_oct_colour::MODEL
+);
+unit_tests!(
+    cart_tex_nearest_mip_surface_hemi_oct_matte_colour,
+    CartTexNearestMipSurfaceHemiOctMatteColour,
+    nearest_mip_surface_hemi_oct_matte_colour::MODEL
+);
+unit_tests!(cart_tex_bilinear_matte_colour, CartTexBilinearMatteColour, bilinear_matte_colour::MODEL);
+unit_tests!(cart_tex_bilinear_hemi_oct_colour, CartTexBilinearHemiOctColour, bilinear_hemi_oct_colour::MODEL);
+unit_tests!(
+    cart_tex_bilinear_hemi_oct_matte_colour,
+    CartTexBilinearHemiOctMatteColour,
+    bilinear_hemi_oct_matte_colour::MODEL
+);
+unit_tests!(
+    cart_tex_bilinear_surface_matte_colour,
+    CartTexBilinearSurfaceMatteColour,
+    bilinear_surface_matte_colour::MODEL
+);
+unit_tests!(
+    cart_tex_bilinear_surface_hemi_oct_colour,
+    CartTexBilinearSurfaceHemiOctColour,
+    bilinear_surface_hemi_oct_colour::MODEL
+);
+unit_tests!(
+    cart_tex_bilinear_surface_hemi_oct_matte_colour,
+    CartTexBilinearSurfaceHemiOctMatteColour,
+    bilinear_surface_hemi_oct_matte_colour::MODEL
 );
 
 /// Random streams through rust-hdl (from an empty memory, which both read as zero), the hard cases with bubbles,
@@ -324,4 +405,104 @@ fn cart_tex_trilinear_surface_hemi_oct_streams() {
 #[test]
 fn cart_tex_trilinear_surface_hemi_oct_matte_streams() {
     three_streams::<CartTexTrilinearSurfaceHemiOctMatte>(&trilinear_surface_hemi_oct_matte::MODEL, 60);
+}
+
+#[test]
+fn cart_tex_nearest_matte_colour_streams() {
+    three_streams::<CartTexNearestMatteColour>(&nearest_matte_colour::MODEL, 61);
+}
+
+#[test]
+fn cart_tex_nearest_hemi_oct_colour_streams() {
+    three_streams::<CartTexNearestHemiOctColour>(&nearest_hemi_oct_colour::MODEL, 62);
+}
+
+#[test]
+fn cart_tex_nearest_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexNearestHemiOctMatteColour>(&nearest_hemi_oct_matte_colour::MODEL, 63);
+}
+
+#[test]
+fn cart_tex_nearest_surface_colour_streams() {
+    three_streams::<CartTexNearestSurfaceColour>(&nearest_surface_colour::MODEL, 64);
+}
+
+#[test]
+fn cart_tex_nearest_surface_matte_colour_streams() {
+    three_streams::<CartTexNearestSurfaceMatteColour>(&nearest_surface_matte_colour::MODEL, 65);
+}
+
+#[test]
+fn cart_tex_nearest_surface_hemi_oct_colour_streams() {
+    three_streams::<CartTexNearestSurfaceHemiOctColour>(&nearest_surface_hemi_oct_colour::MODEL, 66);
+}
+
+#[test]
+fn cart_tex_nearest_surface_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexNearestSurfaceHemiOctMatteColour>(&nearest_surface_hemi_oct_matte_colour::MODEL, 67);
+}
+
+#[test]
+fn cart_tex_nearest_mip_matte_colour_streams() {
+    three_streams::<CartTexNearestMipMatteColour>(&nearest_mip_matte_colour::MODEL, 68);
+}
+
+#[test]
+fn cart_tex_nearest_mip_hemi_oct_colour_streams() {
+    three_streams::<CartTexNearestMipHemiOctColour>(&nearest_mip_hemi_oct_colour::MODEL, 69);
+}
+
+#[test]
+fn cart_tex_nearest_mip_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexNearestMipHemiOctMatteColour>(&nearest_mip_hemi_oct_matte_colour::MODEL, 70);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_colour_streams() {
+    three_streams::<CartTexNearestMipSurfaceColour>(&nearest_mip_surface_colour::MODEL, 71);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_matte_colour_streams() {
+    three_streams::<CartTexNearestMipSurfaceMatteColour>(&nearest_mip_surface_matte_colour::MODEL, 72);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_hemi_oct_colour_streams() {
+    three_streams::<CartTexNearestMipSurfaceHemiOctColour>(&nearest_mip_surface_hemi_oct_colour::MODEL, 73);
+}
+
+#[test]
+fn cart_tex_nearest_mip_surface_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexNearestMipSurfaceHemiOctMatteColour>(&nearest_mip_surface_hemi_oct_matte_colour::MODEL, 74);
+}
+
+#[test]
+fn cart_tex_bilinear_matte_colour_streams() {
+    three_streams::<CartTexBilinearMatteColour>(&bilinear_matte_colour::MODEL, 75);
+}
+
+#[test]
+fn cart_tex_bilinear_hemi_oct_colour_streams() {
+    three_streams::<CartTexBilinearHemiOctColour>(&bilinear_hemi_oct_colour::MODEL, 76);
+}
+
+#[test]
+fn cart_tex_bilinear_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexBilinearHemiOctMatteColour>(&bilinear_hemi_oct_matte_colour::MODEL, 77);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_matte_colour_streams() {
+    three_streams::<CartTexBilinearSurfaceMatteColour>(&bilinear_surface_matte_colour::MODEL, 78);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_hemi_oct_colour_streams() {
+    three_streams::<CartTexBilinearSurfaceHemiOctColour>(&bilinear_surface_hemi_oct_colour::MODEL, 79);
+}
+
+#[test]
+fn cart_tex_bilinear_surface_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexBilinearSurfaceHemiOctMatteColour>(&bilinear_surface_hemi_oct_matte_colour::MODEL, 80);
 }

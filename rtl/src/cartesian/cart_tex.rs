@@ -402,3 +402,221 @@ cartesian_pipeline! {
     mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
 }
+
+// the colour map under the rest of the matrix (texels seed or hemi-oct × lights per vertex or per surface × gloss
+// or matte) for the nearest texel, the nearest MIP level's and bilinear: the colour front's latency is its bump
+// front's, so the light word waits as long as there
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_matte_colour,
+    block: CartTexNearestMatteColour,
+    unit: "cart_tex_nearest_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_hemi_oct_colour,
+    block: CartTexNearestHemiOctColour,
+    unit: "cart_tex_nearest_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_hemi_oct_matte_colour,
+    block: CartTexNearestHemiOctMatteColour,
+    unit: "cart_tex_nearest_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_surface_colour,
+    block: CartTexNearestSurfaceColour,
+    unit: "cart_tex_nearest_surface_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_surface_matte_colour,
+    block: CartTexNearestSurfaceMatteColour,
+    unit: "cart_tex_nearest_surface_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_surface_hemi_oct_colour,
+    block: CartTexNearestSurfaceHemiOctColour,
+    unit: "cart_tex_nearest_surface_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_surface_hemi_oct_matte_colour,
+    block: CartTexNearestSurfaceHemiOctMatteColour,
+    unit: "cart_tex_nearest_surface_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestColour, module: nearest_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_matte_colour,
+    block: CartTexNearestMipMatteColour,
+    unit: "cart_tex_nearest_mip_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_hemi_oct_colour,
+    block: CartTexNearestMipHemiOctColour,
+    unit: "cart_tex_nearest_mip_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_hemi_oct_matte_colour,
+    block: CartTexNearestMipHemiOctMatteColour,
+    unit: "cart_tex_nearest_mip_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_surface_colour,
+    block: CartTexNearestMipSurfaceColour,
+    unit: "cart_tex_nearest_mip_surface_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_surface_matte_colour,
+    block: CartTexNearestMipSurfaceMatteColour,
+    unit: "cart_tex_nearest_mip_surface_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_surface_hemi_oct_colour,
+    block: CartTexNearestMipSurfaceHemiOctColour,
+    unit: "cart_tex_nearest_mip_surface_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: nearest_mip_surface_hemi_oct_matte_colour,
+    block: CartTexNearestMipSurfaceHemiOctMatteColour,
+    unit: "cart_tex_nearest_mip_surface_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexNearestMipColour, module: nearest_mip_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_matte_colour,
+    block: CartTexBilinearMatteColour,
+    unit: "cart_tex_bilinear_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_hemi_oct_colour,
+    block: CartTexBilinearHemiOctColour,
+    unit: "cart_tex_bilinear_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_hemi_oct_matte_colour,
+    block: CartTexBilinearHemiOctMatteColour,
+    unit: "cart_tex_bilinear_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_surface_matte_colour,
+    block: CartTexBilinearSurfaceMatteColour,
+    unit: "cart_tex_bilinear_surface_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_surface_hemi_oct_colour,
+    block: CartTexBilinearSurfaceHemiOctColour,
+    unit: "cart_tex_bilinear_surface_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: bilinear_surface_hemi_oct_matte_colour,
+    block: CartTexBilinearSurfaceHemiOctMatteColour,
+    unit: "cart_tex_bilinear_surface_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}

@@ -640,8 +640,184 @@ textured!(
     src_r: u 8, src_g: u 8, src_b: u 8, dst_r: u 8, dst_g: u 8, dst_b: u 8,
 ]);
 
+textured!(
+    nearest_matte_colour, "cart_tex_nearest_matte_colour", Filter::Nearest,
+    crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_hemi_oct_colour, "cart_tex_nearest_hemi_oct_colour", Filter::Nearest,
+    crate::cart_pipeline::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_hemi_oct_matte_colour, "cart_tex_nearest_hemi_oct_matte_colour", Filter::Nearest,
+    crate::cart_pipeline::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_surface_colour, "cart_tex_nearest_surface_colour", Filter::Nearest,
+    crate::cart_surface::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_surface_matte_colour, "cart_tex_nearest_surface_matte_colour", Filter::Nearest,
+    crate::cart_surface::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_surface_hemi_oct_colour, "cart_tex_nearest_surface_hemi_oct_colour", Filter::Nearest,
+    crate::cart_surface::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_surface_hemi_oct_matte_colour, "cart_tex_nearest_surface_hemi_oct_matte_colour", Filter::Nearest,
+    crate::cart_surface::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_mip_matte_colour, "cart_tex_nearest_mip_matte_colour", Filter::NearestMip,
+    crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_mip_hemi_oct_colour, "cart_tex_nearest_mip_hemi_oct_colour", Filter::NearestMip,
+    crate::cart_pipeline::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_mip_hemi_oct_matte_colour, "cart_tex_nearest_mip_hemi_oct_matte_colour", Filter::NearestMip,
+    crate::cart_pipeline::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_mip_surface_colour, "cart_tex_nearest_mip_surface_colour", Filter::NearestMip,
+    crate::cart_surface::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_mip_surface_matte_colour, "cart_tex_nearest_mip_surface_matte_colour", Filter::NearestMip,
+    crate::cart_surface::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_mip_surface_hemi_oct_colour, "cart_tex_nearest_mip_surface_hemi_oct_colour", Filter::NearestMip,
+    crate::cart_surface::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    nearest_mip_surface_hemi_oct_matte_colour, "cart_tex_nearest_mip_surface_hemi_oct_matte_colour", Filter::NearestMip,
+    crate::cart_surface::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    bilinear_matte_colour, "cart_tex_bilinear_matte_colour", Filter::Bilinear,
+    crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    bilinear_hemi_oct_colour, "cart_tex_bilinear_hemi_oct_colour", Filter::Bilinear,
+    crate::cart_pipeline::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    bilinear_hemi_oct_matte_colour, "cart_tex_bilinear_hemi_oct_matte_colour", Filter::Bilinear,
+    crate::cart_pipeline::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    bilinear_surface_matte_colour, "cart_tex_bilinear_surface_matte_colour", Filter::Bilinear,
+    crate::cart_surface::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    bilinear_surface_hemi_oct_colour, "cart_tex_bilinear_surface_hemi_oct_colour", Filter::Bilinear,
+    crate::cart_surface::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    bilinear_surface_hemi_oct_matte_colour, "cart_tex_bilinear_surface_hemi_oct_matte_colour", Filter::Bilinear,
+    crate::cart_surface::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 37] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 57] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
@@ -699,6 +875,74 @@ pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 37] {
             &trilinear_surface_hemi_oct_matte::MODEL,
             trilinear_surface_hemi_oct_matte::FILTER,
             trilinear_surface_hemi_oct_matte::host(),
+        ),
+        (&nearest_matte_colour::MODEL, nearest_matte_colour::FILTER, nearest_matte_colour::host()),
+        (&nearest_hemi_oct_colour::MODEL, nearest_hemi_oct_colour::FILTER, nearest_hemi_oct_colour::host()),
+        (
+            &nearest_hemi_oct_matte_colour::MODEL,
+            nearest_hemi_oct_matte_colour::FILTER,
+            nearest_hemi_oct_matte_colour::host(),
+        ),
+        (&nearest_surface_colour::MODEL, nearest_surface_colour::FILTER, nearest_surface_colour::host()),
+        (
+            &nearest_surface_matte_colour::MODEL,
+            nearest_surface_matte_colour::FILTER,
+            nearest_surface_matte_colour::host(),
+        ),
+        (
+            &nearest_surface_hemi_oct_colour::MODEL,
+            nearest_surface_hemi_oct_colour::FILTER,
+            nearest_surface_hemi_oct_colour::host(),
+        ),
+        (
+            &nearest_surface_hemi_oct_matte_colour::MODEL,
+            nearest_surface_hemi_oct_matte_colour::FILTER,
+            nearest_surface_hemi_oct_matte_colour::host(),
+        ),
+        (&nearest_mip_matte_colour::MODEL, nearest_mip_matte_colour::FILTER, nearest_mip_matte_colour::host()),
+        (&nearest_mip_hemi_oct_colour::MODEL, nearest_mip_hemi_oct_colour::FILTER, nearest_mip_hemi_oct_colour::host()),
+        (
+            &nearest_mip_hemi_oct_matte_colour::MODEL,
+            nearest_mip_hemi_oct_matte_colour::FILTER,
+            nearest_mip_hemi_oct_matte_colour::host(),
+        ),
+        (&nearest_mip_surface_colour::MODEL, nearest_mip_surface_colour::FILTER, nearest_mip_surface_colour::host()),
+        (
+            &nearest_mip_surface_matte_colour::MODEL,
+            nearest_mip_surface_matte_colour::FILTER,
+            nearest_mip_surface_matte_colour::host(),
+        ),
+        (
+            &nearest_mip_surface_hemi_oct_colour::MODEL,
+            nearest_mip_surface_hemi_oct_colour::FILTER,
+            nearest_mip_surface_hemi_oct_colour::host(),
+        ),
+        (
+            &nearest_mip_surface_hemi_oct_matte_colour::MODEL,
+            nearest_mip_surface_hemi_oct_matte_colour::FILTER,
+            nearest_mip_surface_hemi_oct_matte_colour::host(),
+        ),
+        (&bilinear_matte_colour::MODEL, bilinear_matte_colour::FILTER, bilinear_matte_colour::host()),
+        (&bilinear_hemi_oct_colour::MODEL, bilinear_hemi_oct_colour::FILTER, bilinear_hemi_oct_colour::host()),
+        (
+            &bilinear_hemi_oct_matte_colour::MODEL,
+            bilinear_hemi_oct_matte_colour::FILTER,
+            bilinear_hemi_oct_matte_colour::host(),
+        ),
+        (
+            &bilinear_surface_matte_colour::MODEL,
+            bilinear_surface_matte_colour::FILTER,
+            bilinear_surface_matte_colour::host(),
+        ),
+        (
+            &bilinear_surface_hemi_oct_colour::MODEL,
+            bilinear_surface_hemi_oct_colour::FILTER,
+            bilinear_surface_hemi_oct_colour::host(),
+        ),
+        (
+            &bilinear_surface_hemi_oct_matte_colour::MODEL,
+            bilinear_surface_hemi_oct_matte_colour::FILTER,
+            bilinear_surface_hemi_oct_matte_colour::host(),
         ),
     ]
 }
