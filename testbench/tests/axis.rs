@@ -1,6 +1,7 @@
 //! The AXI4-Stream wrapper around units of several latencies, in rust-hdl: the golden vectors under random gaps and
-//! stalls, the rate it keeps, its minimum depth, a reset in the middle of a stream, and 100,000 random vectors a
-//! family; and the exported wrapper and its bench under Verilator and Icarus.
+//! stalls, the rate it keeps, its minimum depth, a reset in the middle of a stream, and 25,000 random vectors a
+//! family (`BUMPRTL_RUST_HDL_VECTORS=100000` for the full streams); and the exported wrapper and its bench under
+//! Verilator (100,000 a family) and Icarus.
 
 use rtl::axis::{AxisBlock, AxisDut, AxisRunner};
 use rtl::StreamUnit;
