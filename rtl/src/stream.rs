@@ -21,6 +21,11 @@ pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
     /// (the clocks between carry none, `valid_in` low; their data are not read). The harnesses and the AXI4-Stream
     /// wrapper keep that gap.
     const INTERVAL: usize = 1;
+    /// The signals the block's Verilog leaves unused on purpose, each as `instance$port` with the reason: the
+    /// exported `<unit>.vlt` waives them, and the lints hold every other warning an error. Empty for most units.
+    fn waivers() -> Vec<Waiver> {
+        vec![]
+    }
     fn build() -> Self;
     fn set_clock(&mut self, level: bool);
     fn clock_level(&self) -> bool;
@@ -32,11 +37,20 @@ pub trait StreamUnit: Block + Sized + crate::prim::declared::Declared {
     fn outputs(&self) -> Vec<u64>;
 }
 
+/// A lint waiver: the signal as `instance$port`, and why the Verilog leaves it unused.
+pub type Waiver = (&'static str, &'static str);
+
+/// Lists of waivers as one: a part's list is written once for every block holding that part.
+pub fn waivers(lists: &[&[Waiver]]) -> Vec<Waiver> {
+    lists.concat()
+}
+
 /// Declares a unit's block once: its data ports, in the model's order (`in { name: Type, ... }`, then `out { ... }`),
 /// then its inner fields; writes the struct with its clock and valid ports through `crate::block!` (so it is
 /// `#[derive(LogicBlock)]` and `Declared`), and implements `StreamUnit` from the same list, so the harnesses' port
 /// lists and widths cannot drift from the block. The unit's name is an expression (a const-generic block can name
-/// each instance: `if DC { "a_dc" } else { "a" }`).
+/// each instance: `if DC { "a_dc" } else { "a" }`). After the latency, optionally: `map = PORTS` (`StreamUnit::MAP`),
+/// `interval = K` (`StreamUnit::INTERVAL`), `waivers = LIST` (`StreamUnit::waivers`, a slice or a `Vec`).
 /// ```ignore
 /// stream_block! {
 ///     #[derive(Default)]
@@ -57,7 +71,7 @@ macro_rules! stream_block {
     (
         $(#[$attr:meta])*
         pub struct $t:ident $(< $(const $g:ident : $gt:ty $(= $gd:literal)?),* >)?
-            : unit($name:expr, $latency:expr $(, map = $map:expr)? $(, interval = $iv:expr)?) {
+            : unit($name:expr, $latency:expr $(, map = $map:expr)? $(, interval = $iv:expr)? $(, waivers = $w:expr)?) {
             in { $($i:ident : $it:ty),* $(,)? }
             out { $($o:ident : $ot:ty),* $(,)? }
             $($(#[$fa:meta])* $fv:vis $f:ident : $ft:ty),* $(,)?
@@ -82,6 +96,9 @@ macro_rules! stream_block {
             const OUTPUTS: &'static [(&'static str, usize)] = &[$((stringify!($o), <$ot as Synth>::BITS)),*];
             $(const MAP: &'static [&'static str] = $map;)?
             $(const INTERVAL: usize = $iv;)?
+            $(fn waivers() -> Vec<$crate::stream::Waiver> {
+                $w.to_vec()
+            })?
             fn build() -> Self {
                 Self::default()
             }

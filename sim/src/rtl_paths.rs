@@ -35,6 +35,8 @@ pub trait RtlBlock: Sync {
 
 /// A unit's block as every path runs it.
 pub trait RtlPaths: RtlBlock {
+    /// The signals the block's Verilog leaves unused on purpose (`rtl::StreamUnit::waivers`).
+    fn waivers(&self) -> Vec<rtl::stream::Waiver>;
     fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image;
     fn verilator(&self, m: &UnitModel, p: &Prepared, dir: &Path, threads: usize) -> Result<VerilatorRun, String>;
     /// The outputs of `inputs` through rust-hdl, back to back, as values.
@@ -170,6 +172,9 @@ impl<U: StreamUnit + Send + 'static> RtlBlock for Rtl<U> {
 }
 
 impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
+    fn waivers(&self) -> Vec<rtl::stream::Waiver> {
+        U::waivers()
+    }
     fn rust_hdl(&self, m: &UnitModel, p: &Prepared, tick: &dyn Fn(usize)) -> Image {
         render::rust_hdl::<U>(m, p, tick)
     }

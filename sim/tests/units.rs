@@ -1,7 +1,7 @@
 //! The table of units (`sim::units`) against what it stands for: each row's model and rtl block carry its name, its
 //! golden vector file is committed and every committed one has its row, its testbench runs the standard tests,
 //! every waiver it lists names a signal its Verilog really has, and every swept setting builds its own unit inside
-//! the range its model's tests cover.
+//! the range its model's tests cover, with the model's tables (power, sincos, cos_sign).
 use sim::units::{SETTINGS, SOFTWARE_ONLY, UNITS};
 use std::collections::BTreeSet;
 
@@ -129,5 +129,46 @@ fn the_models_tests_of_every_size_cover_every_swept_setting() {
             _ => true,
         };
         assert!(covered, "{} {:?}", s.unit, s.params);
+    }
+}
+
+// The rtl tables of every swept size (the block built with them is the unit's own or the width sweep's) against
+// the model's entries.
+
+#[test]
+fn power_rtl_tables_of_every_swept_size_are_the_models() {
+    for (lf, eb) in sim::units::settings("power").map(|s| s.params) {
+        for (x, &l) in rtl::tables::log2_of(lf as usize).iter().enumerate() {
+            assert_eq!(l as i64, vectors::power::log_entry(x as u64, lf), "L, {lf} fraction bits, x {x}");
+        }
+        let e = rtl::tables::exp2_of(eb as usize);
+        assert_eq!(e.len(), 1 << eb);
+        for (f, &v) in e.iter().enumerate() {
+            assert_eq!(v as i64, vectors::power::exp_entry(f as u64, eb), "E, {eb} bits, f {f}");
+        }
+    }
+}
+
+#[test]
+fn sincos_rtl_entries_are_the_models_for_every_swept_size() {
+    for (tb, w) in sim::units::settings("sincos").map(|s| s.params) {
+        let m = vectors::sincos::elevation_table(vectors::polar_encode::Scale::Seed, tb, w);
+        let r = rtl::tables::elevation(false, tb as usize, w as usize);
+        assert_eq!(r.len(), m.len());
+        for k in 0..m.len() {
+            assert_eq!((r[k].0 as i64, r[k].1 as i64), m[k], "{}x{w}, entry {k}", 1 << tb);
+        }
+    }
+}
+
+#[test]
+fn cos_sign_rtl_entries_are_the_models_for_every_swept_size() {
+    for (tb, w) in sim::units::settings("cos_sign").map(|s| s.params) {
+        let r = rtl::tables::cos_sign(false, tb as usize, w as usize);
+        for (i, e) in r.iter().enumerate() {
+            let d = (i as i64) << (8 - tb);
+            let (m, n) = vectors::cos_sign::exact_with(tb, w, d);
+            assert_eq!((e.0 as i64, e.1), (m, n), "{}x{w}, entry {i}", 1 << tb);
+        }
     }
 }

@@ -7,6 +7,16 @@ use rand::{Rng, SeedableRng};
 use rtl::axis::AxisDut;
 use vectors::UnitModel;
 
+/// One pipeline of each family, and the seed of its random stream: the same stream in rust-hdl, Verilator and
+/// Icarus.
+pub const FAMILIES: [(&str, u64); 5] = [
+    ("cart_pipeline", 21),
+    ("polar_pipeline", 22),
+    ("height_pipeline", 23),
+    ("palette_pipeline", 24),
+    ("cart_tex_trilinear_matte", 25),
+];
+
 /// How the source and the sink behave.
 #[derive(Clone, Copy, Debug)]
 pub struct Traffic {

@@ -170,8 +170,7 @@ pub fn golden(model: &UnitModel) -> (Vec<Vec<i64>>, bool) {
 pub fn lint<U: StreamUnit>() -> Vec<String> {
     let dir = work_dir("lint", U::NAME);
     synth::export::<U>().write(&dir).unwrap_or_else(|e| panic!("{e}"));
-    let waivers =
-        sim::units::find(U::NAME).unwrap_or_else(|| panic!("{} is not in sim::units::UNITS", U::NAME)).waivers();
+    let waivers = U::waivers();
     let file = format!("{}.v", U::NAME);
     let (vlt, mut found) =
         synth::lint::write_waivers(&dir, U::NAME, &[(&file, U::NAME)], &waivers).unwrap_or_else(|e| panic!("{e}"));

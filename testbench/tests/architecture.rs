@@ -30,6 +30,17 @@ fn the_model_and_the_rtl_do_not_depend_on_each_other() {
     assert!(!r.contains(&"vectors".to_string()), "rtl depends on vectors: {r:?}");
 }
 
+/// The testbench's test binary compiles beside `sim`, the longest crate to build, not after it: the lint reads a
+/// unit's waivers from its block (`rtl::StreamUnit::waivers`), and what needs the table of units is tested in
+/// `sim/tests`.
+#[test]
+fn the_testbench_does_not_wait_for_sim() {
+    let text = std::fs::read_to_string(root().join("testbench/Cargo.toml")).unwrap();
+    assert!(dependencies("testbench").contains(&"rtl".to_string()), "the testbench's manifest read");
+    let sim: Vec<&str> = text.lines().filter(|l| l.trim_start().starts_with("sim")).collect();
+    assert!(sim.is_empty(), "testbench/Cargo.toml names sim: {sim:?}");
+}
+
 /// Every file under `dir`, skipping build output (`target/`, and `out/`, the commands' default output folder, both
 /// ignored by git) and version control.
 fn files(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -1,5 +1,5 @@
-//! cos_sign: the cosine unit with its sign, every d three ways, in the unit's size and another; the rtl tables
-//! against the model's for every size of the LUT-size table.
+//! cos_sign: the cosine unit with its sign, every d three ways, in the unit's size and another (the rtl tables of
+//! every swept size against the model's: `sim/tests/units.rs`, beside the table of settings).
 use rtl::cos_sign::{CosSign, CosSignUnit};
 use testbench::{three_ways, unit_tests};
 use vectors::cos_sign::MODEL;
@@ -29,16 +29,4 @@ fn every_d_three_ways_in_two_sizes() {
     let all = (MODEL.exhaustive.unwrap())();
     three_ways::<CosSignUnit>(&MODEL, &all, "cos_sign_256x8");
     three_ways::<CosSign<4, 12>>(&M16X12, &all, "cos_sign_16x12");
-}
-
-#[test]
-fn rtl_entries_are_the_models_for_every_size_of_the_lut_table() {
-    for (tb, w) in sim::units::settings("cos_sign").map(|s| s.params) {
-        let r = rtl::tables::cos_sign(false, tb as usize, w as usize);
-        for (i, e) in r.iter().enumerate() {
-            let d = (i as i64) << (8 - tb);
-            let (m, n) = vectors::cos_sign::exact_with(tb, w, d);
-            assert_eq!((e.0 as i64, e.1), (m, n), "{}x{w}, entry {i}", 1 << tb);
-        }
-    }
 }

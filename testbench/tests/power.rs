@@ -29,17 +29,3 @@ fn other_table_sizes_three_ways() {
         assert!(every.iter().any(|i| (m.exact)(i) != (MODEL.exact)(i)));
     }
 }
-
-#[test]
-fn rtl_tables_of_every_swept_size_are_the_models() {
-    for (lf, eb) in sim::units::settings("power").map(|s| s.params) {
-        for (x, &l) in rtl::tables::log2_of(lf as usize).iter().enumerate() {
-            assert_eq!(l as i64, vectors::power::log_entry(x as u64, lf), "L, {lf} fraction bits, x {x}");
-        }
-        let e = rtl::tables::exp2_of(eb as usize);
-        assert_eq!(e.len(), 1 << eb);
-        for (f, &v) in e.iter().enumerate() {
-            assert_eq!(v as i64, vectors::power::exp_entry(f as u64, eb), "E, {eb} bits, f {f}");
-        }
-    }
-}

@@ -77,15 +77,3 @@ fn other_table_sizes_three_ways() {
     testbench::three_ways::<SinCos<6, 8>>(&M64X8, &all(), "sincos_64x8");
     testbench::three_ways::<SinCos<10, 12>>(&M1024X12, &all(), "sincos_1024x12");
 }
-
-#[test]
-fn rtl_entries_are_the_models_for_every_size_of_the_lut_table() {
-    for (tb, w) in sim::units::settings("sincos").map(|s| s.params) {
-        let m = vectors::sincos::elevation_table(Scale::Seed, tb, w);
-        let r = rtl::tables::elevation(false, tb as usize, w as usize);
-        assert_eq!(r.len(), m.len());
-        for k in 0..m.len() {
-            assert_eq!((r[k].0 as i64, r[k].1 as i64), m[k], "{}x{w}, entry {k}", 1 << tb);
-        }
-    }
-}

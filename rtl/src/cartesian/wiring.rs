@@ -22,6 +22,17 @@
 //!
 //! `cart_pipeline.rs`, `cart_surface.rs` and `cart_tex.rs` invoke it for their blocks.
 
+/// The host-fed filter's two bilinear units (`filter:`), read rounded.
+pub const HOST_FILTER: &[crate::stream::Waiver] = &[
+    ("filter$0$wide", "the texel's components are read rounded, as the colour filter reads them"),
+    ("filter$1$wide", "as filter$0$wide"),
+];
+/// The per-vertex light path (`vertex:`), whose valid chain the bump path's stands for.
+pub const PER_VERTEX: &[crate::stream::Waiver] = &[
+    ("light$valid_out", "the light path runs in lockstep with the bump path, whose valid is used"),
+    ("light_norm$valid_out", "as light$valid_out"),
+];
+
 macro_rules! cartesian_pipeline {
     (colour: { $($c:tt)* }, $($rest:tt)*) => {
         cartesian_pipeline! { @spine colour: { $($c)* }, $($rest)* }
@@ -86,7 +97,18 @@ const MAP_PORTS: &[&str] = {
 crate::stream_block! {
     #[derive(Default)]
     // with the texture unit, its memory's write port is the map stream (the block only ties the group to it)
-    pub struct $t: unit($name, LATENCY $(, map = { let _ = stringify!($pu); MAP_PORTS })? $(, interval = $iv)?) {
+    pub struct $t: unit(
+        $name,
+        LATENCY
+        $(, map = { let _ = stringify!($pu); MAP_PORTS })?
+        $(, interval = $iv)?,
+        // the signals its Verilog leaves unused on purpose: the parts' lists (`StreamUnit::waivers`)
+        waivers = crate::stream::waivers(&[
+            $({ let _ = stringify!($fl); crate::cartesian::wiring::HOST_FILTER },)?
+            $(&$txb::waivers()[..],)?
+            $({ let _ = stringify!($li); crate::cartesian::wiring::PER_VERTEX },)?
+        ])
+    ) {
         in {
             $(t00_x: U8,
             t00_z: U8,

@@ -16,9 +16,16 @@ use rust_hdl::prelude::*;
 pub const AT_NORMAL: usize = 1 + bilinear::LATENCY + 1;
 pub const LATENCY: usize = AT_NORMAL + height_normal::LATENCY + normalise::LATENCY;
 
+/// The signals the block's Verilog leaves unused on purpose (`StreamUnit::waivers`).
+const WAIVERS: &[crate::stream::Waiver] = &[
+    ("unit$0$out", "Blinn's function reads each bilinear unit's exact result; the rounded one is the colour filter's"),
+    ("unit$1$out", "as unit$0$out"),
+    ("unit$2$out", "as unit$0$out"),
+];
+
 crate::stream_block! {
     #[derive(Default)]
-    pub struct BlinnPipeline: unit("blinn_pipeline", LATENCY) {
+    pub struct BlinnPipeline: unit("blinn_pipeline", LATENCY, waivers = WAIVERS) {
         in {
             a: U8,
             b: U8,

@@ -19,9 +19,17 @@ pub const LATENCY: usize = AT_TANGENT + tangent_to_normal::LATENCY;
 // replicate and blend adjust run side by side
 const _: () = assert!(replicate::LATENCY == blend_adjust::LATENCY);
 
+/// The signals the block's Verilog leaves unused on purpose (`StreamUnit::waivers`).
+const WAIVERS: &[crate::stream::Waiver] = &[
+    ("unit$0$out", "the height path reads each bilinear unit's exact result; the rounded one is the colour filter's"),
+    ("unit$1$out", "as unit$0$out"),
+    ("unit$2$out", "as unit$0$out"),
+    ("unit$3$out", "as unit$0$out"),
+];
+
 crate::stream_block! {
     #[derive(Default)]
-    pub struct HeightPipeline: unit("height_pipeline", LATENCY) {
+    pub struct HeightPipeline: unit("height_pipeline", LATENCY, waivers = WAIVERS) {
         in {
             a: U8,
             b: U8,

@@ -25,7 +25,7 @@ pub const fn name(a: usize) -> &'static str {
 
 crate::stream_block! {
     #[derive(Default)]
-    pub struct PalettePipeline<const A: usize, const R: usize>: unit(name(A), LATENCY) {
+    pub struct PalettePipeline<const A: usize, const R: usize>: unit(name(A), LATENCY, waivers = crate::table_builder::WAIVERS) {
         in {
             frame: Bits<1>,
             idx: Bits<A>,

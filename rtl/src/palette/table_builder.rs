@@ -17,9 +17,14 @@ pub const AT_GLOSS: usize = AT_DOT + dot3::LATENCY;
 pub const AT_COLOUR: usize = AT_GLOSS + gloss::LATENCY;
 pub const LATENCY: usize = AT_COLOUR + 3;
 
+/// The signals the block's Verilog leaves unused on purpose (`StreamUnit::waivers`); `palette_pipeline`, which
+/// holds the builder, waives them too.
+pub const WAIVERS: &[crate::stream::Waiver] =
+    &[("diffuse$valid_out", "the two dot products run in lockstep; the highlight's valid is used")];
+
 crate::stream_block! {
     #[derive(Default)]
-    pub struct TableBuilder: unit("table_builder", LATENCY) {
+    pub struct TableBuilder: unit("table_builder", LATENCY, waivers = WAIVERS) {
         in {
             idx: Bits<14>,
             n_x: Sq9_0,

@@ -14,10 +14,16 @@ pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
 pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 20
 pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 25
 
+/// The signals the block's Verilog leaves unused on purpose (`StreamUnit::waivers`).
+const WAIVERS: &[crate::stream::Waiver] = &[(
+    "shader$sum",
+    "polar_shade's S11 before the clamp is an output for tests and waveforms; the pipeline uses the clamped shade",
+)];
+
 crate::stream_block! {
     /// `DC`: the Dreamcast toolchains' angle scale in the shade unit's tables (unit `polar_pipeline_dc`).
     #[derive(Default)]
-    pub struct PolarPipeline<const DC: bool>: unit(if DC { "polar_pipeline_dc" } else { "polar_pipeline" }, LATENCY) {
+    pub struct PolarPipeline<const DC: bool>: unit(if DC { "polar_pipeline_dc" } else { "polar_pipeline" }, LATENCY, waivers = WAIVERS) {
         in {
             s: U8,
             r: U8,

@@ -213,11 +213,22 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
     }
 }
 
+/// The signals the block's Verilog leaves unused on purpose (`StreamUnit::waivers`).
+const WAIVERS: &[crate::stream::Waiver] = &[
+    (
+        "unit$0$wide",
+        "the colour filter reads each bilinear unit's rounded output; the exact one is the height-map path's",
+    ),
+    ("unit$1$wide", "as unit$0$wide"),
+    ("unit$2$wide", "as unit$0$wide"),
+    ("unit$3$wide", "as unit$0$wide"),
+];
+
 crate::stream_block! {
     /// The unit `bilinear`: the colour filter's four bilinear units on R, G, B and A, 8-bit texels, 8-bit blend
     /// positions. `Bilinear<F, D>` keeps the top F bits of each position (truncation) and drops D bits between the
     /// two stages: the unit has F = 8, D = 0; the other settings are the width sweep's.
-    pub struct Bilinear<const F: usize = 8, const D: usize = 0>: unit("bilinear", LATENCY) {
+    pub struct Bilinear<const F: usize = 8, const D: usize = 0>: unit("bilinear", LATENCY, waivers = WAIVERS) {
         in {
             t00_r: U8,
             t00_g: U8,

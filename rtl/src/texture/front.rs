@@ -29,7 +29,63 @@
 pub const COLOUR_MAP: &[&str] = &["we", "wcolour", "w_log2", "wx", "wy", "wdata"];
 
 use crate::prim::q::U16;
+use crate::stream::Waiver;
 use rust_hdl::prelude::*;
+
+// The signals a front's Verilog leaves unused on purpose, a list a part: each front's `waivers()` joins its parts',
+// and the pipeline holding the front waives them (`StreamUnit::waivers`).
+
+/// The bilinear units (`filter:`).
+const BILINEAR: &[Waiver] = &[
+    ("filter$0$wide", "the front's bilinear units, read rounded as in cart_pipeline"),
+    ("filter$1$wide", "as filter$0$wide"),
+];
+/// The colour map's bilinear units (`colour:`).
+const COLOUR: &[Waiver] = &[
+    ("colour_filter$0$wide", "as filter$0$wide: the front reads each colour unit's rounded byte"),
+    ("colour_filter$1$wide", "as colour_filter$0$wide"),
+    ("colour_filter$2$wide", "as colour_filter$0$wide"),
+    ("colour_fetch$valid_out", "the two fetches run in step: the valid chain follows the bump map's"),
+];
+/// The nearest texel (`unfiltered:`).
+const NEAREST: &[Waiver] = &[
+    ("addr$ublend", "the nearest texel needs no blend factors (tex_addr gives 0 for linear = 0)"),
+    ("addr$vblend", "as addr$ublend"),
+    ("fetch$t10", "the nearest texel is the footprint's first, t00; the other three are the bilinear fronts'"),
+    ("fetch$t01", "as fetch$t10"),
+    ("fetch$t11", "as fetch$t10"),
+];
+/// The nearest colour texel (`colour_texel:`): the footprint's first, as the bump texel is.
+const NEAREST_COLOUR: &[Waiver] = &[
+    ("colour_t$1", "the nearest colour texel is the footprint's first, colour_t[0]; the fetch reads four, as fetch"),
+    ("colour_t$2", "as colour_t$1"),
+    ("colour_t$3", "as colour_t$1"),
+    ("colour_fetch$valid_out", "the two fetches run in step: the valid chain follows the bump map's"),
+];
+/// The LOD unit read for the nearest level (`lod:`).
+const NEAREST_MIP: &[Waiver] = &[
+    (
+        "lod$level",
+        "the nearest level is the LOD unit's `nearest`; the floor of lambda and its fraction are trilinear's",
+    ),
+    ("lod$frac", "as lod$level"),
+];
+/// The one-clock trilinear front.
+const TRILINEAR: &[Waiver] = &[
+    ("lod$nearest", "trilinear reads the floor of lambda and its fraction; the nearest level is nearest_mip's"),
+    ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
+    ("filter$1$wide", "as filter$0$wide"),
+    ("filter$2$wide", "as filter$0$wide"),
+    ("filter$3$wide", "as filter$0$wide"),
+    ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
+];
+/// The two-pass trilinear front.
+const TRILINEAR_TWO_PASS: &[Waiver] = &[
+    ("lod$nearest", "as in a one-clock trilinear front"),
+    ("fetch$valid_out", "the front's valid follows each vector's second pass from the address unit, not the fetch's"),
+    ("filter$0$wide", "as in cart_tex_bilinear: the front reads each unit's rounded byte"),
+    ("filter$1$wide", "as filter$0$wide"),
+];
 
 crate::block! {
     /// An RGB565 texel widened to three bytes, R in bits 0..7, G in 8..15, B in 16..23 of `c`, each channel's top
@@ -86,6 +142,19 @@ pub const AT_ADDR: usize = 0 $(+ crate::lod::LATENCY + 0 * stringify!($lod).len(
 pub const AT_FETCH: usize = AT_ADDR + crate::tex_addr::LATENCY;
 pub const AT_FILTER: usize = AT_FETCH + crate::tex_fetch::LATENCY;
 pub const LATENCY: usize = AT_FILTER $(+ crate::bilinear::LATENCY + 0 * stringify!($fl).len())?;
+
+impl $t {
+    /// The signals the front's Verilog leaves unused on purpose, its parts' lists joined.
+    pub fn waivers() -> Vec<crate::stream::Waiver> {
+        crate::stream::waivers(&[
+            $({ let _ = stringify!($fl); super::BILINEAR },)?
+            $({ let _ = stringify!($tx); super::NEAREST },)?
+            $({ let _ = stringify!($lod); super::NEAREST_MIP },)?
+            $({ let _ = stringify!($cu); super::COLOUR },)?
+            $({ let _ = stringify!($nx); super::NEAREST_COLOUR },)?
+        ])
+    }
+}
 
 crate::block! {
     #[derive(Default)]
@@ -662,6 +731,13 @@ pub mod trilinear {
 }
 pub use trilinear::TexTrilinear;
 
+impl TexTrilinear {
+    /// The signals the front's Verilog leaves unused on purpose.
+    pub fn waivers() -> Vec<Waiver> {
+        TRILINEAR.to_vec()
+    }
+}
+
 /// `TexTrilinearTwoPass`: trilinear in two passes of one set of the unit blocks, a pixel taking two clocks (the
 /// k-clock variant beside `TexTrilinear`, which reads both levels in one clock with two sets). The LOD unit gives
 /// ⌊λ⌋, frac(λ) and the second level (`vectors::front::neighbour`), as there. On the clock the LOD unit gives a
@@ -881,3 +957,10 @@ pub mod trilinear_two_pass {
     }
 }
 pub use trilinear_two_pass::TexTrilinearTwoPass;
+
+impl TexTrilinearTwoPass {
+    /// The signals the front's Verilog leaves unused on purpose.
+    pub fn waivers() -> Vec<Waiver> {
+        TRILINEAR_TWO_PASS.to_vec()
+    }
+}
