@@ -27,18 +27,22 @@ pub fn run_jobs(jobs: Vec<Job<'_>>) -> Result<Vec<Vec<(Part, Fit)>>, String> {
                 let bar = multi.add(ProgressBar::new_spinner());
                 bar.enable_steady_tick(std::time::Duration::from_millis(200));
                 let queue = &queue;
-                s.spawn(move || {
-                    let t = std::time::Instant::now();
-                    let say = |m: String| bar.set_message(format!("{m} [{:.0} s]", t.elapsed().as_secs_f64()));
-                    let mut out = Vec::new();
-                    loop {
-                        let next = queue.lock().unwrap_or_else(|e| e.into_inner()).pop_front();
-                        let Some((k, job)) = next else { break };
-                        out.push((k, job(&say)));
-                    }
-                    bar.finish_and_clear();
-                    out
-                })
+                // a job builds its block on this thread's stack (rust-hdl's `Default`): room for the largest
+                let thread = std::thread::Builder::new().stack_size(16 << 20);
+                thread
+                    .spawn_scoped(s, move || {
+                        let t = std::time::Instant::now();
+                        let say = |m: String| bar.set_message(format!("{m} [{:.0} s]", t.elapsed().as_secs_f64()));
+                        let mut out = Vec::new();
+                        loop {
+                            let next = queue.lock().unwrap_or_else(|e| e.into_inner()).pop_front();
+                            let Some((k, job)) = next else { break };
+                            out.push((k, job(&say)));
+                        }
+                        bar.finish_and_clear();
+                        out
+                    })
+                    .expect("a synthesis thread")
             })
             .collect();
         for h in handles {

@@ -682,7 +682,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             if let Some(c) = &colour {
                 let why = match fetch {
                     Some(Fetch::Host) => Some("the host-fed pipelines (fetch = \"host\") take one destination colour; the texture unit holds the colour map".to_string()),
-                    _ if !on_unit => Some(format!("no pipeline on the texture unit with a colour map serves {}; the colour map's pipelines filter with the nearest texel, the nearest MIP level's or bilinear (no trilinear one yet)", unit.describe())),
+                    _ if !on_unit => Some(format!("no pipeline on the texture unit with a colour map serves {}; the colour map's pipelines filter with the nearest texel, the nearest MIP level's, bilinear or trilinear in one clock (no two-pass one)", unit.describe())),
                     _ if !fits => Some(format!("the texture unit's memory holds maps of side 1, 2, 4 … 128; this bump map's side is {side}")),
                     _ => None,
                 };

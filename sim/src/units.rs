@@ -148,6 +148,14 @@ pub static UNITS: &[Unit] = &[
     unit!(map: &vectors::cart_tex::bilinear_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexBilinearSurfaceHemiOctMatte),
     unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOct),
     unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct_matte::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOctMatte),
+    unit!(map: &vectors::cart_tex::trilinear_colour::MODEL, rtl::cart_tex::CartTexTrilinearColour),
+    unit!(map: &vectors::cart_tex::trilinear_matte_colour::MODEL, rtl::cart_tex::CartTexTrilinearMatteColour),
+    unit!(map: &vectors::cart_tex::trilinear_hemi_oct_colour::MODEL, rtl::cart_tex::CartTexTrilinearHemiOctColour),
+    unit!(map: &vectors::cart_tex::trilinear_hemi_oct_matte_colour::MODEL, rtl::cart_tex::CartTexTrilinearHemiOctMatteColour),
+    unit!(map: &vectors::cart_tex::trilinear_surface_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceColour),
+    unit!(map: &vectors::cart_tex::trilinear_surface_matte_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceMatteColour),
+    unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOctColour),
+    unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct_matte_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOctMatteColour),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -67,6 +67,14 @@ const WITH_COLOUR: &[(&str, bool, &str, bool)] = &[
     ("seed", true, "bilinear", false),
     ("hemi_oct", true, "bilinear", true),
     ("hemi_oct", true, "bilinear", false),
+    ("seed", false, "trilinear", true),
+    ("seed", false, "trilinear", false),
+    ("hemi_oct", false, "trilinear", true),
+    ("hemi_oct", false, "trilinear", false),
+    ("seed", true, "trilinear", true),
+    ("seed", true, "trilinear", false),
+    ("hemi_oct", true, "trilinear", true),
+    ("hemi_oct", true, "trilinear", false),
 ];
 
 /// The pipeline a scene's choices name, by the project's naming of its rtl tops; None where the reader refuses.

@@ -52,7 +52,7 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         assert_eq!(got, p.file_stem().unwrap().to_str().unwrap(), "{}", p.display());
         named += 1;
     }
-    assert_eq!(named, 34);
+    assert_eq!(named, 42);
     // the quad every pipeline is compared on is the default scene; the demo's own is a torus, lit per vertex
     let quad = scene_file::load(&scenes_dir().join("quad.toml")).unwrap();
     let d = Scene::default();
@@ -669,13 +669,17 @@ fn a_colour_map_picks_the_colour_pipeline_and_bad_ones_are_one_line_at_the_field
     let at = "s.toml:7:14:"; // one [bump] line more
     refused(&with_colour(&rgb, "encoding = \"polar\"\n", "[light]\nper = \"surface\"\n"), at, &["only the Cartesian"]);
     refused(
-        &with_colour(&rgb, "filter = \"trilinear\"\n", "gloss = 0\n"),
+        &with_colour(&rgb, "filter = \"trilinear_two_pass\"\n", "gloss = 0\n"),
         at,
-        &["no pipeline on the texture unit with a colour map"],
+        &["no pipeline on the texture unit with a colour map", "no two-pass one"],
     );
     refused(&with_colour(&rgb, "fetch = \"host\"\n", ""), at, &["host-fed"]);
-    // the nearest texel and the nearest MIP level's, with gloss and lights per vertex, have a colour path
-    for (filter, want) in [("nearest", "cart_tex_nearest_colour"), ("nearest_mip", "cart_tex_nearest_mip_colour")] {
+    // the nearest texel, the nearest MIP level's and trilinear, with gloss and lights per vertex, have a colour path
+    for (filter, want) in [
+        ("nearest", "cart_tex_nearest_colour"),
+        ("nearest_mip", "cart_tex_nearest_mip_colour"),
+        ("trilinear", "cart_tex_trilinear_colour"),
+    ] {
         let s = parse(&with_colour(&rgb, &format!("filter = \"{filter}\"\n"), "")).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(s.pipeline.name, want);
     }

@@ -17,9 +17,12 @@ use rtl::cart_tex::{
     CartTexNearestMipSurfaceHemiOctMatteColour, CartTexNearestMipSurfaceMatte, CartTexNearestMipSurfaceMatteColour,
     CartTexNearestSurface, CartTexNearestSurfaceColour, CartTexNearestSurfaceHemiOct,
     CartTexNearestSurfaceHemiOctColour, CartTexNearestSurfaceHemiOctMatte, CartTexNearestSurfaceHemiOctMatteColour,
-    CartTexNearestSurfaceMatte, CartTexNearestSurfaceMatteColour, CartTexTrilinear, CartTexTrilinearHemiOct,
-    CartTexTrilinearHemiOctMatte, CartTexTrilinearMatte, CartTexTrilinearSurface, CartTexTrilinearSurfaceHemiOct,
-    CartTexTrilinearSurfaceHemiOctMatte, CartTexTrilinearSurfaceMatte, CartTexTrilinearTwoPassMatte,
+    CartTexNearestSurfaceMatte, CartTexNearestSurfaceMatteColour, CartTexTrilinear, CartTexTrilinearColour,
+    CartTexTrilinearHemiOct, CartTexTrilinearHemiOctColour, CartTexTrilinearHemiOctMatte,
+    CartTexTrilinearHemiOctMatteColour, CartTexTrilinearMatte, CartTexTrilinearMatteColour, CartTexTrilinearSurface,
+    CartTexTrilinearSurfaceColour, CartTexTrilinearSurfaceHemiOct, CartTexTrilinearSurfaceHemiOctColour,
+    CartTexTrilinearSurfaceHemiOctMatte, CartTexTrilinearSurfaceHemiOctMatteColour, CartTexTrilinearSurfaceMatte,
+    CartTexTrilinearSurfaceMatteColour, CartTexTrilinearTwoPassMatte,
 };
 use rtl::StreamUnit;
 use testbench::{external, random_vs_model, unit_tests, Bubbles};
@@ -36,8 +39,11 @@ use vectors::cart_tex::{
     nearest_mip_surface_matte, nearest_mip_surface_matte_colour, nearest_surface, nearest_surface_colour,
     nearest_surface_hemi_oct, nearest_surface_hemi_oct_colour, nearest_surface_hemi_oct_matte,
     nearest_surface_hemi_oct_matte_colour, nearest_surface_matte, nearest_surface_matte_colour, trilinear,
-    trilinear_hemi_oct, trilinear_hemi_oct_matte, trilinear_matte, trilinear_surface, trilinear_surface_hemi_oct,
-    trilinear_surface_hemi_oct_matte, trilinear_surface_matte, trilinear_two_pass_matte,
+    trilinear_colour, trilinear_hemi_oct, trilinear_hemi_oct_colour, trilinear_hemi_oct_matte,
+    trilinear_hemi_oct_matte_colour, trilinear_matte, trilinear_matte_colour, trilinear_surface,
+    trilinear_surface_colour, trilinear_surface_hemi_oct, trilinear_surface_hemi_oct_colour,
+    trilinear_surface_hemi_oct_matte, trilinear_surface_hemi_oct_matte_colour, trilinear_surface_matte,
+    trilinear_surface_matte_colour, trilinear_two_pass_matte,
 };
 use vectors::UnitModel;
 
@@ -165,6 +171,30 @@ unit_tests!(
     cart_tex_bilinear_surface_hemi_oct_matte_colour,
     CartTexBilinearSurfaceHemiOctMatteColour,
     bilinear_surface_hemi_oct_matte_colour::MODEL
+);
+unit_tests!(cart_tex_trilinear_colour, CartTexTrilinearColour, trilinear_colour::MODEL);
+unit_tests!(cart_tex_trilinear_matte_colour, CartTexTrilinearMatteColour, trilinear_matte_colour::MODEL);
+unit_tests!(cart_tex_trilinear_hemi_oct_colour, CartTexTrilinearHemiOctColour, trilinear_hemi_oct_colour::MODEL);
+unit_tests!(
+    cart_tex_trilinear_hemi_oct_matte_colour,
+    CartTexTrilinearHemiOctMatteColour,
+    trilinear_hemi_oct_matte_colour::MODEL
+);
+unit_tests!(cart_tex_trilinear_surface_colour, CartTexTrilinearSurfaceColour, trilinear_surface_colour::MODEL);
+unit_tests!(
+    cart_tex_trilinear_surface_matte_colour,
+    CartTexTrilinearSurfaceMatteColour,
+    trilinear_surface_matte_colour::MODEL
+);
+unit_tests!(
+    cart_tex_trilinear_surface_hemi_oct_colour,
+    CartTexTrilinearSurfaceHemiOctColour,
+    trilinear_surface_hemi_oct_colour::MODEL
+);
+unit_tests!(
+    cart_tex_trilinear_surface_hemi_oct_matte_colour,
+    CartTexTrilinearSurfaceHemiOctMatteColour,
+    trilinear_surface_hemi_oct_matte_colour::MODEL
 );
 
 /// Random streams through rust-hdl (from an empty memory, which both read as zero), and a long random stream under
@@ -505,4 +535,44 @@ fn cart_tex_bilinear_surface_hemi_oct_colour_streams() {
 #[test]
 fn cart_tex_bilinear_surface_hemi_oct_matte_colour_streams() {
     three_streams::<CartTexBilinearSurfaceHemiOctMatteColour>(&bilinear_surface_hemi_oct_matte_colour::MODEL, 80);
+}
+
+#[test]
+fn cart_tex_trilinear_colour_streams() {
+    three_streams::<CartTexTrilinearColour>(&trilinear_colour::MODEL, 81);
+}
+
+#[test]
+fn cart_tex_trilinear_matte_colour_streams() {
+    three_streams::<CartTexTrilinearMatteColour>(&trilinear_matte_colour::MODEL, 82);
+}
+
+#[test]
+fn cart_tex_trilinear_hemi_oct_colour_streams() {
+    three_streams::<CartTexTrilinearHemiOctColour>(&trilinear_hemi_oct_colour::MODEL, 83);
+}
+
+#[test]
+fn cart_tex_trilinear_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexTrilinearHemiOctMatteColour>(&trilinear_hemi_oct_matte_colour::MODEL, 84);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_colour_streams() {
+    three_streams::<CartTexTrilinearSurfaceColour>(&trilinear_surface_colour::MODEL, 85);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_matte_colour_streams() {
+    three_streams::<CartTexTrilinearSurfaceMatteColour>(&trilinear_surface_matte_colour::MODEL, 86);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_hemi_oct_colour_streams() {
+    three_streams::<CartTexTrilinearSurfaceHemiOctColour>(&trilinear_surface_hemi_oct_colour::MODEL, 87);
+}
+
+#[test]
+fn cart_tex_trilinear_surface_hemi_oct_matte_colour_streams() {
+    three_streams::<CartTexTrilinearSurfaceHemiOctMatteColour>(&trilinear_surface_hemi_oct_matte_colour::MODEL, 88);
 }

@@ -620,3 +620,97 @@ cartesian_pipeline! {
     texture: { block: TexBilinearColour, module: bilinear_colour, u: u, v: v },
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
 }
+
+// the colour map under the trilinear front (texels seed or hemi-oct × lights per vertex or per surface × gloss or
+// matte): the colour memory split by level parity as the bump map's, both levels filtered and blended by frac(λ)
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_colour,
+    block: CartTexTrilinearColour,
+    unit: "cart_tex_trilinear_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_matte_colour,
+    block: CartTexTrilinearMatteColour,
+    unit: "cart_tex_trilinear_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_hemi_oct_colour,
+    block: CartTexTrilinearHemiOctColour,
+    unit: "cart_tex_trilinear_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_hemi_oct_matte_colour,
+    block: CartTexTrilinearHemiOctMatteColour,
+    unit: "cart_tex_trilinear_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_surface_colour,
+    block: CartTexTrilinearSurfaceColour,
+    unit: "cart_tex_trilinear_surface_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_surface_matte_colour,
+    block: CartTexTrilinearSurfaceMatteColour,
+    unit: "cart_tex_trilinear_surface_matte_colour",
+    decode: { block: CartDecode, module: cart_decode, u: texel_x, v: texel_z },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_surface_hemi_oct_colour,
+    block: CartTexTrilinearSurfaceHemiOctColour,
+    unit: "cart_tex_trilinear_surface_hemi_oct_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+    gloss: { unit: gloss, c: conc, delay: conc_dly },
+}
+
+cartesian_pipeline! {
+    colour: { select: wcolour, delay: colour_dly },
+    module: trilinear_surface_hemi_oct_matte_colour,
+    block: CartTexTrilinearSurfaceHemiOctMatteColour,
+    unit: "cart_tex_trilinear_surface_hemi_oct_matte_colour",
+    decode: { block: CartDecodeHemiOct, module: cart_decode_hemi_oct, u: texel_u, v: texel_v },
+    texture: { block: TexTrilinearColour, module: trilinear_colour, u: u, v: v },
+    mip: { derivatives: [du_dx, dv_dx, du_dy, dv_dy], bias: lod_bias },
+    surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
+}

@@ -62,7 +62,7 @@ use crate::{bilinear::BilinearUnit, dot3::Dot3, gloss::Gloss, light_iter::LightI
 #[allow(unused_imports)]
 use crate::texture::front::{
     TexBilinear, TexBilinearColour, TexNearest, TexNearestColour, TexNearestMip, TexNearestMipColour, TexTrilinear,
-    TexTrilinearTwoPass,
+    TexTrilinearColour, TexTrilinearTwoPass,
 };
 #[allow(unused_imports)]
 use crate::{delayed_blend::DelayedBlend, prim::{delay::Delay, q::{S8, Sq1_10, Sq11_8, Sq3_8, Sq7_2, Sq8_8, Sq9_0, U16, U8}, ram_delay::RamDelay}};

@@ -19,6 +19,9 @@
 //!   three more bilinear units (R, G, B) on the bump texel's blend factors;
 //! - `colour_texel:` (with `unfiltered:`) the colour texel at the bump texel's place, widened, not filtered.
 //!
+//! `trilinear_front!` writes the one-clock trilinear front, two sets of the blocks (`TexTrilinear`), and with its
+//! `colour:` group the same with a colour map (`TexTrilinearColour`); `TexTrilinearTwoPass` is written out.
+//!
 //! Ports (every front): the position u, v (Sq11.8, texels of level 0), the map's side log2 and the two wrap modes
 //! (per frame), and the memory's write port (we, w_log2, wx, wy, wdata: `tex_fetch`'s). Outputs: `lo` and `hi`, the
 //! texel's two bytes (filtered, or the nearest texel's). A write is a vector of its own, in order with the reads:
@@ -78,6 +81,17 @@ const TRILINEAR: &[Waiver] = &[
     ("filter$2$wide", "as filter$0$wide"),
     ("filter$3$wide", "as filter$0$wide"),
     ("fetch_odd$valid_out", "the two fetches run in step: the valid chain follows the even one's"),
+];
+/// The one-clock trilinear front's colour map.
+const TRILINEAR_COLOUR: &[Waiver] = &[
+    ("colour_filter$0$wide", "as filter$0$wide: the front reads each colour unit's rounded byte"),
+    ("colour_filter$1$wide", "as colour_filter$0$wide"),
+    ("colour_filter$2$wide", "as colour_filter$0$wide"),
+    ("colour_filter$3$wide", "as colour_filter$0$wide"),
+    ("colour_filter$4$wide", "as colour_filter$0$wide"),
+    ("colour_filter$5$wide", "as colour_filter$0$wide"),
+    ("colour_even$valid_out", "the fetches run in step: the valid chain follows the bump map's even one"),
+    ("colour_odd$valid_out", "as colour_even$valid_out"),
 ];
 /// The two-pass trilinear front.
 const TRILINEAR_TWO_PASS: &[Waiver] = &[
@@ -499,17 +513,25 @@ pub mod level {
 }
 pub use level::LevelLerp;
 
-/// `TexTrilinear`: the trilinear front, two sets of the unit blocks side by side, one a level: the LOD unit gives
-/// ⌊λ⌋ and frac(λ); the second level is ⌊λ⌋ + 1, or at the last level (where frac(λ) is 0) ⌊λ⌋ − 1
-/// (`vectors::front::neighbour`). Two levels a step apart have sides of different parity (log2), so the map is
-/// split by it (the parity split: a bank has one read port, and two footprints a clock would otherwise need two
-/// copies of the memory): one fetch holds the levels of even side log2 (`TexFetch<EVEN, 11>`) and the other the
-/// odd ones (`TexFetch<ODD, 13>`), each taking the writes of its own levels from the one write port; each address
-/// unit reads the level its fetch holds, and each fetch feeds two bilinear units; then each byte of the two levels
-/// (⌊λ⌋'s picked by the parity it had) is blended by frac(λ): `round_half_up(b₀·2^8 + (b₁ − b₀)·f, 8)` (U8,
-/// `vectors::front::lerp`). Ports as `TexNearestMip`'s.
-pub mod trilinear {
+macro_rules! trilinear_front {
+    (
+        $(#[$attr:meta])*
+        module: $m:ident,
+        block: $t:ident
+        $(, colour: {
+            select: $cs:ident,
+            fetches: [$ce:ident, $co:ident],
+            widen: $cx:ident,
+            units: $cu:ident,
+            lerp: $cl:ident
+        })?
+        $(,)?
+    ) => {
+$(#[$attr])*
+pub mod $m {
     use super::level::{LevelLerp, LERP_LATENCY};
+    #[allow(unused_imports)] // a front with a colour map widens its texels
+    use super::Rgb565;
     use crate::prim::delay::Delay;
     use crate::prim::q::{Sq11_8, Sq3_8, Sq8_8, U16, U8};
     use crate::prim::ram_delay::RamDelay;
@@ -527,7 +549,7 @@ pub mod trilinear {
 
     crate::block! {
         #[derive(Default)]
-        pub struct TexTrilinear {
+        pub struct $t {
             pub clock: Signal<In, Clock>,
             pub valid_in: Signal<In, Bit>,
             pub u: Signal<In, Sq11_8>,
@@ -571,10 +593,25 @@ pub mod trilinear {
             // the blend of the two levels, a byte each (low, high)
             lerp: [LevelLerp; 2],
             lerp_valid: Delay<Bit, LERP_LATENCY>,
+            // the colour map: its memory split by level parity as the bump map's, read at the same footprints
+            $(pub wcolour: Signal<In, Bits<1>>,
+            $cs: Delay<Bits<1>, AT_FETCH>, // wcolour, beside the write
+            pub $ce: TexFetch<EVEN, EVEN_ADDR_BITS>, // the colour levels of even side log2
+            pub $co: TexFetch<ODD, 13>,               // the odd ones
+            $cx: [Rgb565; 8], // the even fetch's four texels widened, then the odd one's
+            pub $cu: [BilinearUnit<8, 8>; 6], // the even level's R, G, B, then the odd level's
+            $cl: [LevelLerp; 3], // R, G, B: the blend of the two levels
+            // (a write to the colour map, a write to the bump map) from the fetches to the front's output
+            written: Delay<Bits<2>, { LATENCY - AT_FETCH }>,
+            wrote_colour: Signal<Local, Bits<1>>,
+            wrote_bump: Signal<Local, Bits<1>>,
+            pub c_r: Signal<Out, U8>,
+            pub c_g: Signal<Out, U8>,
+            pub c_b: Signal<Out, U8>,)?
         }
     }
 
-    impl Logic for TexTrilinear {
+    impl Logic for $t {
         #[hdl_gen]
         fn update(&mut self) {
             self.lod.clock.next = self.clock.val();
@@ -726,16 +763,166 @@ pub mod trilinear {
             self.valid_out.next = self.lerp_valid.q.val();
             self.lo.next = self.lerp[0].out.val();
             self.hi.next = self.lerp[1].out.val();
+            // the colour map: a write goes to its memories where wcolour is set, else to the bump map's; its two fetches
+            // read at the bump map's footprints, each feeding three bilinear units (R, G, B) on that level's blend factors
+            $(self.$cs.clock.next = self.clock.val();
+            self.$cs.d.next = self.wcolour.val();
+            self.fetch_even.we.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$cs.q.val(); // 1 bit: the bump map's
+            self.fetch_odd.we.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$cs.q.val(); // 1 bit: the bump map's
+            self.$ce.clock.next = self.clock.val();
+            self.$ce.valid_in.next = self.addr[0].valid_out.val();
+            self.$ce.level_log2.next = self.addr[0].level_log2.val();
+            self.$ce.x0.next = self.addr[0].x0.val();
+            self.$ce.x1.next = self.addr[0].x1.val();
+            self.$ce.y0.next = self.addr[0].y0.val();
+            self.$ce.y1.next = self.addr[0].y1.val();
+            self.$ce.we.next = self.write_dly.q.val().get_bits::<1>(0) & self.$cs.q.val(); // 1 bit: the colour map's
+            self.$ce.w_log2.next = self.write_dly.q.val().get_bits::<4>(1); // bit copies
+            self.$ce.wx.next = self.write_dly.q.val().get_bits::<8>(5); // bit copies
+            self.$ce.wy.next = self.write_dly.q.val().get_bits::<8>(13); // bit copies
+            self.$ce.wdata.next = self.write_dly.q.val().get_bits::<16>(21); // bit copies
+            self.$co.clock.next = self.clock.val();
+            self.$co.valid_in.next = self.addr[1].valid_out.val();
+            self.$co.level_log2.next = self.addr[1].level_log2.val();
+            self.$co.x0.next = self.addr[1].x0.val();
+            self.$co.x1.next = self.addr[1].x1.val();
+            self.$co.y0.next = self.addr[1].y0.val();
+            self.$co.y1.next = self.addr[1].y1.val();
+            self.$co.we.next = self.write_dly.q.val().get_bits::<1>(0) & self.$cs.q.val(); // 1 bit: the colour map's
+            self.$co.w_log2.next = self.write_dly.q.val().get_bits::<4>(1); // bit copies
+            self.$co.wx.next = self.write_dly.q.val().get_bits::<8>(5); // bit copies
+            self.$co.wy.next = self.write_dly.q.val().get_bits::<8>(13); // bit copies
+            self.$co.wdata.next = self.write_dly.q.val().get_bits::<16>(21); // bit copies
+            // each texel's RGB565 widened to three bytes (bit copies), even fetch's first
+            self.$cx[0].t.next = self.$ce.t00.val();
+            self.$cx[1].t.next = self.$ce.t10.val();
+            self.$cx[2].t.next = self.$ce.t01.val();
+            self.$cx[3].t.next = self.$ce.t11.val();
+            self.$cx[4].t.next = self.$co.t00.val();
+            self.$cx[5].t.next = self.$co.t10.val();
+            self.$cx[6].t.next = self.$co.t01.val();
+            self.$cx[7].t.next = self.$co.t11.val();
+            for i in 0..6 {
+                self.$cu[i].clock.next = self.clock.val();
+            }
+            // unit 3k + c: channel c of fetch k's four widened texels (bit copies), on level k's blend factors (bit copies)
+            self.$cu[0].ublend.next = self.blend_dly[0].q.val().get_bits::<8>(0);
+            self.$cu[0].vblend.next = self.blend_dly[0].q.val().get_bits::<8>(8);
+            self.$cu[0].t00.next = self.$cx[0].c.val().get_bits::<8>(0);
+            self.$cu[0].t10.next = self.$cx[1].c.val().get_bits::<8>(0);
+            self.$cu[0].t01.next = self.$cx[2].c.val().get_bits::<8>(0);
+            self.$cu[0].t11.next = self.$cx[3].c.val().get_bits::<8>(0);
+            self.$cu[1].ublend.next = self.blend_dly[0].q.val().get_bits::<8>(0);
+            self.$cu[1].vblend.next = self.blend_dly[0].q.val().get_bits::<8>(8);
+            self.$cu[1].t00.next = self.$cx[0].c.val().get_bits::<8>(8);
+            self.$cu[1].t10.next = self.$cx[1].c.val().get_bits::<8>(8);
+            self.$cu[1].t01.next = self.$cx[2].c.val().get_bits::<8>(8);
+            self.$cu[1].t11.next = self.$cx[3].c.val().get_bits::<8>(8);
+            self.$cu[2].ublend.next = self.blend_dly[0].q.val().get_bits::<8>(0);
+            self.$cu[2].vblend.next = self.blend_dly[0].q.val().get_bits::<8>(8);
+            self.$cu[2].t00.next = self.$cx[0].c.val().get_bits::<8>(16);
+            self.$cu[2].t10.next = self.$cx[1].c.val().get_bits::<8>(16);
+            self.$cu[2].t01.next = self.$cx[2].c.val().get_bits::<8>(16);
+            self.$cu[2].t11.next = self.$cx[3].c.val().get_bits::<8>(16);
+            self.$cu[3].ublend.next = self.blend_dly[1].q.val().get_bits::<8>(0);
+            self.$cu[3].vblend.next = self.blend_dly[1].q.val().get_bits::<8>(8);
+            self.$cu[3].t00.next = self.$cx[4].c.val().get_bits::<8>(0);
+            self.$cu[3].t10.next = self.$cx[5].c.val().get_bits::<8>(0);
+            self.$cu[3].t01.next = self.$cx[6].c.val().get_bits::<8>(0);
+            self.$cu[3].t11.next = self.$cx[7].c.val().get_bits::<8>(0);
+            self.$cu[4].ublend.next = self.blend_dly[1].q.val().get_bits::<8>(0);
+            self.$cu[4].vblend.next = self.blend_dly[1].q.val().get_bits::<8>(8);
+            self.$cu[4].t00.next = self.$cx[4].c.val().get_bits::<8>(8);
+            self.$cu[4].t10.next = self.$cx[5].c.val().get_bits::<8>(8);
+            self.$cu[4].t01.next = self.$cx[6].c.val().get_bits::<8>(8);
+            self.$cu[4].t11.next = self.$cx[7].c.val().get_bits::<8>(8);
+            self.$cu[5].ublend.next = self.blend_dly[1].q.val().get_bits::<8>(0);
+            self.$cu[5].vblend.next = self.blend_dly[1].q.val().get_bits::<8>(8);
+            self.$cu[5].t00.next = self.$cx[4].c.val().get_bits::<8>(16);
+            self.$cu[5].t10.next = self.$cx[5].c.val().get_bits::<8>(16);
+            self.$cu[5].t01.next = self.$cx[6].c.val().get_bits::<8>(16);
+            self.$cu[5].t11.next = self.$cx[7].c.val().get_bits::<8>(16);
+            // the blend of the two levels per channel, ⌊λ⌋'s from the fetch of its parity, as the bump texel's bytes
+            if self.odd_first_dly.q.val() {
+                self.$cl[0].b0.next = self.$cu[3].out.val();
+                self.$cl[0].b1.next = self.$cu[0].out.val();
+                self.$cl[1].b0.next = self.$cu[4].out.val();
+                self.$cl[1].b1.next = self.$cu[1].out.val();
+                self.$cl[2].b0.next = self.$cu[5].out.val();
+                self.$cl[2].b1.next = self.$cu[2].out.val();
+            } else {
+                self.$cl[0].b0.next = self.$cu[0].out.val();
+                self.$cl[0].b1.next = self.$cu[3].out.val();
+                self.$cl[1].b0.next = self.$cu[1].out.val();
+                self.$cl[1].b1.next = self.$cu[4].out.val();
+                self.$cl[2].b0.next = self.$cu[2].out.val();
+                self.$cl[2].b1.next = self.$cu[5].out.val();
+            }
+            for c in 0..3 {
+                self.$cl[c].clock.next = self.clock.val();
+                self.$cl[c].f.next = self.frac_dly.q.val();
+            }
+            self.c_r.next = self.$cl[0].out.val();
+            self.c_g.next = self.$cl[1].out.val();
+            self.c_b.next = self.$cl[2].out.val();
+            // a write leaves as zeros: the path it did not write read a texel, so clear it (the one it wrote gave zeros)
+            self.written.clock.next = self.clock.val();
+            self.wrote_colour.next = self.write_dly.q.val().get_bits::<1>(0) & self.$cs.q.val();
+            self.wrote_bump.next = self.write_dly.q.val().get_bits::<1>(0) & !self.$cs.q.val();
+            self.written.d.next = bit_cast::<2, 1>(self.wrote_colour.val()) | (bit_cast::<2, 1>(self.wrote_bump.val()) << 1);
+            if self.written.q.val().get_bit(0) {
+                self.lo.next = 0.into();
+                self.hi.next = 0.into();
+            }
+            if self.written.q.val().get_bit(1) {
+                self.c_r.next = 0.into();
+                self.c_g.next = 0.into();
+                self.c_b.next = 0.into();
+            })?
         }
     }
 }
-pub use trilinear::TexTrilinear;
+pub use $m::$t;
 
-impl TexTrilinear {
+impl $t {
     /// The signals the front's Verilog leaves unused on purpose.
     pub fn waivers() -> Vec<Waiver> {
-        TRILINEAR.to_vec()
+        crate::stream::waivers(&[TRILINEAR $(, { let _ = stringify!($cu); TRILINEAR_COLOUR })?])
     }
+}
+    };
+}
+
+trilinear_front! {
+    /// `TexTrilinear`: the trilinear front, two sets of the unit blocks side by side, one a level: the LOD unit gives
+    /// ⌊λ⌋ and frac(λ); the second level is ⌊λ⌋ + 1, or at the last level (where frac(λ) is 0) ⌊λ⌋ − 1
+    /// (`vectors::front::neighbour`). Two levels a step apart have sides of different parity (log2), so the map is
+    /// split by it (the parity split: a bank has one read port, and two footprints a clock would otherwise need two
+    /// copies of the memory): one fetch holds the levels of even side log2 (`TexFetch<EVEN, 11>`) and the other the
+    /// odd ones (`TexFetch<ODD, 13>`), each taking the writes of its own levels from the one write port; each address
+    /// unit reads the level its fetch holds, and each fetch feeds two bilinear units; then each byte of the two levels
+    /// (⌊λ⌋'s picked by the parity it had) is blended by frac(λ): `round_half_up(b₀·2^8 + (b₁ − b₀)·f, 8)` (U8,
+    /// `vectors::front::lerp`). Ports as `TexNearestMip`'s.
+    module: trilinear,
+    block: TexTrilinear,
+}
+
+trilinear_front! {
+    /// `TexTrilinearColour`: `TexTrilinear` with a colour map (as `TexBilinearColour` beside `TexBilinear`): its
+    /// RGB565 memory split by level parity as the bump map's (two more fetches, `wcolour` picking the memories a
+    /// write goes to), read at the same two footprints, each texel widened to three bytes, six more bilinear units
+    /// (R, G, B a level) on the levels' blend factors, and the two levels' channels blended by frac(λ) as the bump
+    /// texel's bytes are. Outputs `c_r`, `c_g`, `c_b` in step with `lo` and `hi` (`vectors::front`); a write leaves
+    /// as zeros on every output.
+    module: trilinear_colour,
+    block: TexTrilinearColour,
+    colour: {
+        select: wcolour_dly,
+        fetches: [colour_even, colour_odd],
+        widen: colour_widen,
+        units: colour_filter,
+        lerp: colour_lerp
+    },
 }
 
 /// `TexTrilinearTwoPass`: trilinear in two passes of one set of the unit blocks, a pixel taking two clocks (the

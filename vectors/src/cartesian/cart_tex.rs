@@ -816,8 +816,82 @@ textured!(
     l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
 ]);
 
+textured!(trilinear_colour, "cart_tex_trilinear_colour", Filter::Trilinear, crate::cart_pipeline::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    trilinear_matte_colour, "cart_tex_trilinear_matte_colour", Filter::Trilinear,
+    crate::cart_pipeline::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    trilinear_hemi_oct_colour, "cart_tex_trilinear_hemi_oct_colour", Filter::Trilinear,
+    crate::cart_pipeline::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    trilinear_hemi_oct_matte_colour, "cart_tex_trilinear_hemi_oct_matte_colour", Filter::Trilinear,
+    crate::cart_pipeline::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l0_x: s 8, l0_y: s 8, l0_z: s 8, l1_x: s 8, l1_y: s 8, l1_z: s 8, l2_x: s 8, l2_y: s 8, l2_z: s 8,
+    w1: u 9, w2: u 9, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    trilinear_surface_colour, "cart_tex_trilinear_surface_colour", Filter::Trilinear,
+    crate::cart_surface::MODEL, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    trilinear_surface_matte_colour, "cart_tex_trilinear_surface_matte_colour", Filter::Trilinear,
+    crate::cart_surface::MODEL_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    trilinear_surface_hemi_oct_colour, "cart_tex_trilinear_surface_hemi_oct_colour", Filter::Trilinear,
+    crate::cart_surface::MODEL_HEMI_OCT, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, conc: u 8, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
+textured!(
+    trilinear_surface_hemi_oct_matte_colour, "cart_tex_trilinear_surface_hemi_oct_matte_colour", Filter::Trilinear,
+    crate::cart_surface::MODEL_HEMI_OCT_MATTE, inputs: [
+    u: s 20, v: s 20, log_side: u 4, uwrap: u 1, vwrap: u 1, we: u 1, w_log2: u 4, wx: u 8, wy: u 8, wdata: u 16,
+    wcolour: u 1,
+    du_dx: s 17, dv_dx: s 17, du_dy: s 17, dv_dy: s 17, lod_bias: s 12,
+    l_x: s 12, l_y: s 12, l_z: s 12, mode: u 1, src_r: u 8, src_g: u 8, src_b: u 8,
+]);
+
 /// Every textured pipeline's model, its filter and its host.
-pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 57] {
+pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 65] {
     [
         (&bilinear::MODEL, bilinear::FILTER, bilinear::host()),
         (&bilinear_matte::MODEL, bilinear_matte::FILTER, bilinear_matte::host()),
@@ -943,6 +1017,30 @@ pub fn all() -> [(&'static UnitModel, Filter, &'static UnitModel); 57] {
             &bilinear_surface_hemi_oct_matte_colour::MODEL,
             bilinear_surface_hemi_oct_matte_colour::FILTER,
             bilinear_surface_hemi_oct_matte_colour::host(),
+        ),
+        (&trilinear_colour::MODEL, trilinear_colour::FILTER, trilinear_colour::host()),
+        (&trilinear_matte_colour::MODEL, trilinear_matte_colour::FILTER, trilinear_matte_colour::host()),
+        (&trilinear_hemi_oct_colour::MODEL, trilinear_hemi_oct_colour::FILTER, trilinear_hemi_oct_colour::host()),
+        (
+            &trilinear_hemi_oct_matte_colour::MODEL,
+            trilinear_hemi_oct_matte_colour::FILTER,
+            trilinear_hemi_oct_matte_colour::host(),
+        ),
+        (&trilinear_surface_colour::MODEL, trilinear_surface_colour::FILTER, trilinear_surface_colour::host()),
+        (
+            &trilinear_surface_matte_colour::MODEL,
+            trilinear_surface_matte_colour::FILTER,
+            trilinear_surface_matte_colour::host(),
+        ),
+        (
+            &trilinear_surface_hemi_oct_colour::MODEL,
+            trilinear_surface_hemi_oct_colour::FILTER,
+            trilinear_surface_hemi_oct_colour::host(),
+        ),
+        (
+            &trilinear_surface_hemi_oct_matte_colour::MODEL,
+            trilinear_surface_hemi_oct_matte_colour::FILTER,
+            trilinear_surface_hemi_oct_matte_colour::host(),
         ),
     ]
 }

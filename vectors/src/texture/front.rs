@@ -126,13 +126,15 @@ impl At {
 }
 
 /// One front and its memory (and with a colour map the colour's), from reset (empty, zero memories). Trilinear's
-/// bump map is split by level parity (`tex_fetch::Levels`): `mem` holds the even levels and `odd` the odd ones.
+/// maps are split by level parity (`tex_fetch::Levels`): `mem` holds the bump map's even levels and `odd` its odd
+/// ones, `colour` and `colour_odd` the colour map's.
 #[derive(Clone)]
 pub struct Front {
     pub filter: Filter,
     pub mem: tex_fetch::Memory,
     pub odd: Option<tex_fetch::Memory>,
     pub colour: Option<tex_fetch::Memory>,
+    pub colour_odd: Option<tex_fetch::Memory>,
 }
 
 impl Front {
@@ -144,8 +146,9 @@ impl Front {
                 mem: Memory::holding(Levels::Even),
                 odd: Some(Memory::holding(Levels::Odd)),
                 colour: None,
+                colour_odd: None,
             },
-            _ => Front { filter, mem: Memory::default(), odd: None, colour: None },
+            _ => Front { filter, mem: Memory::default(), odd: None, colour: None, colour_odd: None },
         }
     }
 
@@ -155,21 +158,36 @@ impl Front {
     pub fn in_passes(filter: Filter, passes: usize) -> Front {
         match passes {
             1 => Front::new(filter),
-            _ => Front { filter, mem: tex_fetch::Memory::default(), odd: None, colour: None },
+            _ => Front { filter, mem: tex_fetch::Memory::default(), odd: None, colour: None, colour_odd: None },
         }
     }
 
-    /// A front with a colour map's memory beside the bump map's.
+    /// A front with a colour map's memory beside the bump map's, split by level parity as the bump map's is.
     pub fn with_colour(filter: Filter) -> Front {
-        Front { colour: Some(tex_fetch::Memory::default()), ..Front::new(filter) }
+        use tex_fetch::{Levels, Memory};
+        let bump = Front::new(filter);
+        match bump.odd {
+            Some(_) => Front {
+                colour: Some(Memory::holding(Levels::Even)),
+                colour_odd: Some(Memory::holding(Levels::Odd)),
+                ..bump
+            },
+            None => Front { colour: Some(Memory::default()), ..bump },
+        }
     }
 
-    /// The bump map's memory that holds MIP level `level` (an index, 0 the largest) of a map of side 2^log_side:
-    /// with the parity split the one of the parity of its side's log2, log_side − level.
-    fn bump(&self, level: i64, log_side: i64) -> &tex_fetch::Memory {
-        match &self.odd {
+    /// Of a map's memories (`even`, and with the parity split `odd`), the one that holds MIP level `level` (an
+    /// index, 0 the largest) of a map of side 2^log_side: with the split the one of the parity of its side's log2,
+    /// log_side − level.
+    fn half<'a>(
+        even: &'a tex_fetch::Memory,
+        odd: Option<&'a tex_fetch::Memory>,
+        level: i64,
+        log_side: i64,
+    ) -> &'a tex_fetch::Memory {
+        match odd {
             Some(odd) if (log_side - level).rem_euclid(2) == 1 => odd,
-            _ => &self.mem,
+            _ => even,
         }
     }
 
@@ -239,7 +257,12 @@ impl Front {
             // keeps the levels it holds)
             let (m, x, y, t) = (v[at.w_log2], v[at.wx], v[at.wy], v[at.wdata]);
             match (&mut self.colour, Front::writes_colour(v, at)) {
-                (Some(c), true) => c.write(m, x, y, t),
+                (Some(c), true) => {
+                    c.write(m, x, y, t);
+                    if let Some(odd) = &mut self.colour_odd {
+                        odd.write(m, x, y, t);
+                    }
+                }
                 _ => {
                     self.mem.write(m, x, y, t);
                     if let Some(odd) = &mut self.odd {
@@ -257,7 +280,8 @@ impl Front {
     pub fn read_colour(&self, v: &[i64], at: &At) -> [i64; 3] {
         let Some(mem) = &self.colour else { return [0; 3] };
         let (levels, frac) = self.levels(v, at);
-        let b = levels.iter().map(|&l| self.sample_in(mem, v, at, l, 3)).collect::<Vec<_>>();
+        let half = |l| Front::half(mem, self.colour_odd.as_ref(), l, v[at.log_side]);
+        let b = levels.iter().map(|&l| self.sample_in(half(l), v, at, l, 3)).collect::<Vec<_>>();
         match b[..] {
             [ref one] => [one[0], one[1], one[2]],
             [ref b0, ref b1] => [0, 1, 2].map(|c| lerp(b0[c], b1[c], frac)),
@@ -278,7 +302,7 @@ impl Front {
 
     /// The texel's two bytes at one level: filtered, or the nearest texel's.
     fn sample(&self, v: &[i64], at: &At, level: i64) -> [i64; 2] {
-        let b = self.sample_in(self.bump(level, v[at.log_side]), v, at, level, 2);
+        let b = self.sample_in(Front::half(&self.mem, self.odd.as_ref(), level, v[at.log_side]), v, at, level, 2);
         [b[0], b[1]]
     }
 
