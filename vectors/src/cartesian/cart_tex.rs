@@ -140,12 +140,43 @@ pub fn colour_pattern(m: i64, x: i64, y: i64) -> i64 {
     (pattern(m, x, y) as u16).reverse_bits() as i64
 }
 
+/// Which map sides the front's sweep of the hard cases reads: `Every` side up to 2^REGION_LOG2, or only the two
+/// `Ends` of that range (the 1 × 1 map and the largest).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sweep {
+    Every,
+    Ends,
+}
+
+impl Sweep {
+    /// The sweep of a textured pipeline: every side on the front's plain pipeline (the host `cart_pipeline`, with
+    /// or without a colour map; the two-pass front, which has one pipeline), the ends on the others. The front, its
+    /// address unit and its memories are the same blocks in every pipeline of one filter, so the sides in between
+    /// are read once a front; a pipeline with another host (matte, hemi-octahedral, vertex lights) keeps every edge
+    /// of the position, the wrap and λ at both ends of the sides, and its host's own hard cases.
+    pub fn of(host: &UnitModel, passes: usize) -> Sweep {
+        if host.name == crate::cart_pipeline::MODEL.name || passes > 1 {
+            Sweep::Every
+        } else {
+            Sweep::Ends
+        }
+    }
+
+    fn sides(self) -> Vec<i64> {
+        match self {
+            Sweep::Every => (0..=REGION_LOG2).collect(),
+            Sweep::Ends => vec![0, REGION_LOG2],
+        }
+    }
+}
+
 /// The hard cases: the region's chain loaded (with a colour map, the colour chain too); each of the host's hard
-/// cases with its texel (and its destination colour, as RGB565) written into the 1 × 1 map and read from it; then on the loaded chain (its 1 × 1 level written back), for every map side up to
-/// 2^REGION_LOG2, both wraps and both ends of each axis, the positions at the seam and the clamp edge (the first
-/// and last texel's centres and ends, a step either side); with a MIP filter, derivatives that put λ below 0, at
-/// each level, half way and past the last level, zero and the largest.
-pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i64>> {
+/// cases with its texel (and its destination colour, as RGB565) written into the 1 × 1 map and read from it; then on
+/// the loaded chain (its 1 × 1 level written back), for the map sides `sweep` names, both wraps and both ends of
+/// each axis, the positions at the seam and the clamp edge (the first and last texel's centres and ends, a step
+/// either side); with a MIP filter, derivatives that put λ below 0, at each level, half way and past the last
+/// level, zero and the largest.
+pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port], sweep: Sweep) -> Vec<Vec<i64>> {
     let at = At::of(ports, filter.mip());
     let hosts = (host.hard_cases)();
     let base = from_host(host, ports, &hosts[0]);
@@ -212,7 +243,7 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port]) -> Vec<Vec<i
     } else {
         vec![[0; 4]]
     };
-    for s in 0..=REGION_LOG2 {
+    for s in sweep.sides() {
         let side = 256i64 << s;
         let ends = [
             0,
@@ -336,7 +367,7 @@ macro_rules! textured {
                 random(FILTER, host(), INPUTS, rng)
             }
             fn hard() -> Vec<Vec<i64>> {
-                hard_cases(FILTER, host(), INPUTS)
+                hard_cases(FILTER, host(), INPUTS, Sweep::of(host(), PASSES))
             }
             pub static MODEL: UnitModel =
                 UnitModel::new($name, (INPUTS, OUTPUTS), exact, random_vector, hard).with_stream::<Unit>();
