@@ -140,8 +140,8 @@ pub fn colour_pattern(m: i64, x: i64, y: i64) -> i64 {
     (pattern(m, x, y) as u16).reverse_bits() as i64
 }
 
-/// Which map sides the front's sweep of the hard cases reads: `Every` side up to 2^REGION_LOG2, or only the two
-/// `Ends` of that range (the 1 × 1 map and the largest).
+/// Which map sides the front's sweep of the hard cases reads: `Every` side up to 2^REGION_LOG2, or the `Ends` of
+/// that range (the 1 × 1 and the 2 × 2 map, and the largest).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Sweep {
     Every,
@@ -153,7 +153,8 @@ impl Sweep {
     /// or without a colour map; the two-pass front, which has one pipeline), the ends on the others. The front, its
     /// address unit and its memories are the same blocks in every pipeline of one filter, so the sides in between
     /// are read once a front; a pipeline with another host (matte, hemi-octahedral, vertex lights) keeps every edge
-    /// of the position, the wrap and λ at both ends of the sides, and its host's own hard cases.
+    /// of the position, the wrap and λ (each level among them) at the ends of the sides, and its host's own hard
+    /// cases.
     pub fn of(host: &UnitModel, passes: usize) -> Sweep {
         if host.name == crate::cart_pipeline::MODEL.name || passes > 1 {
             Sweep::Every
@@ -165,7 +166,7 @@ impl Sweep {
     fn sides(self) -> Vec<i64> {
         match self {
             Sweep::Every => (0..=REGION_LOG2).collect(),
-            Sweep::Ends => vec![0, REGION_LOG2],
+            Sweep::Ends => vec![0, 1, REGION_LOG2],
         }
     }
 }
