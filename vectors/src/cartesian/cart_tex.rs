@@ -1186,6 +1186,34 @@ mod tests {
         }
     }
 
+    #[test]
+    fn every_pipeline_sweeps_the_1_2_and_16_texel_maps_and_every_front_one_pipeline_every_side() {
+        // the sides a pipeline's hard cases read at the seam and the clamp edge: both wraps, one per axis
+        let swept = |m: &UnitModel| -> std::collections::BTreeSet<i64> {
+            let at = At::of(m.inputs, m.inputs.iter().any(|p| p.name == "du_dx"));
+            let reads: Vec<Vec<i64>> = (m.hard_cases)().into_iter().filter(|i| i[at.we] == 0).collect();
+            let wrapped = |i: &Vec<i64>, w: [i64; 2]| i[at.uwrap] == w[0] && i[at.vwrap] == w[1];
+            (0..=REGION_LOG2)
+                .filter(|s| {
+                    let at_side: Vec<&Vec<i64>> = reads.iter().filter(|i| i[at.log_side] == *s).collect();
+                    at_side.iter().any(|i| wrapped(i, [1, 0])) && at_side.iter().any(|i| wrapped(i, [0, 1]))
+                })
+                .collect()
+        };
+        let every: std::collections::BTreeSet<i64> = (0..=REGION_LOG2).collect();
+        let mut fronts_with_every_side = std::collections::BTreeSet::new();
+        for (m, f, _) in all() {
+            let sides = swept(m);
+            assert!([0, 1, REGION_LOG2].iter().all(|s| sides.contains(s)), "{}: {sides:?}", m.name);
+            if sides == every {
+                fronts_with_every_side.insert((format!("{f:?}"), m.name.contains("two_pass")));
+            }
+        }
+        let fronts: std::collections::BTreeSet<_> =
+            all().iter().map(|(m, f, _)| (format!("{f:?}"), m.name.contains("two_pass"))).collect();
+        assert_eq!(fronts_with_every_side, fronts);
+    }
+
     /// RGB565 widened back to bytes: every code's byte is within one of its exact value c·255/31 (or /63), the
     /// ends exact; an 8-bit colour packed and widened is within half a 5-bit step (4.1) or 6-bit step (2.0) and that
     /// one: 5 and 3 LSB.
