@@ -1,7 +1,7 @@
 //! Synthesis results kept under a content hash of everything that made them: the Verilog (with its wrapper), the
 //! target part and clock, the flow's own settings, and the tools' versions as the tools print them. A rerun, another
-//! output folder, or another worker of a sweep sharing the folder reuses a result whose inputs have not changed; a
-//! new yosys or nextpnr makes a new key rather than a stale hit.
+//! output folder, or another worker of a sweep sharing the folder reuses a result whose inputs have not changed (and
+//! waits for one another process is making); a new yosys or nextpnr makes a new key rather than a stale hit.
 //!
 //! The store is a folder of files `<hash>.<kind>`, written whole or not at all: `$BUMPRTL_SYNTH_CACHE`, else the
 //! workspace's `target/synth-cache`.
@@ -67,6 +67,15 @@ pub fn put(key: &str, kind: &str, value: &str) -> Result<(), String> {
     put_in(&root(), key, kind, value)
 }
 
+/// Held while the result of `kind` under `key` is made: another process that wants the same result (a test beside
+/// this one, a worker of the same sweep) waits for it and then reads it, rather than running the tools again
+/// alongside. A lock file beside the result, released when dropped or when the process dies.
+pub fn making(key: &str, kind: &str) -> Result<crate::export::FolderLock, String> {
+    let dir = root();
+    std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create the synthesis cache {}: {e}", dir.display()))?;
+    crate::export::FolderLock::take_file(&dir.join(format!(".{key}.{kind}.lock")))
+}
+
 fn get_in(dir: &std::path::Path, key: &str, kind: &str) -> Option<String> {
     std::fs::read_to_string(dir.join(format!("{key}.{kind}"))).ok()
 }
@@ -88,6 +97,23 @@ fn put_in(dir: &std::path::Path, key: &str, kind: &str, value: &str) -> Result<(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_result_being_made_keeps_another_process_waiting_until_the_maker_is_done() {
+        let key = hash("a result being made, in the cache's own test");
+        let lock = root().join(format!(".{key}.cells.lock"));
+        // whether another process (util-linux's `flock -n`) could take the lock now
+        let free = || match std::process::Command::new("flock").args(["-n", "-E", "3"]).arg(&lock).arg("true").status()
+        {
+            Ok(s) if s.code() == Some(0) => true,
+            Ok(s) if s.code() == Some(3) => false,
+            other => panic!("flock: {other:?}"),
+        };
+        let making = making(&key, "cells").unwrap();
+        assert!(!free(), "another process could make the result while this one was making it");
+        drop(making);
+        assert!(free(), "the lock outlived its maker");
+    }
 
     #[test]
     fn the_hash_is_fnv_1a_128() {

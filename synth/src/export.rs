@@ -84,12 +84,16 @@ pub struct FolderLock {
 impl FolderLock {
     pub fn take(dir: &Path) -> Result<FolderLock, String> {
         std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-        let path = dir.join(".lock");
+        FolderLock::take_file(&dir.join(".lock"))
+    }
+
+    /// The lock on the file `path` itself (created if need be; its folder must exist).
+    pub fn take_file(path: &Path) -> Result<FolderLock, String> {
         let file = std::fs::OpenOptions::new()
             .create(true)
             .truncate(false)
             .write(true)
-            .open(&path)
+            .open(path)
             .map_err(|e| format!("cannot open {}: {e}", path.display()))?;
         file.lock().map_err(|e| format!("cannot lock {}: {e}", path.display()))?;
         Ok(FolderLock { _file: file })

@@ -503,7 +503,13 @@ fn cached_cells(
         _ => None,
     };
     let text = |c: &Cells| format!("{} {} {} {} {} {} {}", c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, c.spram);
-    if let Some(c) = cache::get(&key, "cells").as_deref().and_then(read) {
+    let cached = || cache::get(&key, "cells").as_deref().and_then(read);
+    if let Some(c) = cached() {
+        write_atomic(&saved, text(&c).as_bytes())?;
+        return Ok(c);
+    }
+    let _making = cache::making(&key, "cells")?;
+    if let Some(c) = cached() {
         write_atomic(&saved, text(&c).as_bytes())?;
         return Ok(c);
     }
@@ -797,10 +803,19 @@ pub fn synth_and_place<U: StreamUnit>(
     let yosys = tools::toolchain().yosys();
     let key = |seed: u32| cache::key(&format!("{inputs}\nseed {seed}"), &[&yosys, &pnr]);
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    let mut have: Vec<SynthReport> = (1..=seeds.n)
-        .filter_map(|s| cache::get(&key(s), "placement").as_deref().and_then(SynthReport::from_text))
-        .filter(|r| r.placements == 1)
-        .collect();
+    let cached = || -> Vec<SynthReport> {
+        (1..=seeds.n)
+            .filter_map(|s| cache::get(&key(s), "placement").as_deref().and_then(SynthReport::from_text))
+            .filter(|r| r.placements == 1)
+            .collect()
+    };
+    let mut have = cached();
+    let mut _making = None;
+    if have.len() < seeds.least as usize {
+        // another process placing the same design waits for these placements, and this one for its
+        _making = Some(cache::making(&key(0), "placement")?);
+        have = cached();
+    }
     let want = (seeds.least as usize).saturating_sub(have.len());
     let missing: Vec<u32> = (1..=seeds.n).filter(|s| !have.iter().any(|r| r.seed == *s)).take(want).collect();
     if !missing.is_empty() {
