@@ -4,7 +4,7 @@
 //! waits for one another process is making); a new yosys or nextpnr makes a new key rather than a stale hit.
 //!
 //! The store is a folder of files `<hash>.<kind>`, written whole or not at all: `$BUMPRTL_SYNTH_CACHE`, else the
-//! workspace's `target/synth-cache`.
+//! workspace's `target/synth-cache`. Its `locks/` folder holds a lock file per result ever made (see `making`).
 
 use std::collections::HashMap;
 use std::path::PathBuf;
@@ -69,11 +69,12 @@ pub fn put(key: &str, kind: &str, value: &str) -> Result<(), String> {
 
 /// Held while the result of `kind` under `key` is made: another process that wants the same result (a test beside
 /// this one, a worker of the same sweep) waits for it and then reads it, rather than running the tools again
-/// alongside. A lock file beside the result, released when dropped or when the process dies.
+/// alongside. A lock file of the same name in the store's `locks/` folder, released when dropped or when the process
+/// dies.
 pub fn making(key: &str, kind: &str) -> Result<crate::export::FolderLock, String> {
-    let dir = root();
+    let dir = root().join("locks");
     std::fs::create_dir_all(&dir).map_err(|e| format!("cannot create the synthesis cache {}: {e}", dir.display()))?;
-    crate::export::FolderLock::take_file(&dir.join(format!(".{key}.{kind}.lock")))
+    crate::export::FolderLock::take_file(&dir.join(format!("{key}.{kind}")))
 }
 
 fn get_in(dir: &std::path::Path, key: &str, kind: &str) -> Option<String> {
@@ -101,7 +102,7 @@ mod tests {
     #[test]
     fn a_result_being_made_keeps_another_process_waiting_until_the_maker_is_done() {
         let key = hash("a result being made, in the cache's own test");
-        let lock = root().join(format!(".{key}.cells.lock"));
+        let lock = root().join("locks").join(format!("{key}.cells"));
         // whether another process (util-linux's `flock -n`) could take the lock now
         let free = || match std::process::Command::new("flock").args(["-n", "-E", "3"]).arg(&lock).arg("true").status()
         {
