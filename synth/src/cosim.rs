@@ -42,18 +42,12 @@ impl Frame {
     }
 }
 
-/// Where a Verilator build keeps the warnings it printed, beside its stamp.
-const WARNINGS: &str = "verilator-warnings.txt";
-
 /// A built simulation of one unit's exported Verilog.
 pub struct Built {
     pub sim: Simulator,
     pub dir: PathBuf,
     /// Icarus's compiled bench, or Verilator's shared library (loaded in `lib`).
     pub exe: PathBuf,
-    /// Verilator's `-Wall` warnings on the unit's Verilog as it built the model (each `%Warning-` line, as
-    /// `verilator --lint-only -Wall` prints them: `synth::lint` reads them); none under Icarus.
-    pub warnings: Vec<String>,
     lib: Option<libloading::Library>,
     latency: usize,
     n_in: usize,
@@ -174,8 +168,6 @@ impl Compile {
 
 /// Build the verilated model and its C interface as a shared library in `dir/obj`: Verilator writes the C++ and
 /// compiles the model; the interface and Verilator's runtime are compiled position-independent; g++ links them.
-/// Verilator reads the Verilog with every warning on (`-Wall`, none fatal): the lines it prints are kept in
-/// `dir/verilator-warnings.txt`, so that the lint (`synth::lint`) need not read the same file again.
 fn build_verilator_library(dir: &Path, name: &str, vname: &str, compile: Compile) -> Result<PathBuf, String> {
     let make: Vec<&str> = compile.make_flags().into_iter().collect();
     let mut args = vec!["--cc", "--build"];
@@ -184,8 +176,9 @@ fn build_verilator_library(dir: &Path, name: &str, vname: &str, compile: Compile
     }
     args.extend([
         "-O3",
-        "-Wall",
         "-Wno-fatal",
+        "-Wno-lint",
+        "-Wno-style",
         "--x-initial",
         "unique",
         "-CFLAGS",
@@ -199,13 +192,7 @@ fn build_verilator_library(dir: &Path, name: &str, vname: &str, compile: Compile
         vname,
         "harness.cpp",
     ]);
-    let out = tools::run(dir, "verilator", &args)?;
-    let warnings: String = String::from_utf8_lossy(&out.stderr)
-        .lines()
-        .filter(|l| l.starts_with("%Warning-"))
-        .flat_map(|l| [l, "\n"])
-        .collect();
-    write_atomic(&dir.join(WARNINGS), warnings.as_bytes())?;
+    tools::run(dir, "verilator", &args)?;
     let obj = dir.join("obj");
     let mk = format!("V{name}.mk");
     let mut harness = vec!["-f", mk.as_str(), "harness.o"];
@@ -324,8 +311,7 @@ pub fn build_as<U: StreamUnit>(sim: Simulator, dir: &Path, compile: Compile) -> 
             let stamp = dir.join("harness.stamp");
             let lib = dir.join("obj").join("libharness.so");
             let key = format!("{}\n{}\n{compile:?}", v.text, cpp);
-            let fresh = std::fs::read_to_string(&stamp).ok().as_deref() == Some(key.as_str());
-            if !fresh || !lib.exists() || !dir.join(WARNINGS).exists() {
+            if std::fs::read_to_string(&stamp).ok().as_deref() != Some(key.as_str()) || !lib.exists() {
                 write_atomic(&dir.join("harness.cpp"), cpp.as_bytes())?;
                 build_verilator_library(dir, U::NAME, &vname, compile)?;
                 write_atomic(&stamp, key.as_bytes())?;
@@ -354,19 +340,10 @@ pub fn build_as<U: StreamUnit>(sim: Simulator, dir: &Path, compile: Compile) -> 
         }
         Simulator::Icarus => None,
     };
-    let warnings = match sim {
-        Simulator::Verilator => std::fs::read_to_string(dir.join(WARNINGS))
-            .map_err(|e| format!("cannot read {}: {e}", dir.join(WARNINGS).display()))?
-            .lines()
-            .map(str::to_string)
-            .collect(),
-        Simulator::Icarus => Vec::new(),
-    };
     Ok(Built {
         sim,
         dir: dir.to_path_buf(),
         exe,
-        warnings,
         lib,
         latency: U::LATENCY,
         n_in: U::INPUTS.len(),

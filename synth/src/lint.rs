@@ -90,17 +90,6 @@ pub fn lint(
     design: &[(&'static str, &'static str)],
 ) -> Result<LintReport, String> {
     let found = warnings(dir, &[file], module)?;
-    report(dir, file, found, design)
-}
-
-/// What waives each of the warnings `found` on `file` (in `dir`): Verilator's `-Wall` lines on it, from
-/// `warnings` or from a Verilator build of the same file (`cosim::Built::warnings`).
-pub fn report(
-    dir: &Path,
-    file: &Path,
-    found: Vec<String>,
-    design: &[(&'static str, &'static str)],
-) -> Result<LintReport, String> {
     let source = std::fs::read_to_string(dir.join(file)).map_err(|e| format!("cannot read {}: {e}", file.display()))?;
     let lines: Vec<&str> = source.lines().collect();
     let mut r = LintReport::default();
@@ -169,22 +158,12 @@ pub fn write_waivers(
 ) -> Result<(PathBuf, Vec<String>), String> {
     let mut reports = Vec::new();
     for (file, top) in files {
-        reports.push((*file, lint(dir, Path::new(file), top, design)?));
+        reports.push(lint(dir, Path::new(file), top, design)?);
     }
-    write_reports(dir, unit, reports, design)
-}
-
-/// `write_waivers` from lints already run: each file's name and its report.
-pub fn write_reports(
-    dir: &Path,
-    unit: &str,
-    reports: Vec<(&str, LintReport)>,
-    design: &[(&'static str, &'static str)],
-) -> Result<(PathBuf, Vec<String>), String> {
-    let named: Vec<(&str, &LintReport)> = reports.iter().map(|(f, r)| (*f, r)).collect();
+    let named: Vec<(&str, &LintReport)> = files.iter().map(|f| f.0).zip(&reports).collect();
     let path = dir.join(format!("{unit}.vlt"));
     crate::export::write_atomic(&path, waiver_file(unit, &named, design).as_bytes())?;
-    Ok((path, reports.into_iter().flat_map(|r| r.1.design).collect()))
+    Ok((path, reports.into_iter().flat_map(|r| r.design).collect()))
 }
 
 /// Runs of consecutive lines of one rule, as Verilator's `-lines a-b`.
