@@ -417,13 +417,20 @@ fn netlist_passes(d: &Path, u: &str, v: &str, n: usize) -> (bool, String) {
 fn the_ecp5_netlist_with_its_registers_in_the_blocks_passes_the_golden_vectors_and_a_wrong_packing_fails() {
     // (unit, products packed at the output, block RAM reads packed): gloss, three products; polar, ten, and the
     // power unit's two tables (initial contents) behind their output flip-flops; tex_fetch, the map memory's four
-    // banks (32 DP16KD, written and read) behind theirs
-    for (u, products, brams) in [("gloss", 3, 0), ("polar_pipeline", 10, 2), ("tex_fetch", 0, 32)] {
+    // banks (32 DP16KD, written and read) behind theirs; normalise, six products and its seed table, whose word is
+    // registered once behind the DP16KD (`s6c_r`) before its copies per product (`mop_r`)
+    for (u, products, brams) in [("gloss", 3, 0), ("polar_pipeline", 10, 2), ("tex_fetch", 0, 32), ("normalise", 6, 1)]
+    {
         let d = scratch(&format!("{u}-ecp5"));
         let (code, _, err) = bumprtl(&["verilog", u, "--out", d.to_str().unwrap()]);
         assert_eq!(code, 0, "{err}");
         let p = synth::regpack::netlists(&d, u, &format!("{u}.v")).unwrap();
         assert_eq!((p.mult_outputs, p.bram_outputs), (products, brams), "{u}: {p}");
+        if u == "normalise" {
+            // the copies are the products' input registers, beside the squarers' operands: every operand of the six
+            // (a copy read straight from the block RAM would stay in the fabric, and so would the read's register)
+            assert_eq!(p.mult_inputs, 12, "{u}: {p}");
+        }
         let n = rows(u);
         for v in [format!("{u}.ecp5.v"), format!("{u}.packed.v")] {
             let (ok, out) = netlist_passes(&d, u, &v, n);

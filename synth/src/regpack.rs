@@ -10,7 +10,8 @@
 //!   OUTREG`);
 //! - the flip-flops that take a MULT18X18D's P become its output register (`REG_OUTPUT_CLK CLK0`);
 //! - the flip-flops that give a MULT18X18D's A (or B) become its input register (`REG_INPUTA_CLK CLK0`); a
-//!   flip-flop that also feeds other logic stays, and the block's register is its copy.
+//!   flip-flop that also feeds other logic stays, and the block's register is its copy. One straight behind a
+//!   product, or behind a DP16KD read without its output register, stays in the fabric beside that block.
 //!
 //! Only a plain flip-flop moves: the one clock, always enabled, no set or reset, initial value 0 (the value a
 //! block's register starts from), so every clock after the first one the design computes what it did before, word
@@ -23,7 +24,7 @@ use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
 
 /// The pass's version, part of every ECP5 placement's cache key: a change to what it packs makes new placements.
-pub const VERSION: &str = "ecp5 block registers packed (bumprtl regpack 3)";
+pub const VERSION: &str = "ecp5 block registers packed (bumprtl regpack 4)";
 
 static FABRIC: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
 
@@ -154,13 +155,20 @@ fn plain_ff(cell: &Value) -> Option<(u64, Value, u64)> {
     Some((bit(conn(cell, "CLK")?)?, conn(cell, "DI")?.clone(), bit(conn(cell, "Q")?)?))
 }
 
-/// Whether net bit `d` comes straight out of a hard block.
-fn from_block(cells: &Map<String, Value>, nets: &Nets, d: &Value) -> bool {
-    let ty = |c: &str| cells[c]["type"].as_str().map(str::to_string);
-    d.as_u64()
-        .and_then(|b| nets.driver.get(&b))
-        .and_then(|(c, _)| ty(c))
-        .is_some_and(|t| t == "DP16KD" || t == "MULT18X18D")
+/// Whether net bit `d` comes straight out of a hard block through no register of the block's own: a product (this
+/// pass puts a product's output register on only as it reaches that multiplier), or a DP16KD read with its output
+/// register off (the block RAM pass runs first, so a read it packed is registered by now).
+fn from_unregistered_block(cells: &Map<String, Value>, nets: &Nets, d: &Value) -> bool {
+    let Some((c, pin)) = d.as_u64().and_then(|b| nets.driver.get(&b)) else { return false };
+    let cell = &cells[c];
+    match cell["type"].as_str() {
+        Some("DP16KD") => {
+            let port = if pin.starts_with("DOA") { "A" } else { "B" };
+            param(cell, &format!("REGMODE_{port}")).is_none_or(|m| m == "NOREG")
+        }
+        Some("MULT18X18D") => true,
+        _ => false,
+    }
 }
 
 fn set_conn(cells: &mut Map<String, Value>, cell: &str, port: &str, v: Value, input: bool) {
@@ -297,10 +305,12 @@ pub fn pack_ecp5(json: &str, top: &str) -> Result<(String, Packing), String> {
                     Some(v) => {
                         let ff = v.as_u64().and_then(|b| nets.driver.get(&b)).filter(|(_, port)| port == "Q");
                         match ff.and_then(|(ff, _)| plain_ff(&cells[ff]).map(|f| (ff.clone(), f))) {
-                            // a flip-flop straight behind a block (a DP16KD's DO, another product) stays in the
-                            // fabric beside it: in the multiplier's input register it would add the route to the
-                            // DSP to the block's clock-to-out (cart_pipeline's normaliser: 123.5 → 114.4 MHz)
-                            Some((_, (_, d, _))) if from_block(cells, &nets, &d) => ok = false,
+                            // a flip-flop straight behind a block's unregistered output (a DP16KD read without
+                            // its output register, a product without its own) stays in the fabric beside it: in the
+                            // multiplier's input register it would add the route to the DSP to the block's slow
+                            // clock-to-out (cart_pipeline's normaliser: 123.5 → 114.4 MHz). Behind a DP16KD read
+                            // through its output register (0.97 ns from the clock) it moves.
+                            Some((_, (_, d, _))) if from_unregistered_block(cells, &nets, &d) => ok = false,
                             Some((ff, (clk, d, _))) if side_clock.is_none_or(|c| c == clk) => {
                                 side_clock = Some(clk);
                                 feeds.push((pin, d, ff));

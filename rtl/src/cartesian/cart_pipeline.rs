@@ -1,19 +1,19 @@
 //! `cart_pipeline`: US 6,819,319's second embodiment, one pixel per clock, built from the unit blocks themselves:
 //! bilinear(TexelX, TexelZ) → cart_decode → normalise ─────────────┐
-//! light_iter → (delay 7) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
+//! light_iter → (delay 9) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
 //! Side-band values ride beside the stages they skip: C in a block-RAM delay line (`RamDelay`), the mode and the
 //! colours in the `DelayedBlend`, the light and P in short DFF chains.
-//! Latency 48 = bilinear 11 + cart_decode 4 + normalise 11 + dot3 6 + gloss 11 + blend 5.
+//! Latency 51 = bilinear 13 + cart_decode 4 + normalise 12 + dot3 6 + gloss 11 + blend 5.
 //!
 //! Four variants, each written by `cartesian_pipeline!` (`wiring.rs`, shared with `cart_surface`), so each exported
 //! Verilog holds only its own units:
 //! - `CartPipeline` (`cart_pipeline`): the seed's offset-binary texels through `cart_decode`;
 //! - `CartPipelineHemiOct` (`cart_pipeline_hemi_oct`): rotated hemi-octahedral texels (U on the red channel, V on
-//!   green) through `cart_decode_hemi_oct`, latency 47. Bilinear filtering of (U, V) is filtering of (x, z): the
+//!   green) through `cart_decode_hemi_oct`, latency 50. Bilinear filtering of (U, V) is filtering of (x, z): the
 //!   map between them is linear.
 //! - `CartPipelineMatte` (`cart_pipeline_matte`) and `CartPipelineHemiOctMatte` (`cart_pipeline_hemi_oct_matte`):
 //!   the same for a material with C = 0, where the gloss unit's P = X: no gloss unit, no C port, no C delay line,
-//!   α = X >> 2 (latency 37 and 36).
+//!   α = X >> 2 (latency 40 and 39).
 
 use crate::cart_decode::CartDecode;
 use crate::cart_decode_hemi_oct::CartDecodeHemiOct;

@@ -3,7 +3,7 @@
 //! and blend adjust [153], generates a normal from a 2×2-interleaved height map (`mode` = 1) through tangent [155],
 //! normal [156] and the shared normaliser. See `vectors::texture_filter`. Both results leave every clock, the
 //! colour held in a block-RAM delay line until the normal is ready.
-//! Latency 43 = the front 1 + bilinear 11 + tangent 8 + height_normal 12 + normalise 11.
+//! Latency 46 = the front 1 + bilinear 13 + tangent 8 + height_normal 12 + normalise 12.
 
 use crate::bilinear::{self, BilinearUnit};
 use crate::prim::delay::Delay;

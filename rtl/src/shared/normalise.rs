@@ -2,11 +2,12 @@
 //! 2^T entries of 13 bits, a ROM, then N Newton steps; the unit `normalise` and every pipeline have T =
 //! `TABLE_BITS` = 10 and N = 0, the other settings are the width sweep's); see `vectors::normalise` for the exact
 //! recipe and the zero vector (zero in, zero out). Each Newton step (`NewtonStep`) sits between the table and the
-//! products and adds `NEWTON_LATENCY` clocks. Latency 11 without one: magnitudes; the squarers' operand register (it feeds nothing else, so it
-//! can sit beside the DSP); squares; their sum; the leading-zero pairs; the shifts and
-//! the table address; the table (the block RAM's own read register); a register after the block RAM, so that its
-//! slow clock-to-output (5.6 ns on an ECP5-6) does not add to the multiplier's delay; the products; the rounding;
-//! the signs.
+//! products and adds `NEWTON_LATENCY` clocks. Latency 12 without one: magnitudes; the squarers' operand register (it
+//! feeds nothing else, so it can sit beside the DSP); squares; their sum; the leading-zero pairs; the shifts and
+//! the table address; the table (the block RAM's own read register); the entry registered once after the block RAM
+//! (on the ECP5 the DP16KD's output register, where the register pass puts a flip-flop that is a read port's only
+//! load: the block's 5.6 ns clock-to-output on an ECP5-6 becomes 0.97 ns); the entry once per multiplier (`mop_r`,
+//! each its multiplier's input register); the products; the rounding; the signs.
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{Sq1_10, Sq9_0, Uq1_12};
@@ -14,7 +15,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 11;
+pub const LATENCY: usize = 12;
 
 pub const TABLE_BITS: u32 = 10;
 
@@ -79,8 +80,12 @@ crate::stream_block! {
         s6_r: DFF<Uq1_12>,
         s6_c: [DFF<Bits<10>>; 3],
         s6_neg: [DFF<Bit>; 3],
-        // stage 6b: the table entry and the shifted components, registered again after the block RAM
-        mop_r: [DFF<Uq1_12>; 3], // the table value once per multiplier (`mop_`: see `rtl/README.md`)
+        // stage 6c: the table entry registered after the block RAM, once (the read port's only load)
+        s6c_r: DFF<Uq1_12>,
+        s6c_c: [DFF<Bits<10>>; 3],
+        s6c_neg: [DFF<Bit>; 3],
+        // stage 6b: the table entry once per multiplier (`mop_`: see `rtl/README.md`), the components carried
+        mop_r: [DFF<Uq1_12>; 3],
         s6b_c: [DFF<Bits<10>>; 3],
         s6b_neg: [DFF<Bit>; 3],
         // stage 7: |c|·2^e·r ≤ 1023·4096 (U23)
@@ -96,6 +101,7 @@ crate::stream_block! {
         newton: [NewtonStep; N],
         nw_s5_m: [DFF<Bits<12>>; N],
         nw_s6_m: [DFF<Bits<12>>; N],
+        nw_s6c_m: [DFF<Bits<12>>; N],
         nw_valid: [Delay<Bit, NEWTON_LATENCY>; N],
         w_m: [Signal<Local, Bits<16>>; 3],
         w_sq: [Signal<Local, Bits<32>>; 3],
@@ -150,6 +156,9 @@ impl<const T: usize, const N: usize> Default for Normalise<T, N> {
             s6_r: Default::default(),
             s6_c: Default::default(),
             s6_neg: Default::default(),
+            s6c_r: Default::default(),
+            s6c_c: Default::default(),
+            s6c_neg: Default::default(),
             mop_r: Default::default(),
             s6b_c: Default::default(),
             s6b_neg: Default::default(),
@@ -162,6 +171,7 @@ impl<const T: usize, const N: usize> Default for Normalise<T, N> {
             newton: std::array::from_fn(|_| NewtonStep::default()),
             nw_s5_m: std::array::from_fn(|_| DFF::default()),
             nw_s6_m: std::array::from_fn(|_| DFF::default()),
+            nw_s6c_m: std::array::from_fn(|_| DFF::default()),
             nw_valid: std::array::from_fn(|_| Delay::default()),
             w_m: Default::default(),
             w_sq: Default::default(),
@@ -179,7 +189,7 @@ impl<const T: usize, const N: usize> Default for Normalise<T, N> {
 impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r);
+        dff_setup!(self, clock, s3_s, s4_e, s4_s, s5_addr, s6_r, s6c_r);
         clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
         for i in 0..3 {
@@ -198,6 +208,8 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
             self.s5_neg[i].clock.next = self.clock.val();
             self.s6_c[i].clock.next = self.clock.val();
             self.s6_neg[i].clock.next = self.clock.val();
+            self.s6c_c[i].clock.next = self.clock.val();
+            self.s6c_neg[i].clock.next = self.clock.val();
             self.s6b_c[i].clock.next = self.clock.val();
             self.mop_r[i].clock.next = self.clock.val();
             self.s6b_neg[i].clock.next = self.clock.val();
@@ -256,10 +268,12 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
             // stage 6: carried
             self.s6_c[i].d.next = self.s5_c[i].q.val();
             self.s6_neg[i].d.next = self.s5_neg[i].q.val();
-            // stage 6b: carried
-            self.s6b_c[i].d.next = self.s6_c[i].q.val();
-            self.mop_r[i].d.next = self.s6_r.q.val();
-            self.s6b_neg[i].d.next = self.s6_neg[i].q.val();
+            // stages 6c, 6b: carried
+            self.s6c_c[i].d.next = self.s6_c[i].q.val();
+            self.s6c_neg[i].d.next = self.s6_neg[i].q.val();
+            self.s6b_c[i].d.next = self.s6c_c[i].q.val();
+            self.mop_r[i].d.next = self.s6c_r.q.val();
+            self.s6b_neg[i].d.next = self.s6c_neg[i].q.val();
             // stage 7: 10 × 13 → 23 bits
             self.w_p[i].next = self.w_c[i].val() * self.w_r[i].val();
             self.s7_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
@@ -309,28 +323,32 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
         self.s5_addr.d.next = self.w_sn.val().get_bits::<T>(self.addr_at.val().index());
         // stage 6
         self.s6_r.d.next = self.rsqrt.data.val();
+        // stage 6c
+        self.s6c_r.d.next = self.s6_r.q.val();
         self.norm_x.next = self.s9_out[0].q.val();
         self.norm_y.next = self.s9_out[1].q.val();
         self.norm_z.next = self.s9_out[2].q.val();
         self.valid_out.next = self.valid.q.val();
         // The Newton steps (none when N = 0: these loops are empty, and so is the Verilog they export). Each takes
         // the table entry, m = s·4^e/2^8 (Uq2.10, floor) and the waiting components from the stage or step before;
-        // the last step's outputs replace stage 6's at stage 6b (the last assignment wins, in rust-hdl and Verilog).
+        // the last step's outputs replace stage 6c's at stage 6b (the last assignment wins, in rust-hdl and Verilog).
         for k in 0..N {
             self.newton[k].clock.next = self.clock.val();
             self.nw_s5_m[k].clock.next = self.clock.val();
             self.nw_s6_m[k].clock.next = self.clock.val();
+            self.nw_s6c_m[k].clock.next = self.clock.val();
             self.nw_valid[k].clock.next = self.clock.val();
             self.nw_s5_m[k].d.next = self.w_sn.val().get_bits::<12>(8); // U20 → Uq2.10 (floor)
             self.nw_s6_m[k].d.next = self.nw_s5_m[k].q.val();
-            self.newton[k].r.next = self.s6_r.q.val();
-            self.newton[k].m.next = self.nw_s6_m[k].q.val();
-            self.newton[k].c_x.next = self.s6_c[0].q.val();
-            self.newton[k].c_y.next = self.s6_c[1].q.val();
-            self.newton[k].c_z.next = self.s6_c[2].q.val();
-            self.newton[k].neg_x.next = self.s6_neg[0].q.val();
-            self.newton[k].neg_y.next = self.s6_neg[1].q.val();
-            self.newton[k].neg_z.next = self.s6_neg[2].q.val();
+            self.nw_s6c_m[k].d.next = self.nw_s6_m[k].q.val();
+            self.newton[k].r.next = self.s6c_r.q.val();
+            self.newton[k].m.next = self.nw_s6c_m[k].q.val();
+            self.newton[k].c_x.next = self.s6c_c[0].q.val();
+            self.newton[k].c_y.next = self.s6c_c[1].q.val();
+            self.newton[k].c_z.next = self.s6c_c[2].q.val();
+            self.newton[k].neg_x.next = self.s6c_neg[0].q.val();
+            self.newton[k].neg_y.next = self.s6c_neg[1].q.val();
+            self.newton[k].neg_z.next = self.s6c_neg[2].q.val();
             self.nw_valid[k].d.next = self.valid.q.val();
         }
         for k in 1..N {
