@@ -83,10 +83,17 @@ pub fn command(no_synth: bool, dir: &std::path::Path, out: &std::path::Path) -> 
         let (ecp5, up5k) = (synth::fpga::ECP5_25F, synth::fpga::UP5K);
         let d = dir.join("table_builder").join(ecp5.name);
         let five = synth::fpga::Seeds::FIVE;
-        let one =
-            synth::fpga::synth_and_place::<rtl::table_builder::TableBuilder>(&d, ecp5, ecp5.default_freq(), "", five)?;
+        let one = synth::fpga::synth_and_place(
+            &synth::Unit::of::<rtl::table_builder::TableBuilder>(),
+            &d,
+            ecp5,
+            ecp5.default_freq(),
+            "",
+            five,
+        )?;
         let d = dir.join("palette_pipeline_shared").join(up5k.name);
-        let shared = synth::fpga::synth_and_place::<rtl::palette_pipeline_shared::PalettePipelineShared>(
+        let shared = synth::fpga::synth_and_place(
+            &synth::Unit::of::<rtl::palette_pipeline_shared::PalettePipelineShared>(),
             &d,
             up5k,
             up5k.default_freq(),

@@ -535,9 +535,10 @@ fn unit_inputs<U: StreamUnit, const IW: usize, const MW: usize>(pixels: Bits<IW>
         .collect()
 }
 
-/// The Verilog of the wrapper's wiring (the same as `update`'s, written for the export): the unit's inputs from the
-/// streams' words, its outputs packed into the FIFO's word of `ow` bits, the control's ports.
-fn wiring<U: StreamUnit>(ow: usize) -> Verilog {
+/// The Verilog of the wrapper's wiring (the same as `update`'s, written for the export): the unit's `inputs` from the
+/// streams' words (`map`: its map write port's), its `outputs` packed into the FIFO's word of `ow` bits, the
+/// control's ports. Not generic over the unit, so compiled once rather than once a unit.
+fn wiring(inputs: &[(&str, usize)], outputs: &[(&str, usize)], map: &[&str], ow: usize) -> Verilog {
     let mut v = vec![
         "uut$clock = aclk;".to_string(),
         "ctl$clock = aclk;".into(),
@@ -546,14 +547,14 @@ fn wiring<U: StreamUnit>(ow: usize) -> Verilog {
         "ctl$m_ready = m_axis_tready;".into(),
         "uut$valid_in = ctl$accept;".into(),
     ];
-    if U::MAP.is_empty() {
+    if map.is_empty() {
         v.push("ctl$other_valid = 1'b0;".into());
     } else {
         v.push("ctl$map_valid = s_axis_map_tvalid;".into());
     }
     let (mut p, mut m) = (0, 0);
-    for (n, w) in U::INPUTS {
-        match stream_of(n, U::MAP) {
+    for (n, w) in inputs {
+        match stream_of(n, map) {
             0 => {
                 v.push(format!("uut${n} = s_axis_tdata[{}:{p}];", p + w - 1));
                 p += w;
@@ -566,14 +567,14 @@ fn wiring<U: StreamUnit>(ow: usize) -> Verilog {
         }
     }
     v.push("ctl$push = uut$valid_out;".into());
-    let bits: usize = U::OUTPUTS.iter().map(|p| p.1).sum();
-    let mut parts: Vec<String> = U::OUTPUTS.iter().rev().map(|(n, _)| format!("uut${n}")).collect();
+    let bits: usize = outputs.iter().map(|p| p.1).sum();
+    let mut parts: Vec<String> = outputs.iter().rev().map(|(n, _)| format!("uut${n}")).collect();
     if ow > bits {
         parts.insert(0, format!("{}'b0", ow - bits));
     }
     v.push(format!("ctl$push_data = {{{}}};", parts.join(", ")));
     v.push("s_axis_tready = ctl$s_ready;".into());
-    if !U::MAP.is_empty() {
+    if !map.is_empty() {
         v.push("s_axis_map_tready = ctl$map_ready;".into());
     }
     v.push("m_axis_tvalid = ctl$m_valid;".into());
@@ -726,7 +727,7 @@ impl<U: StreamUnit, const IW: usize, const OW: usize, const A: usize, const C: u
     }
 
     fn hdl(&self) -> Verilog {
-        wiring::<U>(OW)
+        wiring(U::INPUTS, U::OUTPUTS, U::MAP, OW)
     }
 }
 
@@ -774,7 +775,7 @@ impl<
     }
 
     fn hdl(&self) -> Verilog {
-        wiring::<U>(OW)
+        wiring(U::INPUTS, U::OUTPUTS, U::MAP, OW)
     }
 }
 

@@ -10,7 +10,7 @@ use vectors::UnitModel;
 fn frame<U: StreamUnit>(c: &mut Criterion, m: &UnitModel, inputs: &[Vec<i64>]) {
     let slots: Vec<Option<Vec<u64>>> = inputs.iter().map(|v| Some(vectors::unit::to_patterns(v, m.inputs))).collect();
     let dir = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../target/cosim/bench").join(m.name);
-    let built = cosim::build::<U>(Simulator::Verilator, &dir).expect("a Verilator build");
+    let built = cosim::build(&synth::Unit::of::<U>(), Simulator::Verilator, &dir).expect("a Verilator build");
     let cycles = (slots.len() + U::LATENCY + 1) as u64;
     let mut g = c.benchmark_group(format!("Verilator {}, 256x256 frame", m.name));
     g.sample_size(20);

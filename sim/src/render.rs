@@ -185,7 +185,7 @@ pub fn verilator<U: StreamUnit>(
     dir: &Path,
     threads: usize,
 ) -> Result<VerilatorRun, String> {
-    let built = cosim::build::<U>(Simulator::Verilator, dir)?;
+    let built = cosim::build(&synth::Unit::of::<U>(), Simulator::Verilator, dir)?;
     let slots = patterns::<U>(m, &p.inputs);
     let prologue = p.prologue * U::INTERVAL; // its slots
                                              // one run timed from the slots to the image's output vectors, the fastest of RUNS kept

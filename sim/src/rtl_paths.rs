@@ -118,13 +118,16 @@ impl<W: AxisBlock> AxisPaths for AxisRtl<W> {
     fn selfcheck(&self, dir: &Path, n: usize, source: &str) -> Result<Vec<PathBuf>, String> {
         let v = synth::export_axis::<W>().write(dir)?;
         let tb = dir.join(format!("{}_tb.v", self.module()));
-        synth::export::write_atomic(&tb, synth::axis_bench::bench::<W::Unit>(n, source).as_bytes())?;
+        synth::export::write_atomic(
+            &tb,
+            synth::axis_bench::bench(&synth::Unit::of::<W::Unit>(), n, source).as_bytes(),
+        )?;
         Ok(vec![v, tb])
     }
     fn package(&self, dir: &Path, waivers: bool, scratch: &Path) -> Result<(Vec<PathBuf>, Option<String>), String> {
-        let target = synth::package::synth_target::<W::Unit>(scratch);
+        let target = synth::package::synth_target(&synth::Unit::of::<W::Unit>(), scratch);
         let none = target.as_ref().err().cloned();
-        Ok((synth::package::write::<W::Unit>(dir, waivers, target)?, none))
+        Ok((synth::package::write(&synth::Unit::of::<W::Unit>(), dir, waivers, target)?, none))
     }
     fn emits(&self, row: &[u64]) -> bool {
         W::emits(row)
@@ -161,7 +164,7 @@ impl<U: StreamUnit + Send + 'static> RtlBlock for Rtl<U> {
         synth::export::<U>().write(dir)
     }
     fn synth_unit(&self, dir: &Path, family: Family) -> Result<Cells, String> {
-        synth::fpga::synth_unit::<U>(dir, family)
+        synth::fpga::synth_unit(&synth::Unit::of::<U>(), dir, family)
     }
     fn analyse(&self, m: &UnitModel) -> widths::Analysis {
         widths::analyse::<U>(m)
@@ -198,7 +201,7 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
     }
     fn selfcheck(&self, dir: &Path, ins: &[Vec<u64>], outs: &[Vec<u64>], source: &str) -> Result<Vec<PathBuf>, String> {
         let mut written = vec![self.export(dir)?];
-        written.extend(synth::selfcheck::write::<U>(dir, ins, outs, source)?);
+        written.extend(synth::selfcheck::write(&synth::Unit::of::<U>(), dir, ins, outs, source)?);
         Ok(written)
     }
     fn measure(
@@ -208,10 +211,10 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
         seeds: Seeds,
         say: &dyn Fn(String),
     ) -> Result<Vec<(Part, Fit)>, String> {
-        synth::fpga::measure::<U>(dir, parts, seeds, say)
+        synth::fpga::measure(&synth::Unit::of::<U>(), dir, parts, seeds, say)
     }
     fn choose(&self, dir: &Path) -> Result<(Part, Cells, String), String> {
-        synth::fpga::choose::<U>(dir)
+        synth::fpga::choose(&synth::Unit::of::<U>(), dir)
     }
     fn synth_and_place(
         &self,
@@ -221,7 +224,7 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
         choice: &str,
         seeds: Seeds,
     ) -> Result<SynthReport, String> {
-        synth::fpga::synth_and_place::<U>(dir, part, freq, choice, seeds)
+        synth::fpga::synth_and_place(&synth::Unit::of::<U>(), dir, part, freq, choice, seeds)
     }
     fn synth_tied(
         &self,
@@ -231,6 +234,6 @@ impl<U: StreamUnit + Send + 'static> RtlPaths for Rtl<U> {
         ties: &[(&str, u64)],
         keep: &[&str],
     ) -> Result<(Cells, Blocks), String> {
-        synth::fpga::synth_tied::<U>(dir, family, tag, ties, keep)
+        synth::fpga::synth_tied(&synth::Unit::of::<U>(), dir, family, tag, ties, keep)
     }
 }

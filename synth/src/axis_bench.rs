@@ -12,7 +12,7 @@
 //! The handshakes are sampled by the bench's own registers on the rising edge (nonblocking, as any flop samples
 //! them), and read and driven on the falling edge, in one process with no delay inside it (see `selfcheck`).
 
-use rtl::StreamUnit;
+use crate::unit::Unit;
 use std::fmt::Write as _;
 
 /// Where each stream's fields sit in a row of `<unit>_in.hex`: (bit, width) of the pixel stream's fields and of the
@@ -24,11 +24,11 @@ pub struct Fields {
     pub we: Option<usize>,
 }
 
-pub fn fields<U: StreamUnit>() -> Fields {
+pub fn fields(u: &Unit) -> Fields {
     let mut f = Fields { pixel: vec![], map: vec![], we: None };
     let mut at = 0;
-    for &(n, w) in U::INPUTS {
-        match rtl::axis::stream_of(n, U::MAP) {
+    for &(n, w) in u.inputs {
+        match rtl::axis::stream_of(n, u.map) {
             0 => f.pixel.push((at, w)),
             1 => f.map.push((at, w)),
             _ => f.we = Some(at),
@@ -49,13 +49,13 @@ fn tdata(row: &str, spec: &[(usize, usize)], to: usize) -> String {
     format!("{{{}}}", parts.join(", "))
 }
 
-/// The bench's text for unit `U` behind `<unit>_axis`, with `n` vectors from `source`.
-pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
-    let iw: usize = U::INPUTS.iter().map(|p| p.1).sum();
-    let ow: usize = U::OUTPUTS.iter().map(|p| p.1).sum();
-    let owp = rtl::axis::word(U::OUTPUTS);
-    let u = U::NAME;
-    let cut = (n / 3).max(1) + U::LATENCY;
+/// The bench's text for `unit` behind `<unit>_axis`, with `n` vectors from `source`.
+pub fn bench(unit: &Unit, n: usize, source: &str) -> String {
+    let iw: usize = unit.inputs.iter().map(|p| p.1).sum();
+    let ow: usize = unit.outputs.iter().map(|p| p.1).sum();
+    let owp = rtl::axis::word(unit.outputs);
+    let u = unit.name;
+    let cut = (n / 3).max(1) + unit.latency;
     // a word widened to its TDATA bytes (no zero-width replication where it is whole bytes already)
     let pad = |word: &str, bits: usize, to: usize| {
         if to > bits {
@@ -65,8 +65,9 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
         }
     };
     let want = pad("want_mem[seen]", ow, owp);
-    let f = fields::<U>();
-    let (iwp, mwp) = (rtl::axis::stream_word(U::INPUTS, U::MAP, 0), rtl::axis::stream_word(U::INPUTS, U::MAP, 1));
+    let f = fields(unit);
+    let (iwp, mwp) =
+        (rtl::axis::stream_word(unit.inputs, unit.map, 0), rtl::axis::stream_word(unit.inputs, unit.map, 1));
     let map = f.we.is_some();
     let stim = if map { tdata("stim_mem[sent]", &f.pixel, iwp) } else { pad("stim_mem[sent]", iw, iwp) };
     // a map unit's: the map stream's handshake beside the pixel stream's, in each place the bench reads them
@@ -105,7 +106,7 @@ pub fn bench<U: StreamUnit>(n: usize, source: &str) -> String {
     let _ = writeln!(
         w,
         "  localparam N = {n};\n  localparam LATENCY = {};\n  localparam IW = {iw};\n  localparam OW = {ow};\n  localparam IWP = {iwp};\n  localparam OWP = {owp};\n  localparam CUT_AT = {cut};\n  localparam RESET = 3;\n  localparam QUIET = LATENCY + 4;\n  localparam LIMIT = 40 * (N + LATENCY + 8) + 100000;",
-        U::LATENCY
+        unit.latency
     );
     let _ = writeln!(w, "  reg aclk = 1'b0;\n  reg aresetn = 1'b1;");
     let _ = writeln!(

@@ -31,7 +31,11 @@ pub fn export_axis_ctl<W: AxisBlock>() -> Exported {
 /// Any block's Verilog with rust-hdl's `top` renamed `module`.
 fn named<B: Block>(mut uut: B, module: &str) -> Exported {
     uut.connect_all();
-    let text = generate_verilog(&uut);
+    renamed(&generate_verilog(&uut), module)
+}
+
+/// rust-hdl's Verilog `text` with its `top` renamed `module` (apart from `named`, which is compiled once a block).
+fn renamed(text: &str, module: &str) -> Exported {
     let text = text.replace("module top(", &format!("module {module}(")).replace("top$", &format!("{module}$"));
     Exported { module: module.to_string(), text }
 }

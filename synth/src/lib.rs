@@ -13,5 +13,7 @@ pub mod package;
 pub mod regpack;
 pub mod selfcheck;
 pub mod tools;
+pub mod unit;
 
 pub use export::{export, export_axis, Exported};
+pub use unit::Unit;

@@ -120,7 +120,8 @@ pub fn rust_hdl<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], bubbles: 
 pub fn three_ways<U: StreamUnit>(model: &UnitModel, inputs: &[Vec<i64>], tag: &str) {
     rust_hdl::<U>(model, inputs, Bubbles::Random { one_in: 4, seed: 1 }).assert_clean(&format!("rust-hdl, {tag}"));
     for (sim, name) in [(Simulator::Verilator, "verilator"), (Simulator::Icarus, "icarus")] {
-        let built = cosim::build_as::<U>(sim, &work_dir(name, tag), Compile::Quick).unwrap_or_else(|e| panic!("{e}"));
+        let built = cosim::build_as(&synth::Unit::of::<U>(), sim, &work_dir(name, tag), Compile::Quick)
+            .unwrap_or_else(|e| panic!("{e}"));
         let s = slots(model, U::INTERVAL, inputs, Bubbles::BackToBack);
         let got = built.run(&s).unwrap_or_else(|e| panic!("{e}"));
         check(model, U::LATENCY, inputs, &s, &got).assert_clean(&format!("{name}, {tag}"));
@@ -141,7 +142,8 @@ pub fn external<U: StreamUnit>(sim: Simulator, model: &UnitModel, inputs: &[Vec<
         Simulator::Verilator => "verilator",
         Simulator::Icarus => "icarus",
     };
-    let built = cosim::build_as::<U>(sim, &work_dir(name, U::NAME), Compile::Quick).unwrap_or_else(|e| panic!("{e}"));
+    let built = cosim::build_as(&synth::Unit::of::<U>(), sim, &work_dir(name, U::NAME), Compile::Quick)
+        .unwrap_or_else(|e| panic!("{e}"));
     let s = slots(model, U::INTERVAL, inputs, bubbles);
     let got = built.run(&s).unwrap_or_else(|e| panic!("{e}"));
     check(model, U::LATENCY, inputs, &s, &got)

@@ -92,7 +92,8 @@ fn tex_fetch_at_256_three_ways_and_a_whole_256_chain_under_verilator() {
     testbench::three_ways::<TexFetch<0, 15, 8>>(&M256, &stream, "tex_fetch_256");
 
     let inputs = whole_chain(8, vectors::unit::run_machine::<tf::Chain<8>>);
-    let built = synth::cosim::build_as::<TexFetch<0, 15, 8>>(
+    let built = synth::cosim::build_as(
+        &synth::Unit::of::<TexFetch<0, 15, 8>>(),
         synth::cosim::Simulator::Verilator,
         &testbench::work_dir("verilator", "tex_fetch_256_chain"),
         synth::cosim::Compile::Quick,
