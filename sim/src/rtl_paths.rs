@@ -125,9 +125,10 @@ impl<W: AxisBlock> AxisPaths for AxisRtl<W> {
         Ok(vec![v, tb])
     }
     fn package(&self, dir: &Path, waivers: bool, scratch: &Path) -> Result<(Vec<PathBuf>, Option<String>), String> {
-        let target = synth::package::synth_target(&synth::Unit::of::<W::Unit>(), scratch);
+        let unit = synth::Unit::of::<W::Unit>();
+        let target = synth::package::synth_target(&unit, scratch);
         let none = target.as_ref().err().cloned();
-        Ok((synth::package::write(&synth::Unit::of::<W::Unit>(), dir, waivers, target)?, none))
+        Ok((synth::package::write(&unit, dir, waivers, target)?, none))
     }
     fn emits(&self, row: &[u64]) -> bool {
         W::emits(row)

@@ -21,8 +21,8 @@ fn every_unit_behind_its_wrapper_lints_clean() {
             .unwrap_or_else(|e| panic!("{e}"));
         bad.extend(design);
         // and with the waiver file it writes, as the exported `<unit>.vlt` carries it: silent. Read again for one
-        // wrapper of each family (a second Verilator run of every wrapper took 65 s of the test command): each unit's
-        // own `verilog_lints` reads its file again with its waivers, and the wrapper's file is written by the same code
+        // wrapper of each family: each unit's own `verilog_lints` reads its file again with its waivers, and the
+        // wrapper's file is written by the same code
         if FAMILIES.iter().any(|f| f.0 == u.name()) {
             let again = synth::lint::warnings(&dir, &[&vlt, std::path::Path::new(&file)], &module).unwrap();
             bad.extend(again.into_iter().map(|w| format!("with the waivers: {w}")));

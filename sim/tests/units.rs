@@ -1,8 +1,8 @@
 //! The table of units (`sim::units`) against what it stands for: each row's model and rtl block carry its name, its
 //! golden vector file is committed and every committed one has its row, its testbench runs the standard tests,
 //! every waiver it lists names a signal its Verilog really has, and every swept setting builds its own unit inside
-//! the range its model's tests cover, with the model's tables (power, sincos, cos_sign); and the latencies the
-//! crates' README files give are the blocks' own.
+//! the range its model's tests cover, with the model's tables (power, sincos, cos_sign); and the latencies
+//! rtl/README.md gives are the blocks' own.
 use sim::units::{SETTINGS, SOFTWARE_ONLY, UNITS};
 use std::collections::BTreeSet;
 
@@ -174,27 +174,37 @@ fn cos_sign_rtl_entries_are_the_models_for_every_swept_size() {
     }
 }
 
-/// Every "`unit` (N" in a README (a unit's name, then its latency in brackets) says the block's own latency: the
-/// figures are written by hand, and a stage added to a shared block changes every pipeline that holds it.
+/// Blocks a README gives the latency of that are not units of the table (each is a part of several units).
+const PARTS: &[(&str, usize)] = &[("tangent_to_normal", rtl::height::tangent_to_normal::LATENCY)];
+
+/// Every "`block` (N" that rtl/README.md, README.md and ARCHITECTURE.md give (a unit's name, or a part's in `PARTS`,
+/// then its latency in brackets, a line break allowed between them) says the block's own latency: the figures are
+/// written by hand, and a stage added to a shared block changes every pipeline that holds it.
 #[test]
 fn every_latency_a_readme_gives_is_the_blocks_own() {
     let mut wrong = vec![];
     let mut seen = 0;
     for readme in ["rtl/README.md", "README.md", "ARCHITECTURE.md"] {
         let text = std::fs::read_to_string(root().join(readme)).unwrap_or_else(|e| panic!("{readme}: {e}"));
-        // the name, then the bracket after spaces or a line break (a line may end between them)
         for (k, _) in text.match_indices('`') {
             let Some(open) = text[..k].rfind('`') else { continue };
             let name = &text[open + 1..k];
-            let Some(u) = UNITS.iter().find(|u| u.name() == name) else { continue };
+            let latency = match UNITS.iter().find(|u| u.name() == name) {
+                Some(u) => u.rtl.latency(),
+                None => match PARTS.iter().find(|p| p.0 == name) {
+                    Some(p) => p.1,
+                    None => continue,
+                },
+            };
             let Some(rest) = text[k + 1..].trim_start().strip_prefix('(') else { continue };
             let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
-            if digits.is_empty() || !rest[digits.len()..].starts_with([')', ';', ',']) {
+            // "(52)", "(72; two clocks a pixel ...", "(32: tangent → normal ...", "(39, the one that ..."
+            if digits.is_empty() || !rest[digits.len()..].starts_with([')', ';', ':', ',']) {
                 continue;
             }
             seen += 1;
-            if digits.parse::<usize>().ok() != Some(u.rtl.latency()) {
-                wrong.push(format!("{readme}: `{name}` ({digits}): its latency is {}", u.rtl.latency()));
+            if digits.parse::<usize>().ok() != Some(latency) {
+                wrong.push(format!("{readme}: `{name}` ({digits}): its latency is {latency}"));
             }
         }
     }

@@ -1,13 +1,12 @@
 //! A unit as this crate's exporters, harnesses, benches and synthesis flows read it, without its block's type.
 
 use crate::export::Exported;
-use rtl::stream::Waiver;
 use rtl::StreamUnit;
 
-/// What `rtl::StreamUnit` says of a unit (its name, latency, ports, map port, interval and waivers) and its Verilog,
-/// as values. The functions here that write a harness, a bench or a core, or run yosys and nextpnr, take it rather
-/// than being generic over the block: a generic one is compiled again for each of the 109 units in every crate that
-/// names them (they were half of the code of `sim`'s library, the longest compile of the test command).
+/// What `rtl::StreamUnit` says of a unit (its name, latency, ports, map port and interval) and its Verilog, as
+/// values. This crate's functions that write a harness, a bench or a core, or run yosys and nextpnr, take it rather
+/// than being generic over the block: a generic one would be compiled again for each unit in every crate that
+/// names them.
 #[derive(Clone, Copy)]
 pub struct Unit {
     pub name: &'static str,
@@ -16,7 +15,6 @@ pub struct Unit {
     pub outputs: &'static [(&'static str, usize)],
     pub map: &'static [&'static str],
     pub interval: usize,
-    waivers: fn() -> Vec<Waiver>,
     export: fn() -> Exported,
 }
 
@@ -29,14 +27,8 @@ impl Unit {
             outputs: U::OUTPUTS,
             map: U::MAP,
             interval: U::INTERVAL,
-            waivers: U::waivers,
             export: crate::export::export::<U>,
         }
-    }
-
-    /// The signals its Verilog leaves unused on purpose (`StreamUnit::waivers`).
-    pub fn waivers(&self) -> Vec<Waiver> {
-        (self.waivers)()
     }
 
     /// Its Verilog, made now: rust-hdl's, the top module named after the unit (`export::export`).

@@ -33,8 +33,9 @@ fn synthesis_keeps_one_set_of_four_bilinear_units() {
     // instance with the bilinear units' multipliers
     use synth::fpga::{blocks_of, synth_unit, Family};
     let dir = testbench::work_dir("synth", "texture_filter");
-    let cells = synth_unit(&synth::Unit::of::<TextureFilter>(), &dir, Family::Ecp5).unwrap_or_else(|e| panic!("{e}"));
-    let b = blocks_of(&synth::Unit::of::<TextureFilter>(), &dir, Family::Ecp5);
+    let unit = synth::Unit::of::<TextureFilter>();
+    let cells = synth_unit(&unit, &dir, Family::Ecp5).unwrap_or_else(|e| panic!("{e}"));
+    let b = blocks_of(&unit, &dir, Family::Ecp5);
     let units: Vec<&(String, u64, u64)> = b.by_instance.iter().filter(|(n, ..)| n.starts_with("unit$")).collect();
     assert_eq!(
         units.iter().map(|u| u.0.as_str()).collect::<Vec<_>>(),

@@ -59,7 +59,7 @@ cartesian_pipeline! {
 }
 
 // trilinear with the gloss unit: lights per vertex, seed or hemi-oct texels; one light per surface (the light word
-// waits AT_DOT = 58 clocks: front 43 + decode 4 + normalise 11, 2^6 words)
+// waits AT_DOT clocks, the front's, the decode's and the normaliser's: 2^6 words)
 cartesian_pipeline! {
     module: trilinear,
     block: CartTexTrilinear,
@@ -115,7 +115,7 @@ cartesian_pipeline! {
     gloss: { unit: gloss, c: conc, delay: conc_dly },
 }
 
-// one light per surface: the light word waits AT_DOT = 37 clocks (front 22 + decode 4 + normalise 11), 2^6 words
+// one light per surface: the light word waits AT_DOT clocks (the front, the decode, the normaliser), 2^6 words
 cartesian_pipeline! {
     module: bilinear_surface,
     block: CartTexBilinearSurface,
@@ -135,8 +135,8 @@ cartesian_pipeline! {
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 6 },
 }
 
-// one light per surface, the nearest texel: the light word waits AT_DOT = 26 clocks (front 11 + decode 4 +
-// normalise 11), 2^5 words; the pipeline with its map memory (in the UP5K's SPRAM) that places on the UP5K
+// one light per surface, the nearest texel: the light word waits AT_DOT clocks (the front, the decode, the
+// normaliser), 2^5 words; the pipeline with its map memory (in the UP5K's SPRAM) that places on the UP5K
 cartesian_pipeline! {
     module: nearest_surface_matte,
     block: CartTexNearestSurfaceMatte,
@@ -146,7 +146,7 @@ cartesian_pipeline! {
     surface: { x: l_x, y: l_y, z: l_z, word: light_word, delay: light_dly, addr_bits: 5 },
 }
 
-// the same with hemi-octahedral texels: AT_DOT = 25 (front 11 + the hemi-oct decode 3 + normalise 11), 2^5 words
+// the same with hemi-octahedral texels (their decode a clock shorter), 2^5 words
 cartesian_pipeline! {
     module: nearest_surface_hemi_oct_matte,
     block: CartTexNearestSurfaceHemiOctMatte,
@@ -198,7 +198,7 @@ cartesian_pipeline! {
     vertex: { iter: light, norm: light_norm, delay: light_dly, w1: w1, w2: w2 },
 }
 
-// matte, one light per surface, trilinear: the light word waits AT_DOT = 58 clocks, as with gloss
+// matte, one light per surface, trilinear: the light word waits AT_DOT clocks, as with gloss
 cartesian_pipeline! {
     module: trilinear_surface_matte,
     block: CartTexTrilinearSurfaceMatte,
@@ -210,7 +210,7 @@ cartesian_pipeline! {
 }
 
 // the blend's destination colour from a colour map in the front's second memory (RGB565), filtered on the bump
-// texel's footprint and blend factors; the mode and lit colour wait for it beside the front (22 clocks)
+// texel's footprint and blend factors; the mode and lit colour wait for it beside the front
 cartesian_pipeline! {
     colour: { select: wcolour, delay: colour_dly },
     module: bilinear_colour,
@@ -259,8 +259,8 @@ cartesian_pipeline! {
 }
 
 // the rest of issue 24's matrix (texels seed or hemi-oct × lights per vertex or per surface × gloss or matte × the
-// four filters): one light per surface, the light word waits AT_DOT = front + decode (4, hemi-oct 3) + normalise 11
-// clocks, in the fewest address bits that hold it (front: nearest 11, bilinear 22, nearest MIP 24, trilinear 43)
+// four filters): one light per surface, the light word waits AT_DOT = front + decode + normaliser
+// clocks, in the fewest address bits that hold it
 cartesian_pipeline! {
     module: nearest_hemi_oct,
     block: CartTexNearestHemiOct,

@@ -1,15 +1,13 @@
 //! `dot3`: N·L of two Sq1.10 vectors (S12) → X (Uq0.10): `saturate(truncate(Σ n·l, 10), 0, 1023)`.
-//! Latency 7: magnitudes; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
-//! products (|n|·|l| ≤ 2^22); the products again (on the ECP5 the first is the MULT18X18D's output register, and
-//! its route to the sign's carry chain was `cart_pipeline`'s critical path: the copy takes the route alone); signs
-//! restored (S25); the sum; the clamp.
+//! Latency 6: magnitudes; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
+//! products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{SBits, Sq1_10, Sq4_20};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 7;
+pub const LATENCY: usize = 6;
 
 crate::stream_block! {
     #[derive(Default)]
@@ -33,8 +31,6 @@ crate::stream_block! {
         s1b_neg: [DFF<Bit>; 3],
         s2_p: [DFF<Bits<23>>; 3], // |n|·|l| ≤ 2^22 (U23)
         s2_neg: [DFF<Bit>; 3],
-        s2b_p: [DFF<Bits<23>>; 3], // the products again
-        s2b_neg: [DFF<Bit>; 3],
         s3_t: [DFF<Sq4_20>; 3],
         s4_sum: DFF<Sq4_20>,
         s5_x: DFF<Bits<10>>,
@@ -69,9 +65,9 @@ impl Logic for Dot3 {
         self.w_l[0].next = bit_cast::<16, 12>(self.s1b_lm[0].q.val());
         self.w_l[1].next = bit_cast::<16, 12>(self.s1b_lm[1].q.val());
         self.w_l[2].next = bit_cast::<16, 12>(self.s1b_lm[2].q.val());
-        self.w_t[0].next = bit_cast::<25, 23>(self.s2b_p[0].q.val());
-        self.w_t[1].next = bit_cast::<25, 23>(self.s2b_p[1].q.val());
-        self.w_t[2].next = bit_cast::<25, 23>(self.s2b_p[2].q.val());
+        self.w_t[0].next = bit_cast::<25, 23>(self.s2_p[0].q.val());
+        self.w_t[1].next = bit_cast::<25, 23>(self.s2_p[1].q.val());
+        self.w_t[2].next = bit_cast::<25, 23>(self.s2_p[2].q.val());
         for i in 0..3 {
             self.s1_nm[i].clock.next = self.clock.val();
             self.s1_lm[i].clock.next = self.clock.val();
@@ -81,8 +77,6 @@ impl Logic for Dot3 {
             self.s1b_neg[i].clock.next = self.clock.val();
             self.s2_p[i].clock.next = self.clock.val();
             self.s2_neg[i].clock.next = self.clock.val();
-            self.s2b_p[i].clock.next = self.clock.val();
-            self.s2b_neg[i].clock.next = self.clock.val();
             self.s3_t[i].clock.next = self.clock.val();
             // stage 1: magnitudes (−2048 → 2048 fits U12) and the product's sign
             if self.n_in[i].val().get_bit(11) {
@@ -104,11 +98,8 @@ impl Logic for Dot3 {
             self.w_p[i].next = self.w_n[i].val() * self.w_l[i].val();
             self.s2_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
             self.s2_neg[i].d.next = self.s1b_neg[i].q.val();
-            // stage 2b: carried
-            self.s2b_p[i].d.next = self.s2_p[i].q.val();
-            self.s2b_neg[i].d.next = self.s2_neg[i].q.val();
             // stage 3: the sign back (S25)
-            if self.s2b_neg[i].q.val() {
+            if self.s2_neg[i].q.val() {
                 self.s3_t[i].d.next = !self.w_t[i].val() + 1;
             } else {
                 self.s3_t[i].d.next = self.w_t[i].val();
