@@ -410,6 +410,66 @@ fn netlist_passes(d: &Path, u: &str, v: &str, n: usize) -> (bool, String) {
     (code == 0 && out.lines().any(|l| l == format!("{n} passed, 0 failed")), out)
 }
 
+/// A block RAM delay line whose word yosys maps to the DP16KD's 36-bit (pseudo dual-port) mode, where one read
+/// comes out on both ports' pins: `regpack` moves the flip-flops behind all of them into both ports' output
+/// registers, and the placed netlist still delays every word by N clocks, as yosys's own does; with both registers
+/// switched back off (their flip-flops still gone) it does not. The line is `RamDelay` as the pipelines hold it
+/// (the trilinear ones' blend colours and light words are such lines): 48 bits, 128 words, 100 clocks.
+#[test]
+fn a_36_bit_block_ram_read_packed_into_both_ports_output_registers_still_delays_every_word_by_n_clocks() {
+    const N: usize = 100;
+    let d = scratch("ram-delay-36");
+    let e = ::synth::export::named(rtl::prim::ram_delay::RamDelay::<48, 7, N>::default(), "ram_delay");
+    // exported as every unit is: its memory marked, so that yosys puts no collision bypass behind the read
+    assert!(e.text.contains("(* no_rw_check *) reg[47:0] mem[127:0];"), "{}", e.text);
+    e.write(&d).unwrap();
+    let p = ::synth::regpack::netlists(&d, "ram_delay", "ram_delay.v").unwrap();
+    let both = "\"REGMODE_A\":\"OUTREG\",\"REGMODE_B\":\"OUTREG\"";
+    let packed = std::fs::read_to_string(d.join("ram_delay.packed.json")).unwrap();
+    // 48 bits: two DP16KD in the 36-bit mode, each read through both ports' output registers, 48 flip-flops gone
+    assert_eq!((p.bram_outputs, p.ffs_removed, packed.matches(both).count()), (2, 48, 2), "{p}");
+    // the bench: a random word a clock; after edge t the line gives the word taken at edge t − (N − 1)
+    let bench = format!(
+        "module ram_delay_tb;
+  reg clock = 0;
+  reg [47:0] d = 0;
+  wire [47:0] q;
+  reg [47:0] taken [0:1999];
+  integer t, passed = 0, failed = 0;
+  ram_delay dut(.clock(clock), .d(d), .q(q));
+  initial begin
+    for (t = 0; t < 2000; t = t + 1) begin
+      d = {{$random, $random}};
+      taken[t] = d;
+      #1 clock = 1;
+      #1 clock = 0;
+      if (t >= {n1}) begin
+        if (q === taken[t - {n1}]) passed = passed + 1;
+        else failed = failed + 1;
+      end
+    end
+    $display(\"%0d passed, %0d failed\", passed, failed);
+    $finish;
+  end
+endmodule
+",
+        n1 = N - 1
+    );
+    std::fs::write(d.join("ram_delay_tb.v"), bench).unwrap();
+    let runs =
+        |v: &str| sh(&d, &format!("iverilog -g2012 -o {v}.vvp ram_delay_tb.v {v} ecp5_cells.v && vvp -n {v}.vvp"));
+    let want = format!("{} passed, 0 failed", 2000 - (N - 1));
+    for v in ["ram_delay.ecp5.v", "ram_delay.packed.v"] {
+        let (code, out) = runs(v);
+        assert!(code == 0 && out.lines().any(|l| l == want), "{v}:\n{out}");
+    }
+    let wrong = packed.replacen(both, "\"REGMODE_A\":\"NOREG\",\"REGMODE_B\":\"NOREG\"", 1);
+    std::fs::write(d.join("wrong.json"), wrong).unwrap();
+    ::synth::regpack::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
+    let (_, out) = runs("wrong.v");
+    assert!(!out.lines().any(|l| l == want) && out.contains(" passed, "), "a wrong packing passed:\n{out}");
+}
+
 /// The ECP5 netlist that is placed (its pipeline registers moved into the MULT18X18D and DP16KD registers by
 /// `regpack`) computes the golden vectors, as yosys's own netlist does; a packing that loses a register does not
 /// (one product's or one block RAM's output register switched back off, its fabric flip-flops gone).

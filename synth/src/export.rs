@@ -29,15 +29,38 @@ pub fn export_axis_ctl<W: AxisBlock>() -> Exported {
 }
 
 /// Any block's Verilog with rust-hdl's `top` renamed `module`.
-fn named<B: Block>(mut uut: B, module: &str) -> Exported {
+pub fn named<B: Block>(mut uut: B, module: &str) -> Exported {
     uut.connect_all();
     renamed(&generate_verilog(&uut), module)
 }
 
-/// rust-hdl's Verilog `text` with its `top` renamed `module` (apart from `named`, which is compiled once a block).
+/// rust-hdl's Verilog `text` with its `top` renamed `module` (apart from `named`, which is compiled once a block),
+/// and its delay lines' memories marked (`mark_rings`).
 fn renamed(text: &str, module: &str) -> Exported {
     let text = text.replace("module top(", &format!("module {module}(")).replace("top$", &format!("{module}$"));
-    Exported { module: module.to_string(), text }
+    Exported { module: module.to_string(), text: mark_rings(&text) }
+}
+
+/// The memory of every module `…$ring` (`rtl::prim::ram_delay::RamDelay`'s RAM) marked `(* no_rw_check *)`: a
+/// delay line never reads the word it writes on the same edge, and so a synthesis tool need not keep the old word
+/// on such a collision (yosys otherwise adds a comparator and a bypass behind the block RAM's read). Simulators
+/// ignore the attribute.
+fn mark_rings(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 256);
+    let mut ring = false;
+    for line in text.split_inclusive('\n') {
+        let t = line.trim_start();
+        if let Some(rest) = t.strip_prefix("module ") {
+            ring = rest.split('(').next().is_some_and(|name| name.ends_with("$ring"));
+        } else if ring && t.starts_with("reg[") && t.contains("] mem[") {
+            out.push_str(&line[..line.len() - t.len()]);
+            out.push_str("(* no_rw_check *) ");
+            out.push_str(t);
+            continue;
+        }
+        out.push_str(line);
+    }
+    out
 }
 
 impl Exported {

@@ -7,7 +7,8 @@
 //! 5.6 ns from clock to DO (speed 6); with them, 0.74 and 0.97 ns from clock to out. This pass moves those
 //! flip-flops into the blocks:
 //! - a fabric flip-flop between a DP16KD's DO and its one load becomes the port's output register (`REGMODE_x
-//!   OUTREG`);
+//!   OUTREG`); in the 36-bit mode, where one read comes out on both ports' pins, the flip-flops behind all 36 become
+//!   both ports' output registers;
 //! - the flip-flops that take a MULT18X18D's P become its output register (`REG_OUTPUT_CLK CLK0`);
 //! - the flip-flops that give a MULT18X18D's A (or B) become its input register (`REG_INPUTA_CLK CLK0`); a
 //!   flip-flop that also feeds other logic stays, and the block's register is its copy. One straight behind a
@@ -24,7 +25,7 @@ use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
 
 /// The pass's version, part of every ECP5 placement's cache key: a change to what it packs makes new placements.
-pub const VERSION: &str = "ecp5 block registers packed (bumprtl regpack 4)";
+pub const VERSION: &str = "ecp5 block registers packed (bumprtl regpack 5)";
 
 static FABRIC: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
 
@@ -240,11 +241,43 @@ pub fn pack_ecp5(json: &str, top: &str) -> Result<(String, Packing), String> {
     // block RAM read ports first: a flip-flop behind DO is the DP16KD's output register rather than the input
     // register of a product it feeds (0.97 ns from the clock against 5.6)
     for name in names(module, "DP16KD") {
+        // the 36-bit (pseudo dual-port) mode: port A writes, port B reads, and the word comes out on DOA (bits
+        // 0..17) and DOB (18..35) on port B's clock. Packed as one read, all 36 pins or none, with both ports'
+        // REGMODE and OCE set alike (as Lattice's own tools set a PDPW16KD's single REGMODE on the DP16KD), so that
+        // whichever port's settings govern the DOA half, it is registered on the same edge; only where the two
+        // ports share one clock.
+        {
+            let nets = Nets::of(module);
+            let cells = module["cells"].as_object_mut().expect("a module with cells");
+            let c = &cells[&name];
+            let wide = param_num(c, "DATA_WIDTH_A") == Some(36) && param_num(c, "DATA_WIDTH_B") == Some(36);
+            let clock = conn(c, "CLKB").and_then(bit);
+            let ready =
+                wide && ['A', 'B'].iter().all(|port| {
+                    param(c, &format!("REGMODE_{port}")).is_none_or(|m| m == "NOREG")
+                        && param(c, &format!("CLK{port}MUX")).is_none_or(|m| m == format!("CLK{port}"))
+                        && is_const(conn(c, &format!("RST{port}")), "0")
+                }) && is_const(conn(c, "OCEB"), "1")
+                    && clock.is_some()
+                    && conn(c, "CLKA").and_then(bit) == clock;
+            if ready {
+                let outs: Vec<String> = pins("DOA", 18).into_iter().chain(pins("DOB", 18)).collect();
+                if let Some((clk, flops)) = output_flops(cells, &nets, &name, &outs) {
+                    if Some(clk) == clock && !flops.is_empty() {
+                        p.ffs_removed += absorb_outputs(cells, &name, &flops);
+                        set_param(cells, &name, "REGMODE_A", "OUTREG");
+                        set_param(cells, &name, "REGMODE_B", "OUTREG");
+                        set_conn(cells, &name, "OCEA", Value::String("1".into()), true);
+                        p.bram_outputs += 1;
+                    }
+                }
+            }
+        }
         for port in ['A', 'B'] {
             let nets = Nets::of(module);
             let cells = module["cells"].as_object_mut().expect("a module with cells");
             let c = &cells[&name];
-            // the 36-bit (pseudo dual-port) mode reads on both ports' pins from port B's clock: left as it is
+            // the 36-bit mode is packed above, as one read
             let narrow =
                 param_num(c, "DATA_WIDTH_A").unwrap_or(18) <= 18 && param_num(c, "DATA_WIDTH_B").unwrap_or(18) <= 18;
             let ready = narrow
@@ -357,7 +390,9 @@ pub fn pack_ecp5(json: &str, top: &str) -> Result<(String, Packing), String> {
 /// black boxes in its ECP5 library): MULT18X18D as a product of A and B (each signed by SIGNEDA / SIGNEDB) with its
 /// input and output registers on CLK0 / CE0 / RST0; DP16KD with its data widths 1, 2, 4, 9 and 18 per port (or 36
 /// on both, the pseudo dual-port mode), its initial contents, its three write modes and its output register. A
-/// setting outside that stops the simulation with `$fatal` rather than being guessed.
+/// setting outside that stops the simulation with `$fatal` rather than being guessed; in the 36-bit mode, where the
+/// sources leave open which port's settings govern the DOA half, both ports' REGMODE must agree and the register
+/// loads only while both OCE are high.
 pub fn models() -> String {
     let mut s = String::new();
     let list = |p: &str, n: usize| (0..n).rev().map(|i| format!("{p}{i}")).collect::<Vec<_>>().join(", ");
@@ -481,6 +516,9 @@ const BRAM_BODY: &str = r#"  parameter DATA_WIDTH_A = 18;
       $fatal(1, "DP16KD %m: a setting this model does not cover");
     if (w36 && (DATA_WIDTH_A != 36 || DATA_WIDTH_B != 36 || init != 0))
       $fatal(1, "DP16KD %m: the 36-bit mode is modelled with 36 bits on both ports and no initial contents only");
+    // which port's REGMODE and OCE govern the DOA half of a 36-bit read is not modelled: both ports alike only
+    if (w36 && REGMODE_A != REGMODE_B)
+      $fatal(1, "DP16KD %m: the 36-bit mode is modelled with both ports' REGMODE alike only");
   end
   function integer shift(input integer w);
     shift = w == 18 ? 4 : w == 9 ? 3 : w == 4 ? 2 : w == 2 ? 1 : 0;
@@ -543,7 +581,7 @@ const BRAM_BODY: &str = r#"  parameter DATA_WIDTH_A = 18;
   always @(posedge CLKB) begin
     if (w36) begin
       if (RSTB) lw <= 0; else if (CEB) lw <= wide[adb[13:5]];
-      if (RSTB) rw <= 0; else if (OCEB) rw <= lw;
+      if (RSTB) rw <= 0; else if (OCEA && OCEB) rw <= lw; // either port's OCE low holds the word
     end else begin
       if (RSTB) lb <= 0;
       else if (CEB) begin

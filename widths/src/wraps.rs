@@ -279,7 +279,7 @@ pub const WAIVED: &[Waived] = &[
     w("Gloss", "s5_d.d", Bound, "L − Q with Q = ⌊L·L / 1024⌋ ≤ L for L ≤ 1023: never negative"),
     w("Gloss", "s8_p.d", Bound, "L − ⌈C·(L − Q) / 256⌉ ≥ L − (L − Q) = Q ≥ 0 for C ≤ 255"),
     w("RamDelay", "wp.d", Modular, "the ring's write pointer counts modulo 2^A"),
-    w("RamDelay", "ram.read_address", Modular, "wp − (N − 2) modulo 2^A, the ring's read pointer (wp + 2^A − N + 2)"),
+    w("RamDelay", "rp.d", Modular, "wp + 1 − (N − 2) modulo 2^A, the ring's read pointer a clock ahead (wp + 2^A − N + 3)"),
     w("SmMul", "s1_m.d", Bound, "|x| of an N-bit x kept in 16 bits: every caller's |x| is below 2^16 (a texel difference, |b' − a'|)"),
     w("SmMulWide", "s1_lo.d", Split, "the low half of |x|, multiplied apart from the high half"),
     w("SmMulWide", "w_hi16", Bound, "hi·w·2^16 ≤ |x|·w < 2^32 for every caller: height_normal's 7k·|t| < 1785·2^20, \
