@@ -438,14 +438,19 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     assert_eq!(&row("uut.s4_sum.q")[1..5], ["Sq4_20", "sQ4.20", "25", "1"]);
     assert!(row("uut.s4_sum.q")[5].parse::<i64>().unwrap() < 0);
     assert_eq!(row("uut.s1_nm$0.d")[6], "2048");
-    // proven over every input: |n|·|l| ≤ 2048 · 2048, the sum of three within ±3 · 2^22, its floor / 1024 within
-    // ±12,288 in the S15 w_q: nothing in dot3 can wrap
+    // proven over every input: |n|·|l| ≤ 2048 · 2048 = 2^22. The copy of each product is two registers, its low 12
+    // bits (≤ 4095) and its high 11 (≤ 2^22 >> 12 = 1024), which intervals add back without knowing they are one
+    // number: each product within 1024 · 4096 + 4095, the sum of three within 3 times that, its floor / 1024 in the
+    // S15 w_q: nothing in dot3 can wrap, the low halves' slices the three splits
+    let p = 1024 * 4096 + 4095;
     assert_eq!(&row("uut.s2_p$0.q")[10..12], ["0", "4194304"]);
-    assert_eq!(&row("uut.s4_sum.q")[10..12], ["-12582912", "12582912"]);
-    assert_eq!(&row("uut.w_q")[10..12], ["-12288", "12288"]);
-    assert!(rows.iter().all(|r| r[14] == "0"), "{text}");
+    assert_eq!(&row("uut.s2b_hi$0.q")[10..12], ["0", "1024"]);
+    assert_eq!(&row("uut.s4_sum.q")[10..12], [format!("{}", -3 * p), format!("{}", 3 * p)]);
+    let q = [(-3 * p as i64).div_euclid(1024), (3 * p as i64).div_euclid(1024)];
+    assert_eq!(&row("uut.w_q")[10..12], [q[0].to_string(), q[1].to_string()]);
+    assert!(rows.iter().all(|r| r[14] == "0" || (r[0].starts_with("uut.s2b_lo$") && r[17] == "split")), "{text}");
     assert!(
-        out.contains("0 risks (W), 0 wraps on purpose (w), 0 argued (a)") && out.contains("0 of 3008 differ"),
+        out.contains("0 risks (W), 3 wraps on purpose (w), 0 argued (a)") && out.contains("0 of 3008 differ"),
         "{out}"
     );
     for r in &rows {
@@ -456,8 +461,9 @@ fn widths_lists_every_signal_with_its_format_and_the_range_it_took() {
     let (code, out, err) = bumprtl(&["widths", "gloss"]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("every input (262144)") && out.contains("proven by exhaustion"), "{out}");
-    // gloss's L − Q ≥ 0 (Q = ⌊L²/1024⌋ ≤ L) is beyond intervals: argued, with every input behind it
-    assert!(out.contains("0 risks (W)") && out.contains("  a uut.s5_d.d: computes -1022 .. 1023"), "{out}");
+    // gloss's L − Q ≥ 0 (Q = ⌊L²/1024⌋ ≤ L) is beyond intervals: argued, with every input behind it. Q comes out
+    // of two 5-bit registers (its low and high halves), so intervals see it anywhere in 0 .. 1023
+    assert!(out.contains("0 risks (W)") && out.contains("  a uut.s5_d.d: computes -1023 .. 1023"), "{out}");
     assert!(
         out.contains("argued: L − Q with Q") && out.contains("every input applied, rtl = model on all 262144"),
         "{out}"

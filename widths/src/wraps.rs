@@ -67,6 +67,13 @@ const BILINEAR_WIDE: &str = "a bilinear unit's exact result is a weighted mean o
 pub const WAIVED: &[Waived] = &[
     // shared blocks
     w("BilinearUnit", "s6_a.d", Bound, BILINEAR_MEAN),
+    w("Dot3", "s2b_lo.d", Split, "a product's low 12 bits; its high 11 beside it in s2b_hi (the copy in two registers, not one: \
+        yosys 0.23's iCE40 DSP pass crashes on a whole second register behind a product's first)"),
+    w("Gloss", "s2b_m_lo.d", Split, "k·t's low 10 bits; its high 9 beside it in s2b_m_hi (two registers: see Dot3)"),
+    w("Gloss", "s4b_q_lo.d", Split, "Q = (L·L) >> 10's low 5 bits; its high 5 beside it in s4b_q_hi (two registers: see Dot3)"),
+    w("Gloss", "s6b_lo.d", Split, "C·(L − Q)'s low 9 bits; its high 9 beside it in s6b_hi (two registers: see Dot3)"),
+    w("Normalise", "s2b_lo.d", Split, "a square's low 10 bits; its high 9 beside it in s2b_hi (two registers: see Dot3)"),
+    w("Normalise", "s7b_lo.d", Split, "a product's low 12 bits; its high 11 beside it in s7b_hi (two registers: see Dot3)"),
     w("Normalise", "s9_out.d", Bound, "with Newton steps (the sweep's `Normalise<T, N>`, N ≥ 1): r' = r·(3 − m·r²)/2 is at most \
         2^12/√m ≤ 2^12 (the step's maximum over r; `vectors::normalise` tests every mantissa of every size), so |n| ≤ 1024 as \
         without one; intervals see r' anywhere in its U13"),
@@ -79,6 +86,8 @@ pub const WAIVED: &[Waived] = &[
     w("BilinearUnit", "w_wide", Bound, "a'·2^F ± |b' − a'|·v is the weighted mean of a' and b' times 2^F: 0 .. 2^(W + 2F − D)"),
     w("BilinearUnit", "w_r", Bound, "the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
     w("BilinearUnit", "s11_out.d", Bound, "the rounded weighted mean of UW values shifted down by 2F − D is at most 2^W − 1"),
+    w("Blend", "s2b_ps_lo.d", Split, "src·α's low byte; its high byte beside it in s2b_ps_hi (the copy in two registers: see Dot3)"),
+    w("Blend", "s2b_pd_lo.d", Split, "dst·(255 − α)'s low byte; its high byte beside it in s2b_pd_hi"),
     w("Blend", "w_sum", Bound, "α·s + (255 − α)·d ≤ 255·255 = 65,025: the two products share α"),
     w("Blend", "s3_t.d", Bound, "w_sum + 128 ≤ 65,153"),
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),

@@ -3,7 +3,7 @@
 //! a..h at the plain factors doubled to 9 bits (no blend adjust, no alpha unit, no texel k); the tangent unit shrinks
 //! to G − R and B − R, each shifted down to the normal unit's half derivative; then height_normal [156] and the
 //! shared normaliser. See `vectors::blinn_pipeline`.
-//! Latency 39 = the grids 1 + bilinear 13 + the differences 1 + height_normal 12 + normalise 12.
+//! Latency 41 = the grids 1 + bilinear 13 + the differences 1 + height_normal 12 + normalise 14.
 
 use crate::bilinear::{self, BilinearUnit};
 use crate::height_normal::{self, HeightNormal};

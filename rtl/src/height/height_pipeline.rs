@@ -3,7 +3,7 @@
 //! units [65–68] (`BilinearUnit<8, 9, 1>`, the colour filter's own) → tangent [155] → height_normal [156] →
 //! the shared `normalise`. The unadjusted blend factors ride beside the bilinear units to the tangent unit, the
 //! scale factor to the normal unit.
-//! Latency 46 = replicate 1 + bilinear 13 + tangent 8 + height_normal 12 + normalise 12.
+//! Latency 48 = replicate 1 + bilinear 13 + tangent 8 + height_normal 12 + normalise 14.
 
 use crate::bilinear::{self, BilinearUnit};
 use crate::blend_adjust::{self, BlendAdjust};

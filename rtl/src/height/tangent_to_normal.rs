@@ -1,6 +1,6 @@
 //! The height path after the four bilinear units, as one block both tops hold: tangent [155] → normal [156] → the
-//! shared normaliser, the scale factor waiting beside the tangent unit. Latency 32 = tangent 8 + height_normal 12 +
-//! normalise 12.
+//! shared normaliser, the scale factor waiting beside the tangent unit. Latency 34 = tangent 8 + height_normal 12 +
+//! normalise 14.
 
 use crate::height_normal::{self, HeightNormal};
 use crate::normalise::{self, Normalise};

@@ -3,7 +3,7 @@
 //! and blend adjust [153], generates a normal from a 2×2-interleaved height map (`mode` = 1) through tangent [155],
 //! normal [156] and the shared normaliser. See `vectors::texture_filter`. Both results leave every clock, the
 //! colour held in a block-RAM delay line until the normal is ready.
-//! Latency 46 = the front 1 + bilinear 13 + tangent 8 + height_normal 12 + normalise 12.
+//! Latency 48 = the front 1 + bilinear 13 + tangent 8 + height_normal 12 + normalise 14.
 
 use crate::bilinear::{self, BilinearUnit};
 use crate::prim::delay::Delay;
@@ -14,6 +14,8 @@ use rust_hdl::prelude::*;
 
 pub const AT_TANGENT: usize = 1 + bilinear::LATENCY;
 pub const LATENCY: usize = AT_TANGENT + tangent_to_normal::LATENCY;
+/// The colour's delay line's address bits: 5, or more where its LATENCY − AT_TANGENT clocks need a longer ring.
+const COLOUR_LINE_BITS: usize = crate::prim::ram_delay::addr_bits(LATENCY - AT_TANGENT, 5);
 
 crate::stream_block! {
     #[derive(Default)]
@@ -57,7 +59,7 @@ crate::stream_block! {
         s1_u: [DFF<Bits<9>>; 4],
         s1_v: [DFF<Bits<9>>; 4],
         pub unit: [BilinearUnit<8, 9, 1>; 4], // red, green, blue, alpha
-        colour: RamDelay<32, 5, { LATENCY - AT_TANGENT }>, // the rounded colour, waiting for the normal
+        colour: RamDelay<32, COLOUR_LINE_BITS, { LATENCY - AT_TANGENT }>, // the rounded colour, waiting for the normal
         pub back: TangentToNormal,
         valid: Delay<Bit, AT_TANGENT>,
         u_dly: Delay<U8, AT_TANGENT>,

@@ -2,7 +2,7 @@
 //! one normal and one pixel a clock. The pixel's frame and index wait beside the builder (32 clocks), so that a
 //! vector's write and its read reach the table RAM together: a read sees every entry built by the vectors before it,
 //! however many idle clocks lie between them, and a flip of `frame` shows a table whose last entry has already
-//! landed. See `vectors::palette_pipeline`. Latency 35 = table_builder 32 + palette_lookup 3.
+//! landed. See `vectors::palette_pipeline`. Latency 41 = table_builder 38 + palette_lookup 3.
 //! `A` is the index width, ⌈log2 s_N⌉, and `R` = A + 1 the table RAM's address width: `PalettePipeline<8, 9>` is
 //! `palette_pipeline` (s_N up to 256), `PalettePipeline<12, 13>` is `palette_pipeline_12` (up to 4,096).
 

@@ -8,7 +8,7 @@
 //! what is built does not depend on the idle clocks. A table of s_N entries takes 2·s_N vectors, builds alternating
 //! with pixels alone. Everything else is `palette_pipeline`'s: a write and the read of the same vector reach the RAM
 //! together, writes go to the table the frame does not show. See `vectors::palette_pipeline::shared`.
-//! Latency 26 = the shared builder 23 + palette_lookup 3.
+//! Latency 30 = the shared builder 27 + palette_lookup 3.
 
 use crate::palette_lookup::{self, PaletteLookup};
 use crate::prim::delay::Delay;

@@ -2,7 +2,7 @@
 //! clock: the shared `Normalise`, two `Dot3`s (N·L, N·H), `Gloss` (the specular power), then the entry of equation
 //! (1): α = N·L >> 2, the colour (P·s + 512) >> 10 per channel. The entry leaves with its index, for the table RAM.
 //! See `vectors::table_builder`.
-//! Latency 32 = normalise 12 + dot3 6 + gloss 11 + the colour 3 (operands, products, the rounding).
+//! Latency 38 = normalise 14 + dot3 7 + gloss 14 + the colour 3 (operands, products, the rounding).
 
 use crate::dot3::{self, Dot3};
 use crate::gloss::{self, Gloss};

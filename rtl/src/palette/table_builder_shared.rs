@@ -11,8 +11,8 @@
 //! bit: the same blocks in the same order, only time-shared.
 //!
 //! The caller must leave a clock between two taken normals (`palette_pipeline_shared` refuses a build that would
-//! not). Latency 23 = the dot product's operands chosen 1 (N and L, or N and H held: a register, so that the choice
-//! and its 72-bit fan-out are not in front of the dot product's first stage) + dot3 6 + N·H's clock 1 + gloss 11 +
+//! not). Latency 27 = the dot product's operands chosen 1 (N and L, or N and H held: a register, so that the choice
+//! and its 72-bit fan-out are not in front of the dot product's first stage) + dot3 7 + N·H's clock 1 + gloss 14 +
 //! the colour 4 (operands; products; rounding; b's product rounded a clock after r's and g's, r and g held for it).
 
 use crate::dot3::{self, Dot3};

@@ -1,13 +1,19 @@
 //! `dot3`: N·L of two Sq1.10 vectors (S12) → X (Uq0.10): `saturate(truncate(Σ n·l, 10), 0, 1023)`.
-//! Latency 6: magnitudes; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
-//! products (|n|·|l| ≤ 2^22); signs restored (S25); the sum; the clamp.
+//! Latency 7: magnitudes; the multipliers' operand register (it feeds nothing else, so it can sit beside the DSP);
+//! products (|n|·|l| ≤ 2^22); the products again (on the ECP5 the first is the MULT18X18D's output register, and
+//! its route to the sign's carry chain was `cart_pipeline`'s critical path: the copy takes the route alone); signs
+//! restored (S25); the sum; the clamp.
+//!
+//! The copy is two registers a product, its low 12 bits and its high 11, not one of 23: yosys 0.23's `ice40_dsp`
+//! pass takes a second whole register behind a product's first as the SB_MAC16's `PIPELINE_16x16_MULT_REG2` and,
+//! with no input register found, crashes (segmentation fault). Split, the first is still packed into the block.
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{SBits, Sq1_10, Sq4_20};
 use rust_hdl::prelude::*;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 6;
+pub const LATENCY: usize = 7;
 
 crate::stream_block! {
     #[derive(Default)]
@@ -31,6 +37,9 @@ crate::stream_block! {
         s1b_neg: [DFF<Bit>; 3],
         s2_p: [DFF<Bits<23>>; 3], // |n|·|l| ≤ 2^22 (U23)
         s2_neg: [DFF<Bit>; 3],
+        s2b_lo: [DFF<Bits<12>>; 3], // the products again: bits 0..11
+        s2b_hi: [DFF<Bits<11>>; 3], // and bits 12..22 (two registers: see the module's comment)
+        s2b_neg: [DFF<Bit>; 3],
         s3_t: [DFF<Sq4_20>; 3],
         s4_sum: DFF<Sq4_20>,
         s5_x: DFF<Bits<10>>,
@@ -65,9 +74,12 @@ impl Logic for Dot3 {
         self.w_l[0].next = bit_cast::<16, 12>(self.s1b_lm[0].q.val());
         self.w_l[1].next = bit_cast::<16, 12>(self.s1b_lm[1].q.val());
         self.w_l[2].next = bit_cast::<16, 12>(self.s1b_lm[2].q.val());
-        self.w_t[0].next = bit_cast::<25, 23>(self.s2_p[0].q.val());
-        self.w_t[1].next = bit_cast::<25, 23>(self.s2_p[1].q.val());
-        self.w_t[2].next = bit_cast::<25, 23>(self.s2_p[2].q.val());
+        self.w_t[0].next =
+            (bit_cast::<25, 11>(self.s2b_hi[0].q.val()) << 12) | bit_cast::<25, 12>(self.s2b_lo[0].q.val());
+        self.w_t[1].next =
+            (bit_cast::<25, 11>(self.s2b_hi[1].q.val()) << 12) | bit_cast::<25, 12>(self.s2b_lo[1].q.val());
+        self.w_t[2].next =
+            (bit_cast::<25, 11>(self.s2b_hi[2].q.val()) << 12) | bit_cast::<25, 12>(self.s2b_lo[2].q.val());
         for i in 0..3 {
             self.s1_nm[i].clock.next = self.clock.val();
             self.s1_lm[i].clock.next = self.clock.val();
@@ -77,6 +89,9 @@ impl Logic for Dot3 {
             self.s1b_neg[i].clock.next = self.clock.val();
             self.s2_p[i].clock.next = self.clock.val();
             self.s2_neg[i].clock.next = self.clock.val();
+            self.s2b_lo[i].clock.next = self.clock.val();
+            self.s2b_hi[i].clock.next = self.clock.val();
+            self.s2b_neg[i].clock.next = self.clock.val();
             self.s3_t[i].clock.next = self.clock.val();
             // stage 1: magnitudes (−2048 → 2048 fits U12) and the product's sign
             if self.n_in[i].val().get_bit(11) {
@@ -98,8 +113,12 @@ impl Logic for Dot3 {
             self.w_p[i].next = self.w_n[i].val() * self.w_l[i].val();
             self.s2_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
             self.s2_neg[i].d.next = self.s1b_neg[i].q.val();
+            // stage 2b: carried
+            self.s2b_lo[i].d.next = self.s2_p[i].q.val().get_bits::<12>(0);
+            self.s2b_hi[i].d.next = self.s2_p[i].q.val().get_bits::<11>(12);
+            self.s2b_neg[i].d.next = self.s2_neg[i].q.val();
             // stage 3: the sign back (S25)
-            if self.s2_neg[i].q.val() {
+            if self.s2b_neg[i].q.val() {
                 self.s3_t[i].d.next = !self.w_t[i].val() + 1;
             } else {
                 self.s3_t[i].d.next = self.w_t[i].val();

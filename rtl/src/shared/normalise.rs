@@ -2,12 +2,15 @@
 //! 2^T entries of 13 bits, a ROM, then N Newton steps; the unit `normalise` and every pipeline have T =
 //! `TABLE_BITS` = 10 and N = 0, the other settings are the width sweep's); see `vectors::normalise` for the exact
 //! recipe and the zero vector (zero in, zero out). Each Newton step (`NewtonStep`) sits between the table and the
-//! products and adds `NEWTON_LATENCY` clocks. Latency 12 without one: magnitudes; the squarers' operand register (it
-//! feeds nothing else, so it can sit beside the DSP); squares; their sum; the leading-zero pairs; the shifts and
-//! the table address; the table (the block RAM's own read register); the entry registered once after the block RAM
-//! (on the ECP5 the DP16KD's output register, where the register pass puts a flip-flop that is a read port's only
-//! load: the block's 5.6 ns clock-to-output on an ECP5-6 becomes 0.97 ns); the entry once per multiplier (`mop_r`,
-//! each its multiplier's input register); the products; the rounding; the signs.
+//! products and adds `NEWTON_LATENCY` clocks. Latency 14 without one: magnitudes; the squarers' operand register (it
+//! feeds nothing else, so it can sit beside the DSP); squares; the squares again (on the ECP5 the first is the
+//! MULT18X18D's output register, and its route to the sum's carry chain was `cart_pipeline`'s critical path: the
+//! copy takes the route alone); their sum; the leading-zero pairs; the shifts and the table address; the table (the
+//! block RAM's own read register); the entry registered once after the block RAM (on the ECP5 the DP16KD's output
+//! register, where the register pass puts a flip-flop that is a read port's only load: the block's 5.6 ns
+//! clock-to-output on an ECP5-6 becomes 0.97 ns); the entry once per multiplier (`mop_r`, each its multiplier's
+//! input register); the products; the products again (the same reason, before the rounding's carry chain); the
+//! rounding; the signs.
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{Sq1_10, Sq9_0, Uq1_12};
@@ -15,7 +18,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 12;
+pub const LATENCY: usize = 14;
 
 pub const TABLE_BITS: u32 = 10;
 
@@ -63,6 +66,11 @@ crate::stream_block! {
         s2_sq: [DFF<Bits<19>>; 3],
         s2_m: [DFF<Bits<10>>; 3],
         s2_neg: [DFF<Bit>; 3],
+        // stage 2b: the squares again, each in two registers (bits 0..9, 10..18: see `dot3` for why two)
+        s2b_lo: [DFF<Bits<10>>; 3],
+        s2b_hi: [DFF<Bits<9>>; 3],
+        s2b_m: [DFF<Bits<10>>; 3],
+        s2b_neg: [DFF<Bit>; 3],
         // stage 3: s = x² + y² + z² < 2^20
         s3_s: DFF<Bits<20>>,
         s3_m: [DFF<Bits<10>>; 3],
@@ -91,6 +99,10 @@ crate::stream_block! {
         // stage 7: |c|·2^e·r ≤ 1023·4096 (U23)
         s7_p: [DFF<Bits<23>>; 3],
         s7_neg: [DFF<Bit>; 3],
+        // stage 7b: the products again, each in two registers (bits 0..11, 12..22)
+        s7b_lo: [DFF<Bits<12>>; 3],
+        s7b_hi: [DFF<Bits<11>>; 3],
+        s7b_neg: [DFF<Bit>; 3],
         // stage 8: round half up on the magnitude, 11 bits dropped (so half away from zero on the value)
         s8_n: [DFF<Bits<12>>; 3],
         s8_neg: [DFF<Bit>; 3],
@@ -105,12 +117,14 @@ crate::stream_block! {
         nw_valid: [Delay<Bit, NEWTON_LATENCY>; N],
         w_m: [Signal<Local, Bits<16>>; 3],
         w_sq: [Signal<Local, Bits<32>>; 3],
+        w_sq2: [Signal<Local, Bits<20>>; 3], // a square out of its two stage-2b registers
         w_part: Signal<Local, Bits<20>>,
         w_e2: Signal<Local, Bits<5>>,
         w_sn: Signal<Local, Bits<20>>,
         w_c: [Signal<Local, Bits<16>>; 3],
         w_r: [Signal<Local, Bits<16>>; 3],
         w_p: [Signal<Local, Bits<32>>; 3],
+        w_p7: [Signal<Local, Bits<23>>; 3], // a product out of its two stage-7b registers
         w_u: [Signal<Local, Bits<23>>; 3],
     }
 }
@@ -143,6 +157,10 @@ impl<const T: usize, const N: usize> Default for Normalise<T, N> {
             s2_sq: Default::default(),
             s2_m: Default::default(),
             s2_neg: Default::default(),
+            s2b_lo: Default::default(),
+            s2b_hi: Default::default(),
+            s2b_m: Default::default(),
+            s2b_neg: Default::default(),
             s3_s: Default::default(),
             s3_m: Default::default(),
             s3_neg: Default::default(),
@@ -164,6 +182,9 @@ impl<const T: usize, const N: usize> Default for Normalise<T, N> {
             s6b_neg: Default::default(),
             s7_p: Default::default(),
             s7_neg: Default::default(),
+            s7b_lo: Default::default(),
+            s7b_hi: Default::default(),
+            s7b_neg: Default::default(),
             s8_n: Default::default(),
             s8_neg: Default::default(),
             s9_out: Default::default(),
@@ -175,12 +196,14 @@ impl<const T: usize, const N: usize> Default for Normalise<T, N> {
             nw_valid: std::array::from_fn(|_| Delay::default()),
             w_m: Default::default(),
             w_sq: Default::default(),
+            w_sq2: Default::default(),
             w_part: Default::default(),
             w_e2: Default::default(),
             w_sn: Default::default(),
             w_c: Default::default(),
             w_r: Default::default(),
             w_p: Default::default(),
+            w_p7: Default::default(),
             w_u: Default::default(),
         }
     }
@@ -200,6 +223,10 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
             self.s2_sq[i].clock.next = self.clock.val();
             self.s2_m[i].clock.next = self.clock.val();
             self.s2_neg[i].clock.next = self.clock.val();
+            self.s2b_lo[i].clock.next = self.clock.val();
+            self.s2b_hi[i].clock.next = self.clock.val();
+            self.s2b_m[i].clock.next = self.clock.val();
+            self.s2b_neg[i].clock.next = self.clock.val();
             self.s3_m[i].clock.next = self.clock.val();
             self.s3_neg[i].clock.next = self.clock.val();
             self.s4_m[i].clock.next = self.clock.val();
@@ -215,6 +242,9 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
             self.s6b_neg[i].clock.next = self.clock.val();
             self.s7_p[i].clock.next = self.clock.val();
             self.s7_neg[i].clock.next = self.clock.val();
+            self.s7b_lo[i].clock.next = self.clock.val();
+            self.s7b_hi[i].clock.next = self.clock.val();
+            self.s7b_neg[i].clock.next = self.clock.val();
             self.s8_n[i].clock.next = self.clock.val();
             self.s8_neg[i].clock.next = self.clock.val();
             self.s9_out[i].clock.next = self.clock.val();
@@ -248,6 +278,18 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
         self.w_r[0].next = bit_cast::<16, 13>(self.mop_r[0].q.val());
         self.w_r[1].next = bit_cast::<16, 13>(self.mop_r[1].q.val());
         self.w_r[2].next = bit_cast::<16, 13>(self.mop_r[2].q.val());
+        self.w_sq2[0].next =
+            (bit_cast::<20, 9>(self.s2b_hi[0].q.val()) << 10) | bit_cast::<20, 10>(self.s2b_lo[0].q.val());
+        self.w_sq2[1].next =
+            (bit_cast::<20, 9>(self.s2b_hi[1].q.val()) << 10) | bit_cast::<20, 10>(self.s2b_lo[1].q.val());
+        self.w_sq2[2].next =
+            (bit_cast::<20, 9>(self.s2b_hi[2].q.val()) << 10) | bit_cast::<20, 10>(self.s2b_lo[2].q.val());
+        self.w_p7[0].next =
+            (bit_cast::<23, 11>(self.s7b_hi[0].q.val()) << 12) | bit_cast::<23, 12>(self.s7b_lo[0].q.val());
+        self.w_p7[1].next =
+            (bit_cast::<23, 11>(self.s7b_hi[1].q.val()) << 12) | bit_cast::<23, 12>(self.s7b_lo[1].q.val());
+        self.w_p7[2].next =
+            (bit_cast::<23, 11>(self.s7b_hi[2].q.val()) << 12) | bit_cast::<23, 12>(self.s7b_lo[2].q.val());
         for i in 0..3 {
             // stage 1b: carried
             self.s1b_m[i].d.next = self.s1_m[i].q.val();
@@ -257,9 +299,14 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
             self.s2_sq[i].d.next = self.w_sq[i].val().get_bits::<19>(0);
             self.s2_m[i].d.next = self.s1b_m[i].q.val();
             self.s2_neg[i].d.next = self.s1b_neg[i].q.val();
+            // stage 2b: carried
+            self.s2b_lo[i].d.next = self.s2_sq[i].q.val().get_bits::<10>(0);
+            self.s2b_hi[i].d.next = self.s2_sq[i].q.val().get_bits::<9>(10);
+            self.s2b_m[i].d.next = self.s2_m[i].q.val();
+            self.s2b_neg[i].d.next = self.s2_neg[i].q.val();
             // stages 3, 4: carried
-            self.s3_m[i].d.next = self.s2_m[i].q.val();
-            self.s3_neg[i].d.next = self.s2_neg[i].q.val();
+            self.s3_m[i].d.next = self.s2b_m[i].q.val();
+            self.s3_neg[i].d.next = self.s2b_neg[i].q.val();
             self.s4_m[i].d.next = self.s3_m[i].q.val();
             self.s4_neg[i].d.next = self.s3_neg[i].q.val();
             // stage 5: |c|·2^e
@@ -278,10 +325,14 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
             self.w_p[i].next = self.w_c[i].val() * self.w_r[i].val();
             self.s7_p[i].d.next = self.w_p[i].val().get_bits::<23>(0);
             self.s7_neg[i].d.next = self.s6b_neg[i].q.val();
+            // stage 7b: carried
+            self.s7b_lo[i].d.next = self.s7_p[i].q.val().get_bits::<12>(0);
+            self.s7b_hi[i].d.next = self.s7_p[i].q.val().get_bits::<11>(12);
+            self.s7b_neg[i].d.next = self.s7_neg[i].q.val();
             // stage 8: (p + 2^10) >> 11
-            self.w_u[i].next = self.s7_p[i].q.val() + 1024; // < 2^23
+            self.w_u[i].next = self.w_p7[i].val() + 1024; // < 2^23
             self.s8_n[i].d.next = self.w_u[i].val().get_bits::<12>(11); // U23 >> 11 (floor of the + 2^10: round half up), ≤ 1024: U12
-            self.s8_neg[i].d.next = self.s7_neg[i].q.val();
+            self.s8_neg[i].d.next = self.s7b_neg[i].q.val();
             // stage 9
             if self.s8_neg[i].q.val() {
                 self.s9_out[i].d.next = !self.s8_n[i].q.val() + 1;
@@ -290,8 +341,8 @@ impl<const T: usize, const N: usize> Logic for Normalise<T, N> {
             }
         }
         // stage 3: the sum of squares
-        self.w_part.next = bit_cast::<20, 19>(self.s2_sq[0].q.val()) + bit_cast::<20, 19>(self.s2_sq[1].q.val());
-        self.s3_s.d.next = self.w_part.val() + bit_cast::<20, 19>(self.s2_sq[2].q.val());
+        self.w_part.next = self.w_sq2[0].val() + self.w_sq2[1].val();
+        self.s3_s.d.next = self.w_part.val() + self.w_sq2[2].val();
         // stage 4: the largest e with s·4^e < 2^20 (a zero s gives e = 0, and zero products later)
         if self.s3_s.q.val().get_bits::<2>(18).any() {
             self.s4_e.d.next = 0.into();
