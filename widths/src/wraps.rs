@@ -86,8 +86,6 @@ pub const WAIVED: &[Waived] = &[
     w("BilinearUnit", "w_wide", Bound, "a'·2^F ± |b' − a'|·v is the weighted mean of a' and b' times 2^F: 0 .. 2^(W + 2F − D)"),
     w("BilinearUnit", "w_r", Bound, "the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
     w("BilinearUnit", "s11_out.d", Bound, "the rounded weighted mean of UW values shifted down by 2F − D is at most 2^W − 1"),
-    w("Blend", "s2b_ps_lo.d", Split, "src·α's low byte; its high byte beside it in s2b_ps_hi (the copy in two registers: see Dot3)"),
-    w("Blend", "s2b_pd_lo.d", Split, "dst·(255 − α)'s low byte; its high byte beside it in s2b_pd_hi"),
     w("Blend", "w_sum", Bound, "α·s + (255 − α)·d ≤ 255·255 = 65,025: the two products share α"),
     w("Blend", "s3_t.d", Bound, "w_sum + 128 ≤ 65,153"),
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),

@@ -3,7 +3,7 @@
 //! light_iter → (delay 9) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
 //! Side-band values ride beside the stages they skip: C in a block-RAM delay line (`RamDelay`), the mode and the
 //! colours in the `DelayedBlend`, the light and P in short DFF chains.
-//! Latency 58 = bilinear 13 + cart_decode 4 + normalise 14 + dot3 7 + gloss 14 + blend 6.
+//! Latency 57 = bilinear 13 + cart_decode 4 + normalise 14 + dot3 7 + gloss 14 + blend 5.
 //!
 //! Four variants, each written by `cartesian_pipeline!` (`wiring.rs`, shared with `cart_surface`), so each exported
 //! Verilog holds only its own units:
