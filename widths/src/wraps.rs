@@ -84,7 +84,9 @@ pub const WAIVED: &[Waived] = &[
     w("BilinearUnit", "w_sb", Bound, BILINEAR_MEAN),
     w("BilinearUnit", "s7_e.d", Bound, "b' − a' of two weighted means each below 2^(W + F − D): |b' − a'| < 2^(W + F − D)"),
     w("BilinearUnit", "w_wide", Bound, "a'·2^F ± |b' − a'|·v is the weighted mean of a' and b' times 2^F: 0 .. 2^(W + 2F − D)"),
-    w("BilinearUnit", "w_r", Bound, "the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
+    w("BilinearUnit", "s7_ah.d", Bound, "a' = a >> D is a weighted mean below 2^(W + F − D) ≤ 2^16; plus 2^(F − D − 1) ≤ 2^8 it \
+        stays below 2^17; intervals see a anywhere in its U17"),
+    w("BilinearUnit", "w_r", Bound, "a'_h·2^F ± |b' − a'|·v is the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
     w("BilinearUnit", "s11_out.d", Bound, "the rounded weighted mean of UW values shifted down by 2F − D is at most 2^W − 1"),
     w("Blend", "w_sum", Bound, "α·s + (255 − α)·d ≤ 255·255 = 65,025: the two products share α"),
     w("Blend", "s3_t.d", Bound, "w_sum + 128 ≤ 65,153"),

@@ -10,6 +10,8 @@
 //! exact) and `out = (wide + 2^(2F−D−1)) >> (2F − D)` (UW, rounded half up). With D = 0 this is the model's
 //! `a·(2^F − v) + b·v` rounded half up. The colour filter reads `out`; the height-map path reads `wide`, whose
 //! 2F − D fraction bits the tangents need.
+//! The rounding constant goes into a' before the last product arrives: `a'_h = a' + 2^(F−D−1)`, so that
+//! `a'_h·2^F = a'·2^F + 2^(2F−D−1)` and the last stage is one add or subtract for each output, not two in a row.
 //! Latency 13: widen; differences; the two `SmMul`s (4: |d|, operand registers, ·u, the product carried); a and b;
 //! b − a; the `SmMul` (|b − a|, operand registers, ·v, carried); the rounded sum.
 //!
@@ -43,7 +45,7 @@ crate::block! {
         shift_f: Constant<Bits<8>>,   // F
         shift_d: Constant<Bits<8>>,   // D
         shift_out: Constant<Bits<5>>, // 2F − D, an index into 32 bits
-        half: Constant<Bits<32>>,     // 2^(2F−D−1), the rounding constant
+        half: Constant<Bits<17>>,     // 2^(F−D−1): the rounding constant 2^(2F−D−1) before the · 2^F
         u: Delay<Bits<16>, 2>,        // u, to meet the differences at the multipliers (UF)
         v: Delay<Bits<16>, { 4 + sm_mul::LATENCY }>, // v, to meet b − a (UF)
         // stage 1: the texels widened (UW in 16 bits), the two bases (UW in 32)
@@ -74,14 +76,17 @@ crate::block! {
         // 16)
         s7_e: DFF<SBits<17>>,
         s7_a: DFF<Bits<17>>,
-        // stages 9–12: |b − a|·v < 2^(W+2F), a carried
+        s7_ah: DFF<Bits<17>>, // a' + 2^(F−D−1) < 2^16 + 2^15 (U17), exact
+        // stages 9–12: |b − a|·v < 2^(W+2F), a and a_h carried (a block reading only one output keeps one of them)
         mul2: SmMul<17>,
         a: Delay<Bits<17>, { sm_mul::LATENCY }>,
+        ah: Delay<Bits<17>, { sm_mul::LATENCY }>,
         w_ad: Signal<Local, Bits<17>>,   // a >> D (U(W+F−D)), truncated
         w_bd: Signal<Local, Bits<17>>,   // b >> D, truncated
         w_a: Signal<Local, Bits<32>>,    // a'·2^F (U(W+2F−D))
+        w_ah: Signal<Local, Bits<32>>,   // a'_h·2^F = a'·2^F + 2^(2F−D−1) (U(W+2F−D+1))
         w_wide: Signal<Local, Bits<32>>, // a'·2^F ± |b' − a'|·v ∈ 0..2^(W+2F−D) (≤ 25 bits), exact
-        w_r: Signal<Local, Bits<32>>,    // that + 2^(2F−D−1), < 2^(W+2F−D), exact
+        w_r: Signal<Local, Bits<32>>,    // a'_h·2^F ± |b' − a'|·v = wide + 2^(2F−D−1) < 2^26, exact
         // stage 13: the top W bits of W + 2F − D: truncation of the rounded sum, so round half up overall; and wide
         s11_out: DFF<Bits<W>>,
         s11_wide: DFF<Bits<32>>,
@@ -107,7 +112,7 @@ impl<const W: usize, const F: usize, const D: usize> Default for BilinearUnit<W,
             shift_f: Constant::new(Bits::from(F as u64)),
             shift_d: Constant::new(Bits::from(D as u64)),
             shift_out: Constant::new(Bits::from((2 * F - D) as u64)),
-            half: Constant::new(Bits::from(1u64 << (2 * F - D - 1))),
+            half: Constant::new(Bits::from(1u64 << (F - D - 1))),
             u: Default::default(),
             v: Default::default(),
             s1_t00: Default::default(),
@@ -132,11 +137,14 @@ impl<const W: usize, const F: usize, const D: usize> Default for BilinearUnit<W,
             w_sb: Default::default(),
             s7_e: Default::default(),
             s7_a: Default::default(),
+            s7_ah: Default::default(),
             mul2: Default::default(),
             a: Default::default(),
+            ah: Default::default(),
             w_ad: Default::default(),
             w_bd: Default::default(),
             w_a: Default::default(),
+            w_ah: Default::default(),
             w_wide: Default::default(),
             w_r: Default::default(),
             s11_out: Default::default(),
@@ -149,7 +157,7 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
     #[hdl_gen]
     fn update(&mut self) {
         clock!(self, clock, u, v, s1_t00, s1_t10, s1_t01, s1_t11, s1_b0, s1_b1, s2_d0, s2_d1, s2_b0, s2_b1);
-        clock!(self, clock, mul0, mul1, b0, b1, s6_a, s6_b, s7_e, s7_a, mul2, a, s11_out, s11_wide);
+        clock!(self, clock, mul0, mul1, b0, b1, s6_a, s6_b, s7_e, s7_a, s7_ah, mul2, a, ah, s11_out, s11_wide);
         self.u.d.next = bit_cast::<16, F>(self.ublend.val()); // UF in 16, widening
         self.v.d.next = bit_cast::<16, F>(self.vblend.val()); // UF in 16, widening
 
@@ -193,19 +201,24 @@ impl<const W: usize, const F: usize, const D: usize> Logic for BilinearUnit<W, F
         self.w_bd.next = self.s6_b.q.val() >> self.shift_d.val(); // the same
         self.s7_e.d.next = self.w_bd.val() - self.w_ad.val(); // S(W+F−D), |b' − a'| < 2^16: wrapping in 17 bits to its two's complement
         self.s7_a.d.next = self.w_ad.val();
-        // stages 9–12: |b − a|·v, a beside
+        self.s7_ah.d.next = self.w_ad.val() + self.half.val(); // + 2^(F−D−1): < 2^17, exact
+
+        // stages 9–12: |b − a|·v, a and a_h beside
         self.mul2.x.next = self.s7_e.q.val();
         self.mul2.w.next = self.v.q.val();
         self.a.d.next = self.s7_a.q.val();
-        // stage 13: a'·2^F ± |b' − a'|·v (wide), + 2^(2F−D−1), then bits 2F − D.. (truncation of the rounded sum:
-        // round half up)
+        self.ah.d.next = self.s7_ah.q.val();
+        // stage 13: a'·2^F ± |b' − a'|·v (wide); a'_h·2^F ± |b' − a'|·v (wide + 2^(2F−D−1)), then its bits
+        // 2F − D.. (truncation of the rounded sum: round half up)
         self.w_a.next = bit_cast::<32, 17>(self.a.q.val()) << self.shift_f.val(); // U17 in 32, widening, then · 2^F
+        self.w_ah.next = bit_cast::<32, 17>(self.ah.q.val()) << self.shift_f.val(); // the same
         if self.mul2.neg.val() {
             self.w_wide.next = self.w_a.val() - self.mul2.p.val(); // U(W+2F−D), exact (a weighted mean)
+            self.w_r.next = self.w_ah.val() - self.mul2.p.val(); // that + 2^(2F−D−1): < 2^26, exact
         } else {
             self.w_wide.next = self.w_a.val() + self.mul2.p.val(); // the same
+            self.w_r.next = self.w_ah.val() + self.mul2.p.val(); // the same
         }
-        self.w_r.next = self.w_wide.val() + self.half.val(); // + 2^(2F−D−1): < 2^26, exact
         self.s11_out.d.next = self.w_r.val().get_bits::<W>(self.shift_out.val().index()); // >> (2F − D): UW, the rounding's floor
         self.s11_wide.d.next = self.w_wide.val();
         self.out.next = self.s11_out.q.val();
