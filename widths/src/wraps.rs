@@ -89,7 +89,7 @@ pub const WAIVED: &[Waived] = &[
     w("BilinearUnit", "w_r", Bound, "a'_h·2^F ± |b' − a'|·v is the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
     w("BilinearUnit", "s11_out.d", Bound, "the rounded weighted mean of UW values shifted down by 2F − D is at most 2^W − 1"),
     w("Blend", "w_sum", Bound, "α·s + (255 − α)·d ≤ 255·255 = 65,025: the two products share α"),
-    w("Blend", "s3_t.d", Bound, "w_sum + 128 ≤ 65,153"),
+    w("Blend", "s3b_t.d", Bound, "the sum held in s3_s (≤ 65,025, as w_sum) + 128 ≤ 65,153"),
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),
     w("Lod", "s6_addr.d", Split, "the table's address: the 8 bits below m's leading one once the shift has put it at bit 24; \
         the leading one itself is dropped on purpose, the bits below bit 16 truncated"),
