@@ -69,6 +69,12 @@ pub const WAIVED: &[Waived] = &[
     w("BilinearUnit", "s6_a.d", Bound, BILINEAR_MEAN),
     w("Dot3", "s2b_lo.d", Split, "a product's low 12 bits; its high 11 beside it in s2b_hi (the copy in two registers, not one: \
         yosys 0.23's iCE40 DSP pass crashes on a whole second register behind a product's first)"),
+    w("Dot3", "w_tlo", Modular, "−lo modulo 2^12 (~lo + 1): −p's low 12 bits; it wraps at lo = 0 only, to 0, its carry the \
+        high half's [lo = 0] (s2b_z)"),
+    w("Dot3", "w_thi", Modular, "~hi + [lo = 0] modulo 2^13: −p's bits 12..24 in two's complement; it wraps at p = 0 only, to 0"),
+    w("Dot3", "w_partial", Bound, "each term is ±|n|·|l| with |n|·|l| ≤ 2^22 (s2_p, proven): two within ±2^23; intervals see each \
+        term as its two halves, the high one's sign unknown to them"),
+    w("Dot3", "s4_sum.d", Bound, "three terms ±|n|·|l|, each |n|·|l| ≤ 2^22 (s2_p, proven): within ±3·2^22 < 2^24 (as w_partial)"),
     w("Gloss", "s2b_m_lo.d", Split, "k·t's low 10 bits; its high 9 beside it in s2b_m_hi (two registers: see Dot3)"),
     w("Gloss", "s4b_q_lo.d", Split, "Q = (L·L) >> 10's low 5 bits; its high 5 beside it in s4b_q_hi (two registers: see Dot3)"),
     w("Gloss", "s6b_lo.d", Split, "C·(L − Q)'s low 9 bits; its high 9 beside it in s6b_hi (two registers: see Dot3)"),
@@ -91,6 +97,10 @@ pub const WAIVED: &[Waived] = &[
     w("Blend", "w_sum", Bound, "α·s + (255 − α)·d ≤ 255·255 = 65,025: the two products share α"),
     w("Blend", "s3b_t.d", Bound, "the sum held in s3_s (≤ 65,025, as w_sum) + 128 ≤ 65,153"),
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),
+    w("Lod", "w_grp", Split, "five bits of m, a slice at 5g (g = 0..4, the loop's index)"),
+    w("Lod", "s5c_mc.d", Bound, "m << 5·(4 − g) where groups 4 .. g + 1 are zero, so m < 2^(5g + 5) and the shift loses no one"),
+    w("Lod", "s5c_e.d", Modular, "16 − 5·(4 − g) − lp in 6-bit two's complement, lp ≤ 4 the leading one's place: −8 ..= 16 \
+        (−8 is 56), wrapping on purpose below 0"),
     w("Lod", "s6_addr.d", Split, "the table's address: the 8 bits below m's leading one once the shift has put it at bit 24; \
         the leading one itself is dropped on purpose, the bits below bit 16 truncated"),
     w("Lod", "w_frac", Split, "frac(λ) in 8 bits: λ's bits 9..2 (Sq5.10), the integer part above them read apart (w_int), \
@@ -359,8 +369,11 @@ pub const WAIVED: &[Waived] = &[
     // polar
     w("PolarShade", "w_d", Modular, "R − Q modulo 256: the angle difference goes round the circle (the seed's subtractor [16])"),
     w("PolarShade", "s10_shade.d", Bound, "a clamp [28]: the low 8 bits only where the sign (bit 10) and bits 9..8 are clear"),
-    w("Power", "s4_f.d", Split, "g's fraction: EB bits of e + 2^(k − 1) from bit k = 2 + LF − EB (6..13 in the unit); its \
-        integer part, above, is taken beside it"),
+    w("Power", "s3b_lo.d", Split, "e's low 12 bits; its high 11 beside it in s3b_hi (two registers: see Dot3)"),
+    w("Power", "w_f", Modular, "g mod 2^EB = ((e >> k) mod 2^EB + e_(k−1)) mod 2^EB: g's low bits, wrapping on purpose; the \
+        carry out (s5_c) goes to n"),
+    w("Power", "s4_f.d", Split, "(e >> k) mod 2^EB: EB bits of e from bit k = 2 + LF − EB (6..13 in the unit), a slice; the \
+        bits above are taken beside it (s4_m)"),
     w("Power", "s6_w.d", Bound, "E >> (n + 6) with E ≤ 32,640 (the exp table's largest) and n + 6 ≥ 6: ≤ 510; only the \
         shift register's reset zero, seen by bubbles, gives more"),
     w("Power", "w_w1", Bound, "(E >> (n + 6)) + 1 ≤ 511 (s6_w)"),

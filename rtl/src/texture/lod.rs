@@ -2,11 +2,13 @@
 //! derivatives of u and v (Sq8.8, texels of level 0 a pixel), the map's side 2^n and the bias (Sq3.8, levels), the
 //! level ⌊λ⌋, frac(λ) in 8 bits and the nearest level ⌊λ + ½⌋, λ = log2 ρ + bias clamped to [0, n]; see
 //! `vectors::lod` for the exact recipe. ρ² comes from four squarers, log2 from the leading one of ρ² and a 256-entry
-//! table of its next 8 bits. Latency 13: magnitudes; their saturation to U16; the squarers' operand register; the
-//! squares; the two sums; their comparison; the larger; the leading one; the normalising shift; the table (its read
-//! register) beside the exponent plus the bias; the table's output register; λ; the clamps. (With the comparison and the
+//! table of its next 8 bits. Latency 14: magnitudes; their saturation to U16; the squarers' operand register; the
+//! squares; the two sums; their comparison; the larger; the leading one within each group of five bits; the first
+//! group with one, and the shift by whole groups; the rest of the normalising shift; the table (its read register)
+//! beside the exponent plus the bias; the table's output register; λ; the clamps. (With the comparison and the
 //! choice in one stage on 33-bit sums, the UP5K placed the unit at 41.5 MHz, that path the critical one; with the
-//! negation and the saturation in one stage, 44.6 MHz.)
+//! negation and the saturation in one stage, 44.6 MHz. With the leading one of all 25 bits found in one stage, the
+//! trilinear pipelines' critical path on the ECP5 was that stage: 3.56 ns of logic, 3.58 ns of routing, 140 MHz.)
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{Sq3_8, Sq5_10, Sq8_8, Uq0_9, U16, U8};
@@ -14,7 +16,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 13;
+pub const LATENCY: usize = 14;
 
 /// The table: entry f = round(log2(1 + (f + ½)/256)·2^9), the log of the midpoint of the mantissa's bin. The
 /// model's `vectors::lod::table_entry` is the same formula written apart; a test compares the two entry by entry.
@@ -80,12 +82,18 @@ crate::stream_block! {
         s4_ly: DFF<Bits<25>>,
         // stage 4b: m = max(L_x, L_y) ≈ ρ²·2^8
         s4b_m: DFF<Bits<25>>,
-        // stage 5: the shift that puts m's leading one at bit 24 (0..24), e = p − 8 (−8..16, two's complement: the
-        // integer part of 2λ before the bias), and whether m ≠ 0 (λ > −∞)
-        s5_sh: DFF<Bits<5>>,
-        s5_e: DFF<Bits<6>>,
+        // stage 5: m, and for each group of five bits (g = 4: bits 24..20, … g = 0: bits 4..0) whether it holds a one
+        // and the leading one's place below the group's top (0..4)
         s5_m: DFF<Bits<25>>,
-        s5_big: DFF<Bit>,
+        s5_any: [DFF<Bit>; 5],
+        s5_lp: [DFF<Bits<3>>; 5],
+        // stage 5c: m shifted by the first such group's 5·(4 − g) (U25, the bits shifted out are zeros above its
+        // leading one), the rest of the shift (0..4), e = p − 8 (−8..16, two's complement: the integer part of 2λ
+        // before the bias), and whether m ≠ 0 (λ > −∞)
+        s5c_mc: DFF<Bits<25>>,
+        s5c_fine: DFF<Bits<3>>,
+        s5c_e: DFF<Bits<6>>,
+        s5c_big: DFF<Bit>,
         // stage 6: the table's address (the 8 bits below the leading one) and e
         s6_addr: DFF<U8>,
         s6_e: DFF<Bits<6>>,
@@ -106,11 +114,13 @@ crate::stream_block! {
         s9_level: DFF<Bits<4>>,
         s9_frac: DFF<U8>,
         s9_near: DFF<Bits<4>>,
-        n_dly: Delay<Bits<4>, 12>, // log_side beside the stages up to λ
-        b_dly: Delay<Sq3_8, 9>, // the bias beside the stages up to the table's address
+        n_dly: Delay<Bits<4>, 13>, // log_side beside the stages up to λ
+        b_dly: Delay<Sq3_8, 10>, // the bias beside the stages up to the table's address
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
         w_mag: [Signal<Local, Bits<17>>; 4],
         w_sq: [Signal<Local, Bits<32>>; 4],
+        w_grp: [Signal<Local, Bits<5>>; 5],
+        w_lp6: Signal<Local, Bits<6>>,
         w_norm: Signal<Local, Bits<25>>,
         w_e16: Signal<Local, Sq5_10>,
         w_es: Signal<Local, Sq5_10>,
@@ -129,8 +139,8 @@ impl Logic for Lod {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s3_lx, s3_ly, s4_gt, s4_lx, s4_ly, s4b_m, s5_sh, s5_e, s5_m, s5_big, s6_addr, s6_e, s6_big,
-            s7_t, s7_eb, s7_big, s7r_t, s7r_eb, s7r_big, s8_l, s8_big, s9_level, s9_frac, s9_near
+            self, clock, s3_lx, s3_ly, s4_gt, s4_lx, s4_ly, s4b_m, s5_m, s5c_mc, s5c_fine, s5c_e, s5c_big, s6_addr,
+            s6_e, s6_big, s7_t, s7_eb, s7_big, s7r_t, s7r_eb, s7r_big, s8_l, s8_big, s9_level, s9_frac, s9_near
         );
         clock!(self, clock, n_dly, b_dly, valid);
         self.valid.d.next = self.valid_in.val();
@@ -186,96 +196,64 @@ impl Logic for Lod {
         } else {
             self.s4b_m.d.next = self.s4_ly.q.val();
         }
-        // stage 5: the leading one of m among bits 24 ..= 0 (none: m = 0, λ = −∞); each branch writes the shift and
-        // e = p − 8 as constants (e two's complement in 6 bits: −8 is 56)
+        // stage 5: m's 25 bits as five groups of five, g = 4 (bits 24..20) down to 0 (bits 4..0): whether each holds a
+        // one, and its leading one's place below the group's top (0..4)
         self.s5_m.d.next = self.s4b_m.q.val();
-        self.s5_big.d.next = true;
-        if self.s4b_m.q.val().get_bit(24) {
-            self.s5_sh.d.next = 0.into();
-            self.s5_e.d.next = 16.into();
-        } else if self.s4b_m.q.val().get_bit(23) {
-            self.s5_sh.d.next = 1.into();
-            self.s5_e.d.next = 15.into();
-        } else if self.s4b_m.q.val().get_bit(22) {
-            self.s5_sh.d.next = 2.into();
-            self.s5_e.d.next = 14.into();
-        } else if self.s4b_m.q.val().get_bit(21) {
-            self.s5_sh.d.next = 3.into();
-            self.s5_e.d.next = 13.into();
-        } else if self.s4b_m.q.val().get_bit(20) {
-            self.s5_sh.d.next = 4.into();
-            self.s5_e.d.next = 12.into();
-        } else if self.s4b_m.q.val().get_bit(19) {
-            self.s5_sh.d.next = 5.into();
-            self.s5_e.d.next = 11.into();
-        } else if self.s4b_m.q.val().get_bit(18) {
-            self.s5_sh.d.next = 6.into();
-            self.s5_e.d.next = 10.into();
-        } else if self.s4b_m.q.val().get_bit(17) {
-            self.s5_sh.d.next = 7.into();
-            self.s5_e.d.next = 9.into();
-        } else if self.s4b_m.q.val().get_bit(16) {
-            self.s5_sh.d.next = 8.into();
-            self.s5_e.d.next = 8.into();
-        } else if self.s4b_m.q.val().get_bit(15) {
-            self.s5_sh.d.next = 9.into();
-            self.s5_e.d.next = 7.into();
-        } else if self.s4b_m.q.val().get_bit(14) {
-            self.s5_sh.d.next = 10.into();
-            self.s5_e.d.next = 6.into();
-        } else if self.s4b_m.q.val().get_bit(13) {
-            self.s5_sh.d.next = 11.into();
-            self.s5_e.d.next = 5.into();
-        } else if self.s4b_m.q.val().get_bit(12) {
-            self.s5_sh.d.next = 12.into();
-            self.s5_e.d.next = 4.into();
-        } else if self.s4b_m.q.val().get_bit(11) {
-            self.s5_sh.d.next = 13.into();
-            self.s5_e.d.next = 3.into();
-        } else if self.s4b_m.q.val().get_bit(10) {
-            self.s5_sh.d.next = 14.into();
-            self.s5_e.d.next = 2.into();
-        } else if self.s4b_m.q.val().get_bit(9) {
-            self.s5_sh.d.next = 15.into();
-            self.s5_e.d.next = 1.into();
-        } else if self.s4b_m.q.val().get_bit(8) {
-            self.s5_sh.d.next = 16.into();
-            self.s5_e.d.next = 0.into();
-        } else if self.s4b_m.q.val().get_bit(7) {
-            self.s5_sh.d.next = 17.into();
-            self.s5_e.d.next = 63.into(); // -1
-        } else if self.s4b_m.q.val().get_bit(6) {
-            self.s5_sh.d.next = 18.into();
-            self.s5_e.d.next = 62.into(); // -2
-        } else if self.s4b_m.q.val().get_bit(5) {
-            self.s5_sh.d.next = 19.into();
-            self.s5_e.d.next = 61.into(); // -3
-        } else if self.s4b_m.q.val().get_bit(4) {
-            self.s5_sh.d.next = 20.into();
-            self.s5_e.d.next = 60.into(); // -4
-        } else if self.s4b_m.q.val().get_bit(3) {
-            self.s5_sh.d.next = 21.into();
-            self.s5_e.d.next = 59.into(); // -5
-        } else if self.s4b_m.q.val().get_bit(2) {
-            self.s5_sh.d.next = 22.into();
-            self.s5_e.d.next = 58.into(); // -6
-        } else if self.s4b_m.q.val().get_bit(1) {
-            self.s5_sh.d.next = 23.into();
-            self.s5_e.d.next = 57.into(); // -7
-        } else if self.s4b_m.q.val().get_bit(0) {
-            self.s5_sh.d.next = 24.into();
-            self.s5_e.d.next = 56.into(); // -8
+        for g in 0..5 {
+            self.s5_lp[g].clock.next = self.clock.val();
+            self.s5_any[g].clock.next = self.clock.val();
+            self.w_grp[g].next = self.s4b_m.q.val().get_bits::<5>(5 * g); // m's bits 5g .. 5g + 4: U5, a slice
+            self.s5_any[g].d.next = self.w_grp[g].val().any();
+            if self.w_grp[g].val().get_bit(4) {
+                self.s5_lp[g].d.next = 0.into();
+            } else if self.w_grp[g].val().get_bit(3) {
+                self.s5_lp[g].d.next = 1.into();
+            } else if self.w_grp[g].val().get_bit(2) {
+                self.s5_lp[g].d.next = 2.into();
+            } else if self.w_grp[g].val().get_bit(1) {
+                self.s5_lp[g].d.next = 3.into();
+            } else {
+                self.s5_lp[g].d.next = 4.into(); // bit 0, or no one (the any flag says which)
+            }
+        }
+        // stage 5c: the first group with a one gives the coarse shift 5·(4 − g) (m << it), the fine shift (its place)
+        // and e = p − 8 = 16 − shift (−8..16, two's complement in 6 bits: −8 is 56); none: m = 0, λ = −∞
+        self.s5c_big.d.next = true;
+        if self.s5_any[4].q.val() {
+            self.s5c_mc.d.next = self.s5_m.q.val();
+            self.s5c_fine.d.next = self.s5_lp[4].q.val();
+            self.w_lp6.next = bit_cast::<6, 3>(self.s5_lp[4].q.val()); // U3 widened to U6, exact
+            self.s5c_e.d.next = 16 - self.w_lp6.val(); // 12..16
+        } else if self.s5_any[3].q.val() {
+            self.s5c_mc.d.next = self.s5_m.q.val() << 5; // m < 2^20 here: U25, exact
+            self.s5c_fine.d.next = self.s5_lp[3].q.val();
+            self.w_lp6.next = bit_cast::<6, 3>(self.s5_lp[3].q.val()); // U3 widened to U6, exact
+            self.s5c_e.d.next = 11 - self.w_lp6.val(); // 7..11
+        } else if self.s5_any[2].q.val() {
+            self.s5c_mc.d.next = self.s5_m.q.val() << 10; // m < 2^15 here: U25, exact
+            self.s5c_fine.d.next = self.s5_lp[2].q.val();
+            self.w_lp6.next = bit_cast::<6, 3>(self.s5_lp[2].q.val()); // U3 widened to U6, exact
+            self.s5c_e.d.next = 6 - self.w_lp6.val(); // 2..6
+        } else if self.s5_any[1].q.val() {
+            self.s5c_mc.d.next = self.s5_m.q.val() << 15; // m < 2^10 here: U25, exact
+            self.s5c_fine.d.next = self.s5_lp[1].q.val();
+            self.w_lp6.next = bit_cast::<6, 3>(self.s5_lp[1].q.val()); // U3 widened to U6, exact
+            self.s5c_e.d.next = 1 - self.w_lp6.val(); // 1 − lp: −3..1 (61..63, 0, 1), wrapping on purpose to S6
         } else {
-            self.s5_sh.d.next = 0.into();
-            self.s5_e.d.next = 0.into();
-            self.s5_big.d.next = false;
+            self.s5c_mc.d.next = self.s5_m.q.val() << 20; // m < 2^5 here: U25, exact
+            self.s5c_fine.d.next = self.s5_lp[0].q.val();
+            self.w_lp6.next = bit_cast::<6, 3>(self.s5_lp[0].q.val()); // U3 widened to U6, exact
+            self.s5c_e.d.next = 60 - self.w_lp6.val(); // −4 − lp: −8..−4 (56..60)
+            if !self.s5_any[0].q.val() {
+                self.s5c_big.d.next = false;
+            }
         }
         // stage 6: m << shift puts the leading one at bit 24 (U25, the bits shifted out are zeros above it); the
         // table address is the 8 bits below it (truncating the rest)
-        self.w_norm.next = self.s5_m.q.val() << self.s5_sh.q.val();
+        self.w_norm.next = self.s5c_mc.q.val() << self.s5c_fine.q.val();
         self.s6_addr.d.next = self.w_norm.val().get_bits::<8>(16); // bits 23..16: the mantissa, truncated to 8 bits
-        self.s6_e.d.next = self.s5_e.q.val();
-        self.s6_big.d.next = self.s5_big.q.val();
+        self.s6_e.d.next = self.s5c_e.q.val();
+        self.s6_big.d.next = self.s5c_big.q.val();
         // stage 7: the table; beside it (e << 9) + (bias << 2), each sign-extended to 16 bits by an OR on its sign
         self.log2.address.next = self.s6_addr.q.val();
         self.s7_t.d.next = self.log2.data.val();
