@@ -1,7 +1,7 @@
 //! `polar_pipeline`: US 6,819,319's first embodiment, one pixel per clock, built from the unit blocks themselves:
 //! polar_shade(S, R, Q, k1, k2, k3) → power(p) → α → blend(src, dst).
 //! p rides beside the shade unit in a DFF chain; the mode and the colours wait in the `DelayedBlend`.
-//! Latency 28 = polar_shade 10 + power 12 + blend 6.
+//! Latency 29 = polar_shade 11 + power 12 + blend 6.
 
 use crate::delayed_blend::DelayedBlend;
 use crate::polar_shade::PolarShade;
@@ -10,9 +10,9 @@ use crate::prim::delay::Delay;
 use crate::prim::q::U8;
 use rust_hdl::prelude::*;
 
-pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 10
-pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 22
-pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 28
+pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 11
+pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 23
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 29
 
 /// The signals the block's Verilog leaves unused on purpose (`StreamUnit::waivers`).
 const WAIVERS: &[crate::stream::Waiver] = &[(
