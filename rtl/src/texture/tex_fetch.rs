@@ -2,12 +2,14 @@
 //! 128 × 128, or with `L` = 8 up to 256 × 256) in four 2×2-interleaved banks, one bilinear footprint read a clock,
 //! written texel by texel through the same stream (`we`). See `vectors::tex_fetch` for the layout and the ports.
 //!
-//! Latency 7: the level's side and the coordinates taken modulo it (and the write's); each bank's column and its
-//! row shifted to the level's row length, with the level's base; the bank addresses (and the write's address and
-//! bank); the banks' read (their own register); the four words registered (a block RAM's output straight into a
+//! Latency 7: the level's side and the coordinates taken modulo it (and the write's); each bank column's word
+//! column plus the level's base, and each bank row's word row shifted to the level's row length; the bank addresses,
+//! that sum plus the row (and the write's address and bank); the banks' read (their own register); the four words registered (a block RAM's output straight into a
 //! select is slow: `height_fetch` measured it); the four words again; each texel picked from the four words. (On
 //! the ECP5 the first register of the words is the DP16KD's output register; with the select behind it, that read
-//! into the select was the nearest pipelines' critical path, 1.61 ns of logic and 4.41 ns of routing, 166 MHz.)
+//! into the select was the nearest pipelines' critical path, 1.61 ns of logic and 4.41 ns of routing, 166 MHz. The
+//! base joins the column a clock before the row: base + row + column in one clock, two adders in a row, was the next
+//! one, 1.96 ns of logic and 3.94 ns of routing, 170 MHz.)
 //!
 //! The banks are single-port (`SpRam`): `synth_ice40 -spram` puts each in one of the UP5K's four SPRAMs, so a
 //! 128 × 128 map and its chain (43.7 KB) fit a part whose 30 EBR hold 15 KB.
@@ -172,22 +174,20 @@ crate::stream_block! {
         s1_wx: DFF<U8>,
         s1_wy: DFF<U8>,
         s1_wdata: DFF<U16>,
-        // stage 2: per parity p the column that bank column p reads, halved (U7 in 15), and the row likewise,
-        // shifted to its place (row·2^(m−1) < 2^(2L−1), U15 at L = 8); the level's base (U15); the parities for the
-        // select. The addresses are 15 bits whatever the banks' A (a bank takes its A low bits, all of the address
-        // where the level is held; yosys drops the rest)
-        s2_col: [DFF<Bits<15>>; 2],
+        // stage 2: per parity p the level's base plus the column that bank column p reads, halved (base ≤ 5,462 at
+        // L = 8, the column < 2^7: U15); the row likewise, halved and shifted to its place (row·2^(m−1) < 2^(2L−1),
+        // U15 at L = 8); the parities for the select. The addresses are 15 bits whatever the banks' A (a bank takes
+        // its A low bits, all of the address where the level is held; yosys drops the rest)
+        s2_bc: [DFF<Bits<15>>; 2],
         s2_row: [DFF<Bits<15>>; 2],
-        s2_base: DFF<Bits<15>>,
         s2_px: [DFF<Bit>; 2],
         s2_py: [DFF<Bit>; 2],
         s2_rd: DFF<Bit>,
         s2_we: DFF<Bit>,
         s2_wpx: DFF<Bit>,
         s2_wpy: DFF<Bit>,
-        s2_wcol: DFF<Bits<15>>,
+        s2_wbc: DFF<Bits<15>>,
         s2_wrow: DFF<Bits<15>>,
-        s2_wbase: DFF<Bits<15>>,
         s2_wdata: DFF<U16>,
         // stage 3: the four bank addresses, the write's in the bank it writes (registered: the banks read and write
         // them)
@@ -230,6 +230,8 @@ crate::stream_block! {
         w_wrm: Signal<Local, Bits<15>>,
         w_base: Signal<Local, Bits<15>>,
         w_wbase: Signal<Local, Bits<15>>,
+        w_bc: [Signal<Local, Bits<15>>; 2],
+        w_wbc: Signal<Local, Bits<15>>,
         w_sum: [Signal<Local, Bits<15>>; 4],
         w_kx: [Signal<Local, Bit>; 4],
         w_ky: [Signal<Local, Bit>; 4],
@@ -241,14 +243,14 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s1_m, s1_rd, s1_we, s1_wm, s1_wx, s1_wy, s1_wdata, s2_base, s2_rd, s2_we, s2_wpx, s2_wpy,
-            s2_wcol, s2_wrow, s2_wbase, s2_wdata, s3_rd, wr_data, s4_rd, s5_rd, s5b_rd
+            self, clock, s1_m, s1_rd, s1_we, s1_wm, s1_wx, s1_wy, s1_wdata, s2_rd, s2_we, s2_wpx, s2_wpy, s2_wbc,
+            s2_wrow, s2_wdata, s3_rd, wr_data, s4_rd, s5_rd, s5b_rd
         );
         clock!(self, clock, valid);
         for n in 0..2 {
             self.s1_x[n].clock.next = self.clock.val();
             self.s1_y[n].clock.next = self.clock.val();
-            self.s2_col[n].clock.next = self.clock.val();
+            self.s2_bc[n].clock.next = self.clock.val();
             self.s2_row[n].clock.next = self.clock.val();
             self.s2_px[n].clock.next = self.clock.val();
             self.s2_py[n].clock.next = self.clock.val();
@@ -316,8 +318,12 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.w_c15[1].next = bit_cast::<15, 7>(self.w_cx[1].val().get_bits::<7>(1));
         self.w_r15[0].next = bit_cast::<15, 7>(self.w_ry[0].val().get_bits::<7>(1));
         self.w_r15[1].next = bit_cast::<15, 7>(self.w_ry[1].val().get_bits::<7>(1));
+        // where the level starts in every bank: base(m) = 1 + (4^(m−1) − 1)/3 for the whole chain (`bases`)
+        self.read_base.m.next = self.s1_m.q.val(); // m ≤ L ≤ 8
+        self.w_base.next = self.read_base.base.val();
         for n in 0..2 {
-            self.s2_col[n].d.next = self.w_c15[n].val();
+            self.w_bc[n].next = self.w_base.val() + self.w_c15[n].val(); // ≤ 5,462 + 127: U15, exact
+            self.s2_bc[n].d.next = self.w_bc[n].val();
             // (y >> 1)·2^(m−1) as ((y >> 1) << m) >> 1, which is 0 for m = 0 with no case of its own: y >> 1 < 2^m−1
             // so (y >> 1) << m < 2^(2m−1) ≤ 2^15, U15, exact, and the last shift drops a zero
             self.w_rm[n].next = self.w_r15[n].val() << self.s1_m.q.val();
@@ -327,31 +333,28 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.s2_px[1].d.next = self.s1_x[1].q.val().get_bit(0);
         self.s2_py[0].d.next = self.s1_y[0].q.val().get_bit(0);
         self.s2_py[1].d.next = self.s1_y[1].q.val().get_bit(0);
-        // where the level starts in every bank: base(m) = 1 + (4^(m−1) − 1)/3 for the whole chain (`bases`)
-        self.read_base.m.next = self.s1_m.q.val(); // m ≤ L ≤ 8
-        self.w_base.next = self.read_base.base.val();
-        self.s2_base.d.next = self.w_base.val();
         self.s2_rd.d.next = self.s1_rd.q.val() & self.read_base.held.val(); // a level it does not hold reads as zeros
-                                                                            // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
+
+        // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
         self.w_wc15.next = bit_cast::<15, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 15
         self.w_wr15.next = bit_cast::<15, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 15
-        self.s2_wcol.d.next = self.w_wc15.val();
         self.w_wrm.next = self.w_wr15.val() << self.s1_wm.q.val(); // U15, exact, as the read's
         self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U14, exact
         self.write_base.m.next = self.s1_wm.q.val(); // m ≤ L ≤ 8
         self.w_wbase.next = self.write_base.base.val();
-        self.s2_wbase.d.next = self.w_wbase.val();
+        self.w_wbc.next = self.w_wbase.val() + self.w_wc15.val(); // ≤ 5,462 + 127: U15, exact
+        self.s2_wbc.d.next = self.w_wbc.val();
         self.s2_wpx.d.next = self.s1_wx.q.val().get_bit(0);
         self.s2_wpy.d.next = self.s1_wy.q.val().get_bit(0);
         self.s2_we.d.next = self.s1_we.q.val() & self.write_base.held.val(); // a level it does not hold: no write
         self.s2_wdata.d.next = self.s1_wdata.q.val();
 
-        // stage 3: bank (p, q) = p + 2q at base + row q + column p (< 5,462 at L = 7, < 21,846 at L = 8: U15, exact)
-        self.w_sum[0].next = self.s2_base.q.val() + self.s2_row[0].q.val() + self.s2_col[0].q.val();
-        self.w_sum[1].next = self.s2_base.q.val() + self.s2_row[0].q.val() + self.s2_col[1].q.val();
-        self.w_sum[2].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[0].q.val();
-        self.w_sum[3].next = self.s2_base.q.val() + self.s2_row[1].q.val() + self.s2_col[1].q.val();
-        self.w_wsum.next = self.s2_wbase.q.val() + self.s2_wrow.q.val() + self.s2_wcol.q.val(); // U15, exact
+        // stage 3: bank (p, q) = p + 2q at (base + column p) + row q (< 5,462 at L = 7, < 21,846 at L = 8: U15, exact)
+        self.w_sum[0].next = self.s2_bc[0].q.val() + self.s2_row[0].q.val();
+        self.w_sum[1].next = self.s2_bc[1].q.val() + self.s2_row[0].q.val();
+        self.w_sum[2].next = self.s2_bc[0].q.val() + self.s2_row[1].q.val();
+        self.w_sum[3].next = self.s2_bc[1].q.val() + self.s2_row[1].q.val();
+        self.w_wsum.next = self.s2_wbc.q.val() + self.s2_wrow.q.val(); // U15, exact
 
         // one address a bank a clock: the write's in the bank it writes, else the read's (a vector either reads or
         // writes, so nothing is lost), as a single-port RAM (the UP5K's SPRAM) needs it
