@@ -374,6 +374,9 @@ pub const WAIVED: &[Waived] = &[
         carry out (s5_c) goes to n"),
     w("Power", "s4_f.d", Split, "(e >> k) mod 2^EB: EB bits of e from bit k = 2 + LF − EB (6..13 in the unit), a slice; the \
         bits above are taken beside it (s4_m)"),
+    w("Power", "s4_m.d", Split, "e >> (k + EB)'s low 4 bits, a slice; stage 5 reads them only where s4_big says e >> (k + EB) ≤ \
+        9, where no bit above is set, and takes 9 elsewhere"),
+    w("Power", "w_m", Bound, "m + the carry ≤ 10: m = min(e >> (k + EB), 9) (s5_m takes s4_m only where it is ≤ 9)"),
     w("Power", "s6_w.d", Bound, "E >> (n + 6) with E ≤ 32,640 (the exp table's largest) and n + 6 ≥ 6: ≤ 510; only the \
         shift register's reset zero, seen by bubbles, gives more"),
     w("Power", "w_w1", Bound, "(E >> (n + 6)) + 1 ≤ 511 (s6_w)"),

@@ -1,22 +1,25 @@
 //! `power`: the power unit [30] of US 6,819,319's FIG. 3, `y = 255·(x/255)^p` with p = pw/4 (U6.2), by a log table,
-//! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 12:
-//! 1 inputs registered; 2 L(x) (table); 2b L again; 2c the multiplier's operands; 3 e = pw·L; 3b e again; 4 the rounding's pieces of g = round(e >> 6):
-//! e >> 6's low 8 bits, its rounding bit e₅ and min(e >> 14, 9); 5 f = g mod 256 = ((e >> 6) + e₅) mod 256 into the
-//! exp table, E(f), and the carry out of that sum; 5b E again, and n = min(g >> 8, 9) from the carry; 6 and 6c the barrel shift w = E >> (n + 6) in two steps, by the
+//! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 12: 1 inputs registered; 2
+//! L(x) (table); 2b L again; 2c the multiplier's operands; 3 e = pw·L; 3b e again; 4 the rounding's pieces of g =
+//! round(e >> 6): e >> 6's low 8 bits, its rounding bit e₅, e >> 14's low 4 bits and whether e >> 14 > 9; 5 m = min(e
+//! >> 14, 9); f = g mod 256 = ((e >> 6) + e₅) mod 256 into the exp table, E(f), and the carry out of that sum; 5b E
+//! again, and n = min(g >> 8, 9) from the carry; 6 and 6c the barrel shift w = E >> (n + 6) in two steps, by the
 //! shift's multiple of 4, then by the rest (a floor twice is the floor of the whole shift); 7 y = (w + 1) >> 1, which
-//! makes (E + 2^(n+6)) >> (n + 7), and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K
-//! placed the unit at 43.7 MHz; with the shift in one stage, polar_pipeline's critical path on the UP5K was the
-//! shift, 14 ns.) Stages 2b and 5b compute nothing: on the ECP5 each is a table's DP16KD output register, so
-//! neither the product nor the shift waits on a block RAM read (5.6 ns from the clock without it, 0.97 with it;
-//! polar_pipeline's critical path, 9.1 ns, was that read into the multiplier). Stage 2c is the MULT18X18D's own
-//! input register: without it that register took stage 2b, and the table's read without its output register into
-//! the multiplier was the critical path again (4.46 ns of logic, 1.77 ns of routing, 161 MHz). Stage 4 reads the product through
-//! slices and one comparison only: with g's rounding add there (23 bits) and n's saturation behind it, the product's
-//! route into that add was polar_pipeline's critical path on both parts (ECP5 3.56 ns logic + 3.99 ns routing,
-//! 132 MHz; UP5K 4.6 + 9.3 ns, 72 MHz). The add is 8 bits in stage 5, in front of the table's address; n's
-//! saturation waits for stage 5b (in stage 5, behind the carry, it was the UP5K's critical path: 57.8 MHz). Stage
-//! 3b copies the product: with stage 4 reading the SB_MAC16's output, the UP5K's critical path was that route into
-//! n's saturation (4.6 ns of logic, 9.3 ns of routing, 72.1 MHz).
+//! makes (E + 2^(n+6)) >> (n + 7), and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K placed
+//! the unit at 43.7 MHz; with the shift in one stage, polar_pipeline's critical path on the UP5K was the shift, 14 ns.)
+//! Stages 2b and 5b compute nothing: on the ECP5 each is a table's DP16KD output register, so neither the product nor
+//! the shift waits on a block RAM read (5.6 ns from the clock without it, 0.97 with it; polar_pipeline's critical path,
+//! 9.1 ns, was that read into the multiplier). Stage 2c is the MULT18X18D's own input register: without it that
+//! register took stage 2b, and the table's read without its output register into the multiplier was the critical path
+//! again (4.46 ns of logic, 1.77 ns of routing, 161 MHz). Stage 4 reads the product through slices and one comparison
+//! only: with g's rounding add there (23 bits) and n's saturation behind it, the product's route into that add was
+//! polar_pipeline's critical path on both parts (ECP5 3.56 ns logic + 3.99 ns routing, 132 MHz; UP5K 4.6 + 9.3 ns, 72
+//! MHz). The add is 8 bits in stage 5, in front of the table's address; n's saturation waits for stage 5b (in stage 5,
+//! behind the carry, it was the UP5K's critical path: 57.8 MHz), and m's for stage 5: in stage 4, yosys put the
+//! comparison on the flip-flops' set and reset pins, the UP5K's critical path (5.9 ns of logic, 7.1 ns of routing, 77.0
+//! MHz); stage 4 registers the comparison, stage 5 picks. Stage 3b copies the product: with stage 4 reading the
+//! SB_MAC16's output, the UP5K's critical path was that route into n's saturation (4.6 ns of logic, 9.3 ns of routing,
+//! 72.1 MHz).
 //!
 //! `Power<LF, EB>`: L with LF fraction bits and an exp table of 2^EB entries (`vectors::power::exact_with`); the
 //! unit and the polar pipeline have the defaults, LF = 12 and EB = 8, the other sizes are the width sweep's. The
@@ -60,11 +63,13 @@ crate::stream_block! {
         // second register behind a product's first (see `dot3`)
         s3b_lo: DFF<Bits<12>>,
         s3b_hi: DFF<Bits<11>>,
-        // stage 4: e >> k's low EB bits (U(EB)), the rounding bit e_(k−1), m = min(e >> (k + EB), 9) (U4)
+        // stage 4: e >> k's low EB bits (U(EB)), the rounding bit e_(k−1), e >> (k + EB)'s low 4 bits and whether
+        // it is above 9
         s4_f: DFF<Bits<EB>>,
         s4_r: DFF<Bit>,
         s4_m: DFF<Bits<4>>,
-        // stage 5: E(f) (U15), m and the carry out of f's sum
+        s4_big: DFF<Bit>,
+        // stage 5: E(f) (U15), m = min(e >> (k + EB), 9) (U4) and the carry out of f's sum
         s5_e: DFF<Bits<15>>,
         s5_m: DFF<Bits<4>>,
         s5_c: DFF<Bit>,
@@ -129,6 +134,7 @@ impl<const LF: usize, const EB: usize> Default for Power<LF, EB> {
             s4_f: Default::default(),
             s4_r: Default::default(),
             s4_m: Default::default(),
+            s4_big: Default::default(),
             s5_e: Default::default(),
             s5_m: Default::default(),
             s5_c: Default::default(),
@@ -159,7 +165,7 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
     fn update(&mut self) {
         dff_setup!(
             self, clock, s1_x, s1_pw, s2_l, s2_pw, s2b_l, s2b_pw, mop_l, mop_pw, s3_e, s3b_lo, s3b_hi, s4_f, s4_r,
-            s4_m, s5_e, s5_m, s5_c, s5b_e, s5b_sh, s6_t, s6_lo, s6_w, s7_y
+            s4_m, s4_big, s5_e, s5_m, s5_c, s5b_e, s5b_sh, s6_t, s6_lo, s6_w, s7_y
         );
         clock!(self, clock, zero_dly, pw0_dly, valid);
         self.valid.d.next = self.valid_in.val();
@@ -188,16 +194,14 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         self.s3b_lo.d.next = self.s3_e.q.val().get_bits::<12>(0); // bits 0..11, a slice
         self.s3b_hi.d.next = self.s3_e.q.val().get_bits::<11>(12); // bits 12..22, a slice
         self.w_e3.next = (bit_cast::<23, 11>(self.s3b_hi.q.val()) << 12) | bit_cast::<23, 12>(self.s3b_lo.q.val()); // U23
-                                                                                                                    // stage 4: g = (e + 2^(k−1)) >> k (round half up) = (e >> k) + e_(k−1), taken apart: e >> k's low EB bits, the
-                                                                                                                    // rounding bit, and e >> (k + EB) saturated (e ≤ 255·32,745 = 8,349,975: U23)
+
+        // stage 4: g = (e + 2^(k−1)) >> k (round half up) = (e >> k) + e_(k−1), taken apart: e >> k's low EB bits,
+        // the rounding bit, and e >> (k + EB)'s low bits and whether it is above 9 (e ≤ 255·32,745 = 8,349,975: U23)
         self.s4_f.d.next = self.w_e3.val().get_bits::<EB>(self.f_at.val().index()); // (e >> k) mod 2^EB, the split
         self.s4_r.d.next = self.w_e3.val().get_bit(self.r_at.val().index());
         self.w_n.next = self.w_e3.val().get_bits::<9>(self.n_at.val().index()); // e >> (k + EB) ≤ 509 (U9)
-        if self.w_n.val() > 9 {
-            self.s4_m.d.next = 9.into();
-        } else {
-            self.s4_m.d.next = self.w_n.val().get_bits::<4>(0); // ≤ 9: U4, exact
-        }
+        self.s4_m.d.next = self.w_n.val().get_bits::<4>(0); // the low 4 bits, a slice: read where e >> (k + EB) ≤ 9
+        self.s4_big.d.next = self.w_n.val() > 9;
         // stage 5: f = g mod 2^EB into the exp table; the carry out of that sum, and m, beside it
         if self.s4_r.q.val() {
             self.w_f.next = self.s4_f.q.val() + 1; // mod 2^EB, wrapping on purpose: g's low bits
@@ -207,7 +211,11 @@ impl<const LF: usize, const EB: usize> Logic for Power<LF, EB> {
         self.exp.address.next = self.w_f.val();
         self.s5_e.d.next = self.exp.data.val();
         self.s5_c.d.next = self.s4_r.q.val() & self.s4_f.q.val().all();
-        self.s5_m.d.next = self.s4_m.q.val();
+        if self.s4_big.q.val() {
+            self.s5_m.d.next = 9.into();
+        } else {
+            self.s5_m.d.next = self.s4_m.q.val(); // ≤ 9 here: U4, exact
+        }
         // stage 5b: n = min(g >> EB, 9) = min(m + carry, 9) (m = 9 stands for every e >> (k + EB) ≥ 9, where n is 9
         // with or without the carry); shift = n + 6 ≤ 15
         self.s5b_e.d.next = self.s5_e.q.val();
