@@ -399,9 +399,8 @@ pub const WAIVED: &[Waived] = &[
     w("TexBilinearColour", "colour_filter.t11", Split, "as colour_filter.t00"),
     w("TexFetch", "bank.address", Split, "the low A bits of the 13-bit word address: below 2^A for every level the memory holds (the \
         even levels end at word 1,093 of 2^11); a level it does not hold is never written and reads as zeros"),
-    w("LevelLerp", "w_sum", Bound, "b₀·2^8 ± |b₁ − b₀|·f: the minus only when b₁ < b₀, where |b₁ − b₀|·f ≤ b₀·255, so the sum is b₀·(2^8 − f) + b₁·f, a mean of two bytes times 2^8: 0 .. 65,280"),
-    w("LevelLerp", "w_r", Bound, "w_sum + 2^7 ≤ 65,408"),
-    w("LevelLerp", "s5_out.d", Split, "bits 8..15 of w_r ≤ 65,408: the rounded byte, nothing above it"),
+    w("LevelLerp", "w_sum", Bound, "b₀·2^8 + 2^7 ± |b₁ − b₀|·f: the minus only when b₁ < b₀, where |b₁ − b₀|·f ≤ b₀·255, so the sum is b₀·(2^8 − f) + b₁·f + 2^7, a mean of two bytes times 2^8 plus the half: 128 .. 65,408"),
+    w("LevelLerp", "s5_out.d", Split, "bits 8..15 of w_sum ≤ 65,408: the rounded byte, nothing above it"),
     w("TexTrilinear", "side_log2", Split, "the log_side field of the packed position word, read back as the U4 it was"),
     w("TexBilinear", "fetch.we", Split, "bit 0 of the write word (we, w_log2, wx, wy, wdata packed low to high), read back as the bit it was"),
     w("TexBilinear", "fetch.w_log2", Split, "a field of the packed write word, as fetch.we"),

@@ -461,7 +461,8 @@ pub mod level {
             pub b1: Signal<In, U8>,
             pub f: Signal<In, U8>,
             pub out: Signal<Out, U8>,
-            // stage 1: b₁ − b₀ (S9 in 16, two's complement), b₀·2^8 (U16 in 17), f beside them
+            // stage 1: b₁ − b₀ (S9 in 16, two's complement), b₀·2^8 + 2^7 (the rounding's half: U16 in 17), f beside
+            // them
             s1_d: DFF<SBits<16>>,
             s1_base: DFF<Bits<17>>,
             s1_f: DFF<U8>,
@@ -473,9 +474,10 @@ pub mod level {
             mul: SmMul<16>,
             base: Delay<Bits<17>, { sm_mul::LATENCY }>,
             w_prod: Signal<Local, Bits<17>>, // the product's low 17 bits: exact (< 2^16)
-            w_sum: Signal<Local, Bits<17>>,  // b₀·2^8 ± |b₁ − b₀|·f ∈ 0..=65280, exact (a mean of b₀, b₁ times 2^8)
-            w_r: Signal<Local, Bits<17>>,    // that + 2^7 ≤ 65408, exact
-            // the last stage: bits 8.. of the rounded sum (truncation of it: round half up overall)
+            w_sum: Signal<Local, Bits<17>>, // b₀·2^8 + 2^7 ± |b₁ − b₀|·f ∈ 128..=65408, exact (a mean of b₀, b₁ times 2^8, + 2^7)
+            // the last stage: bits 8.. of the rounded sum (truncation of it: round half up overall). The half is in
+            // the base from stage 1 on, so this stage is one add or subtract: the sum then its + 2^7, two adders in a
+            // row, was one of the trilinear pipelines' critical paths on the ECP5
             s5_out: DFF<U8>,
         }
     }
@@ -486,27 +488,27 @@ pub mod level {
             dff_setup!(self, clock, s1_d, s1_base, s1_f, s5_out);
             self.mul.clock.next = self.clock.val();
             self.base.clock.next = self.clock.val();
-            // stage 1: b₁ − b₀, wrapping in 16 bits to its two's complement; b₀·2^8 (exact in 17)
+            // stage 1: b₁ − b₀, wrapping in 16 bits to its two's complement; b₀·2^8 + 2^7 (an OR: the low byte is
+            // zero; exact in 17)
             self.w_b0.next = bit_cast::<16, 8>(self.b0.val());
             self.w_b1.next = bit_cast::<16, 8>(self.b1.val());
             self.w_base.next = bit_cast::<17, 8>(self.b0.val());
             self.s1_d.d.next = self.w_b1.val() - self.w_b0.val();
-            self.s1_base.d.next = self.w_base.val() << 8;
+            self.s1_base.d.next = (self.w_base.val() << 8) | 128;
             self.s1_f.d.next = self.f.val();
             // stages 2–5: |b₁ − b₀|·f, the base beside it
             self.w_frac.next = bit_cast::<16, 8>(self.s1_f.q.val());
             self.mul.x.next = self.s1_d.q.val();
             self.mul.w.next = self.w_frac.val();
             self.base.d.next = self.s1_base.q.val();
-            // the last stage: b₀·2^8 ± |b₁ − b₀|·f + 2^7, then bits 8..
+            // the last stage: (b₀·2^8 + 2^7) ± |b₁ − b₀|·f, then bits 8..
             self.w_prod.next = self.mul.p.val().get_bits::<17>(0);
             if self.mul.neg.val() {
                 self.w_sum.next = self.base.q.val() - self.w_prod.val();
             } else {
                 self.w_sum.next = self.base.q.val() + self.w_prod.val();
             }
-            self.w_r.next = self.w_sum.val() + 128;
-            self.s5_out.d.next = self.w_r.val().get_bits::<8>(8); // truncation of the rounded sum
+            self.s5_out.d.next = self.w_sum.val().get_bits::<8>(8); // truncation of the rounded sum
             self.out.next = self.s5_out.q.val();
         }
     }

@@ -2,14 +2,16 @@
 //! 128 × 128, or with `L` = 8 up to 256 × 256) in four 2×2-interleaved banks, one bilinear footprint read a clock,
 //! written texel by texel through the same stream (`we`). See `vectors::tex_fetch` for the layout and the ports.
 //!
-//! Latency 7: the level's side and the coordinates taken modulo it (and the write's); each bank column's word
-//! column plus the level's base, and each bank row's word row shifted to the level's row length; the bank addresses,
-//! that sum plus the row (and the write's address and bank); the banks' read (their own register); the four words registered (a block RAM's output straight into a
-//! select is slow: `height_fetch` measured it); the four words again; each texel picked from the four words. (On
-//! the ECP5 the first register of the words is the DP16KD's output register; with the select behind it, that read
-//! into the select was the nearest pipelines' critical path, 1.61 ns of logic and 4.41 ns of routing, 166 MHz. The
-//! base joins the column a clock before the row: base + row + column in one clock, two adders in a row, was the next
-//! one, 1.96 ns of logic and 3.94 ns of routing, 170 MHz.)
+//! Latency 7: the level's side, its base, and the coordinates taken modulo the side (and the write's); each bank
+//! column's word column plus the level's base, and each bank row's word row shifted to the level's row length; the bank
+//! addresses, that sum plus the row (and the write's address and bank); the banks' read (their own register); the four
+//! words registered (a block RAM's output straight into a select is slow: `height_fetch` measured it); the four words
+//! again; each texel picked from the four words. (On the ECP5 the first register of the words is the DP16KD's output
+//! register; with the select behind it, that read into the select was the nearest pipelines' critical path, 1.61 ns of
+//! logic and 4.41 ns of routing, 166 MHz. The base joins the column a clock before the row: base + row + column in one
+//! clock, two adders in a row, was the next one, 1.96 ns of logic and 3.94 ns of routing, 170 MHz; and with the base's
+//! table behind the registered side log2, in stage 2, the trilinear pipelines' write address was one of theirs, 6.4
+//! ns.)
 //!
 //! The banks are single-port (`SpRam`): `synth_ice40 -spram` puts each in one of the UP5K's four SPRAMs, so a
 //! 128 × 128 map and its chain (43.7 KB) fit a part whose 30 EBR hold 15 KB.
@@ -50,9 +52,10 @@ pub fn holds(p: usize, m: usize) -> bool {
 
 crate::block! {
     /// The level's base (U15: the largest, at side 2^8, is 5,462) and whether the memory holds it, for a memory
-    /// holding the levels `P` (`bases`): a table of nine constants read by the saturated side log2 m (0 ..= 8).
-    /// Combinational.
-    pub struct LevelBase<const P: usize> {
+    /// holding the levels `P` (`bases`) whose largest side is 2^L: a table of nine constants read by the side log2
+    /// as given, m_in, saturated to L in the table (entry k holds level min(k, L), entry 8 every m_in ≥ 8), so each
+    /// bit is one function of m_in's four bits and the table sits in stage 1 beside the cap. Combinational.
+    pub struct LevelBase<const P: usize, const L: usize> {
         pub m: Signal<In, Bits<4>>,
         pub base: Signal<Out, Bits<15>>,
         pub held: Signal<Out, Bit>,
@@ -61,24 +64,27 @@ crate::block! {
     }
 }
 
-impl<const P: usize> Default for LevelBase<P> {
+impl<const P: usize, const L: usize> Default for LevelBase<P, L> {
     fn default() -> Self {
         let b = bases(P);
-        let mask: u64 = (0..9).filter(|&m| holds(P, m)).map(|m| 1 << m).sum();
+        let mask: u64 = (0..16).filter(|&m: &usize| holds(P, m.min(L))).map(|m| 1 << m).sum();
         Self {
             m: Default::default(),
             base: Default::default(),
             held: Default::default(),
-            tab: std::array::from_fn(|k| Constant::new(Bits::<15>::from(b[k]))),
+            tab: std::array::from_fn(|k| Constant::new(Bits::<15>::from(b[k.min(L)]))),
             holds: Constant::new(Bits::<16>::from(mask)),
         }
     }
 }
 
-impl<const P: usize> Logic for LevelBase<P> {
+impl<const P: usize, const L: usize> Logic for LevelBase<P, L> {
     #[hdl_gen]
     fn update(&mut self) {
-        self.base.next = self.tab[0].val();
+        self.base.next = self.tab[8].val();
+        if self.m.val() == 0 {
+            self.base.next = self.tab[0].val();
+        }
         if self.m.val() == 1 {
             self.base.next = self.tab[1].val();
         }
@@ -99,9 +105,6 @@ impl<const P: usize> Logic for LevelBase<P> {
         }
         if self.m.val() == 7 {
             self.base.next = self.tab[7].val();
-        }
-        if self.m.val() == 8 {
-            self.base.next = self.tab[8].val();
         }
         self.held.next = self.holds.val().get_bit(self.m.val().index());
     }
@@ -197,13 +200,18 @@ crate::stream_block! {
         /// the four banks, (x mod 2) + 2·(y mod 2), each single-port: a clock reads it or writes it
         pub bank: [SpRam<U16, A>; 4],
         /// the read's and the write's level bases, for the levels the memory holds (`P`)
-        read_base: LevelBase<P>,
-        write_base: LevelBase<P>,
+        read_base: LevelBase<P, L>,
+        write_base: LevelBase<P, L>,
         /// the read's and the write's side log2, saturated to L
         read_cap: LevelCap<L>,
         write_cap: LevelCap<L>,
-        // stage 1: the level's side log2 (saturated to L), the coordinates modulo its side; the write's likewise
+        // stage 1: the level's side log2 (saturated to L), its base (U15) and whether the memory holds it, the
+        // coordinates modulo its side; the write's likewise
         s1_m: DFF<Bits<4>>,
+        s1_base: DFF<Bits<15>>,
+        s1_held: DFF<Bit>,
+        s1_wbase: DFF<Bits<15>>,
+        s1_wheld: DFF<Bit>,
         s1_x: [DFF<U8>; 2],
         s1_y: [DFF<U8>; 2],
         s1_rd: DFF<Bit>,
@@ -276,8 +284,8 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s1_m, s1_rd, s1_we, s1_wm, s1_wx, s1_wy, s1_wdata, s2_rd, s2_we, s2_wpx, s2_wpy, s2_wbc,
-            s2_wrow, s2_wdata, s3_rd, wr_data, s4_rd, s5_rd, s5b_rd
+            self, clock, s1_m, s1_base, s1_held, s1_wbase, s1_wheld, s1_rd, s1_we, s1_wm, s1_wx, s1_wy, s1_wdata,
+            s2_rd, s2_we, s2_wpx, s2_wpy, s2_wbc, s2_wrow, s2_wdata, s3_rd, wr_data, s4_rd, s5_rd, s5b_rd
         );
         clock!(self, clock, valid);
         for n in 0..2 {
@@ -314,6 +322,14 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.w_mask.next = self.read_cap.mask.val(); // 2^m − 1, U8
         self.w_wmask.next = self.write_cap.mask.val(); // 2^m − 1, U8
         self.s1_m.d.next = self.w_m.val();
+        // where the level starts in every bank, base(m) = 1 + (4^(m−1) − 1)/3 for the whole chain (`bases`), and
+        // whether the memory holds it: tables read by the side log2 as given (they saturate it themselves)
+        self.read_base.m.next = self.level_log2.val();
+        self.s1_base.d.next = self.read_base.base.val(); // ≤ 5,462: U15
+        self.s1_held.d.next = self.read_base.held.val();
+        self.write_base.m.next = self.w_log2.val();
+        self.s1_wbase.d.next = self.write_base.base.val(); // ≤ 5,462: U15
+        self.s1_wheld.d.next = self.write_base.held.val();
         self.s1_x[0].d.next = self.x0.val() & self.w_mask.val(); // modulo 2^m
         self.s1_x[1].d.next = self.x1.val() & self.w_mask.val();
         self.s1_y[0].d.next = self.y0.val() & self.w_mask.val();
@@ -346,9 +362,7 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.w_c15[1].next = bit_cast::<15, 7>(self.w_cx[1].val().get_bits::<7>(1));
         self.w_r15[0].next = bit_cast::<15, 7>(self.w_ry[0].val().get_bits::<7>(1));
         self.w_r15[1].next = bit_cast::<15, 7>(self.w_ry[1].val().get_bits::<7>(1));
-        // where the level starts in every bank: base(m) = 1 + (4^(m−1) − 1)/3 for the whole chain (`bases`)
-        self.read_base.m.next = self.s1_m.q.val(); // m ≤ L ≤ 8
-        self.w_base.next = self.read_base.base.val();
+        self.w_base.next = self.s1_base.q.val();
         for n in 0..2 {
             self.w_bc[n].next = self.w_base.val() + self.w_c15[n].val(); // ≤ 5,462 + 127: U15, exact
             self.s2_bc[n].d.next = self.w_bc[n].val();
@@ -361,20 +375,19 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.s2_px[1].d.next = self.s1_x[1].q.val().get_bit(0);
         self.s2_py[0].d.next = self.s1_y[0].q.val().get_bit(0);
         self.s2_py[1].d.next = self.s1_y[1].q.val().get_bit(0);
-        self.s2_rd.d.next = self.s1_rd.q.val() & self.read_base.held.val(); // a level it does not hold reads as zeros
+        self.s2_rd.d.next = self.s1_rd.q.val() & self.s1_held.q.val(); // a level it does not hold reads as zeros
 
         // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
         self.w_wc15.next = bit_cast::<15, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 15
         self.w_wr15.next = bit_cast::<15, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 15
         self.w_wrm.next = self.w_wr15.val() << self.s1_wm.q.val(); // U15, exact, as the read's
         self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U14, exact
-        self.write_base.m.next = self.s1_wm.q.val(); // m ≤ L ≤ 8
-        self.w_wbase.next = self.write_base.base.val();
+        self.w_wbase.next = self.s1_wbase.q.val();
         self.w_wbc.next = self.w_wbase.val() + self.w_wc15.val(); // ≤ 5,462 + 127: U15, exact
         self.s2_wbc.d.next = self.w_wbc.val();
         self.s2_wpx.d.next = self.s1_wx.q.val().get_bit(0);
         self.s2_wpy.d.next = self.s1_wy.q.val().get_bit(0);
-        self.s2_we.d.next = self.s1_we.q.val() & self.write_base.held.val(); // a level it does not hold: no write
+        self.s2_we.d.next = self.s1_we.q.val() & self.s1_wheld.q.val(); // a level it does not hold: no write
         self.s2_wdata.d.next = self.s1_wdata.q.val();
 
         // stage 3: bank (p, q) = p + 2q at (base + column p) + row q (< 5,462 at L = 7, < 21,846 at L = 8: U15, exact)
