@@ -495,6 +495,8 @@ pub const WAIVED: &[Waived] = &[
     w("TexAddr", "w_span", Bound, "2^m · 256 with m = s − n' ≤ 8 (s1_m): at most 2^16"),
     w("TexAddr", "s2_mask.d", Bound, "256·2^m − 1 with m ≤ 8: 255 .. 65,535"),
     w("TexAddr", "s2_top.d", Bound, "256·2^m − 256 or − 1 with m ≤ 8: 0 .. 65,535"),
+    w("TexAddr", "w_lspan", Bound, "2^m · 256 with m = s − n' ≤ 8 (s1_m): at most 2^16, as w_span a clock earlier"),
+    w("TexAddr", "s1b_lim.d", Bound, "256·2^m − 128 or − 1 with m ≤ 8 (w_lspan ≥ 256): 128 .. 65,535"),
     w("TexAddr", "s2_last.d", Bound, "2^m − 1 with m ≤ 8: the level's last texel, 0..255"),
     w("TexAddr", "s3_ru.d", Bound, "c AND (256·2^m − 1) (repeat) or c clamped to 0..top (clamp), both ≤ 65,535 for m ≤ 8"),
     w("TexAddr", "s3_rv.d", Bound, "as s3_ru, for v"),

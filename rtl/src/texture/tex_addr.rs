@@ -3,9 +3,10 @@
 //! two blend factors, each axis repeating or clamping on its own; `linear` = 0 gives the nearest texel instead. See
 //! `vectors::tex_addr` for the exact recipe.
 //!
-//! Latency 5: the level read and its side; the position shifted to the level; half a texel back, beside the
-//! level's span; the repeat or the clamp; the footprint's second texel. (With the shift and the subtraction in one
-//! stage the ECP5-45F placed the unit at 116.2 MHz, that path the critical one.)
+//! Latency 5: the level read and its side; the position shifted to the level, and the clamp's limit; half a texel
+//! back, beside the level's span and the clamp's comparison; the repeat or the clamp; the footprint's second texel.
+//! (With the shift and the subtraction in one stage the ECP5-45F placed the unit at 116.2 MHz, that path the
+//! critical one.)
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{SBits, Sq11_8, U16, U8};
@@ -50,6 +51,9 @@ crate::stream_block! {
         s1b_lin: DFF<Bit>,
         s1b_uwrap: DFF<Bit>,
         s1b_vwrap: DFF<Bit>,
+        // the clamp's limit on a: past it, c is past the top (bilinear top + 128, as c = a − 128; nearest the top:
+        // U17 in 22)
+        s1b_lim: DFF<Bits<22>>,
         // stage 2: c per axis (S21 in 22: the position at the level, half a texel back for bilinear), the level's
         // last coordinate 256·2^m − 1 (the repeat's mask, U16 in 22), the clamp's top (U16 in 22), its last texel
         s2_cu: DFF<SBits<22>>,
@@ -61,6 +65,11 @@ crate::stream_block! {
         s2_uwrap: DFF<Bit>,
         s2_vwrap: DFF<Bit>,
         s2_lin: DFF<Bit>,
+        // whether a is past the limit, per axis: the clamp's comparison a clock before its choice (in stage 3, the
+        // comparison of c with the top in front of the choice was the trilinear pipelines' critical path on the
+        // ECP5, 2.60 ns of logic and 3.59 ns of routing)
+        s2_ou: DFF<Bit>,
+        s2_ov: DFF<Bit>,
         // stage 3: r per axis, repeated or clamped (U16)
         s3_ru: DFF<U16>,
         s3_rv: DFF<U16>,
@@ -91,6 +100,8 @@ crate::stream_block! {
         w_one: Signal<Local, Bits<22>>,
         w_side: Signal<Local, Bits<22>>,
         w_span: Signal<Local, Bits<22>>,
+        w_lm22: Signal<Local, Bits<22>>,
+        w_lspan: Signal<Local, Bits<22>>,
         w_side_m1: Signal<Local, Bits<22>>,
         w_ru: Signal<Local, Bits<22>>,
         w_rv: Signal<Local, Bits<22>>,
@@ -106,8 +117,8 @@ impl Logic for TexAddr {
     fn update(&mut self) {
         dff_setup!(
             self, clock, s1_n, s1_m, s1_u, s1_v, s1_uwrap, s1_vwrap, s1_lin, s1b_au, s1b_av, s1b_m, s1b_lin, s1b_uwrap,
-            s1b_vwrap, s2_cu, s2_cv, s2_mask, s2_top, s2_last, s2_m, s2_uwrap, s2_vwrap, s2_lin, s3_ru, s3_rv, s3_last,
-            s3_m, s3_uwrap, s3_vwrap, s3_lin, s4_m, s4_x0, s4_x1, s4_y0, s4_y1, s4_ub, s4_vb
+            s1b_vwrap, s1b_lim, s2_ou, s2_ov, s2_cu, s2_cv, s2_mask, s2_top, s2_last, s2_m, s2_uwrap, s2_vwrap, s2_lin,
+            s3_ru, s3_rv, s3_last, s3_m, s3_uwrap, s3_vwrap, s3_lin, s4_m, s4_x0, s4_x1, s4_y0, s4_y1, s4_ub, s4_vb
         );
         clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
@@ -154,6 +165,15 @@ impl Logic for TexAddr {
         self.s1b_lin.d.next = self.s1_lin.q.val();
         self.s1b_uwrap.d.next = self.s1_uwrap.q.val();
         self.s1b_vwrap.d.next = self.s1_vwrap.q.val();
+        // the limit: 256·2^m − 128 (bilinear) or 256·2^m − 1 (nearest), m ≤ 8
+        self.w_one.next = 1.into();
+        self.w_lm22.next = bit_cast::<22, 4>(self.s1_m.q.val()); // U4 in 22, widening
+        self.w_lspan.next = (self.w_one.val() << self.w_lm22.val()) << 8; // 256·2^m ≤ 2^16: exact
+        if self.s1_lin.q.val() {
+            self.s1b_lim.d.next = self.w_lspan.val() - 128; // ≥ 128: exact
+        } else {
+            self.s1b_lim.d.next = self.w_lspan.val() - 1; // ≥ 255: exact
+        }
 
         // stage 2: c = a − 128 (bilinear) or a (nearest)
         if self.s1b_lin.q.val() {
@@ -165,7 +185,6 @@ impl Logic for TexAddr {
         }
         // the level's side 2^m (U9 in 22), its span 256·2^m (U17 in 22), the last coordinate and texel
         self.w_m22.next = bit_cast::<22, 4>(self.s1b_m.q.val()); // U4 in 22, widening
-        self.w_one.next = 1.into();
         self.w_side.next = self.w_one.val() << self.w_m22.val(); // m ≤ 8: exact
         self.w_span.next = self.w_side.val() << 8; // ≤ 2^16: exact
         self.w_side_m1.next = self.w_side.val() - 1; // the last texel, U8 in 22, exact
@@ -180,13 +199,16 @@ impl Logic for TexAddr {
         self.s2_uwrap.d.next = self.s1b_uwrap.q.val();
         self.s2_vwrap.d.next = self.s1b_vwrap.q.val();
         self.s2_lin.d.next = self.s1b_lin.q.val();
+        // a past the limit (read only where c ≥ 0, so a ≥ 0 and the unsigned comparison is the signed one)
+        self.s2_ou.d.next = self.s1b_au.q.val() > self.s1b_lim.q.val();
+        self.s2_ov.d.next = self.s1b_av.q.val() > self.s1b_lim.q.val();
 
         // stage 3: repeat (modulo the span: the AND of the two's complement value) or clamp (saturate to 0..top)
         if self.s2_uwrap.q.val() {
             self.w_ru.next = self.s2_cu.q.val() & self.s2_mask.q.val(); // U16, exact modulo
         } else if self.s2_cu.q.val().get_bit(21) {
             self.w_ru.next = 0.into(); // below 0: clamp
-        } else if self.s2_cu.q.val() > self.s2_top.q.val() {
+        } else if self.s2_ou.q.val() {
             self.w_ru.next = self.s2_top.q.val(); // past the top: clamp
         } else {
             self.w_ru.next = self.s2_cu.q.val();
@@ -195,7 +217,7 @@ impl Logic for TexAddr {
             self.w_rv.next = self.s2_cv.q.val() & self.s2_mask.q.val(); // U16, exact modulo
         } else if self.s2_cv.q.val().get_bit(21) {
             self.w_rv.next = 0.into(); // below 0: clamp
-        } else if self.s2_cv.q.val() > self.s2_top.q.val() {
+        } else if self.s2_ov.q.val() {
             self.w_rv.next = self.s2_top.q.val(); // past the top: clamp
         } else {
             self.w_rv.next = self.s2_cv.q.val();
