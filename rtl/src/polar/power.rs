@@ -1,9 +1,9 @@
 //! `power`: the power unit [30] of US 6,819,319's FIG. 3, `y = 255·(x/255)^p` with p = pw/4 (U6.2), by a log table,
 //! one multiplier and an exp table; see `vectors::power` for the recipe and why. Latency 12: 1 inputs registered; 2
 //! L(x) (table); 2b L again; 2c the multiplier's operands; 3 e = pw·L; 3b e again; 4 the rounding's pieces of g =
-//! round(e >> 6): e >> 6's low 8 bits, its rounding bit e₅, e >> 14's low 4 bits and whether e >> 14 > 9; 5 m = min(e
-//! >> 14, 9); f = g mod 256 = ((e >> 6) + e₅) mod 256 into the exp table, E(f), and the carry out of that sum; 5b E
-//! again, and n = min(g >> 8, 9) from the carry; 6 and 6c the barrel shift w = E >> (n + 6) in two steps, by the
+//! round(e >> 6): e >> 6's low 8 bits, its rounding bit e₅, e >> 14's low 4 bits and whether e >> 14 > 9; 5 m =
+//! min(e >> 14, 9); f = g mod 256 = ((e >> 6) + e₅) mod 256 into the exp table, E(f), and the carry out of that sum; 5b
+//! E again, and n = min(g >> 8, 9) from the carry; 6 and 6c the barrel shift w = E >> (n + 6) in two steps, by the
 //! shift's multiple of 4, then by the rest (a floor twice is the floor of the whole shift); 7 y = (w + 1) >> 1, which
 //! makes (E + 2^(n+6)) >> (n + 7), and x = 0 overrides. (With the shift and the rounding in one stage, the UP5K placed
 //! the unit at 43.7 MHz; with the shift in one stage, polar_pipeline's critical path on the UP5K was the shift, 14 ns.)
