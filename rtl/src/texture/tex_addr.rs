@@ -3,10 +3,15 @@
 //! two blend factors, each axis repeating or clamping on its own; `linear` = 0 gives the nearest texel instead. See
 //! `vectors::tex_addr` for the exact recipe.
 //!
-//! Latency 5: the level read and its side; the position shifted to the level, and the clamp's limit; half a texel
-//! back, beside the level's span and the clamp's comparison; the repeat or the clamp; the footprint's second texel.
-//! (With the shift and the subtraction in one stage the ECP5-45F placed the unit at 116.2 MHz, that path the
+//! Latency 5: the level read and its side; the position shifted to the level, the level's mask and the clamp's
+//! limit; half a texel back, beside the clamp's top and comparison; the repeat or the clamp; the footprint's second
+//! texel. (With the shift and the subtraction in one stage the ECP5-45F placed the unit at 116.2 MHz, that path the
 //! critical one.)
+//!
+//! Every figure of the level (the repeat's mask 256·2^m − 1, the clamp's top and limit, the last texel) is the mask
+//! with its low bits cleared or a slice of it, and the mask is the complement of a constant shifted by m: no carry
+//! chain. (As 256·2^m − 256 and − 128, the shift and the subtraction in a row were the trilinear pipelines' path on
+//! the ECP5, 1.99 ns of logic and 3.96 ns of routing.)
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{SBits, Sq11_8, U16, U8};
@@ -51,11 +56,12 @@ crate::stream_block! {
         s1b_lin: DFF<Bit>,
         s1b_uwrap: DFF<Bit>,
         s1b_vwrap: DFF<Bit>,
-        // the clamp's limit on a: past it, c is past the top (bilinear top + 128, as c = a − 128; nearest the top:
-        // U17 in 22)
+        // the level's last coordinate 256·2^m − 1 (the repeat's mask, U16 in 22), and the clamp's limit on a: past
+        // it, c is past the top (bilinear top + 128, as c = a − 128; nearest the top: U16 in 22)
+        s1b_mask: DFF<Bits<22>>,
         s1b_lim: DFF<Bits<22>>,
-        // stage 2: c per axis (S21 in 22: the position at the level, half a texel back for bilinear), the level's
-        // last coordinate 256·2^m − 1 (the repeat's mask, U16 in 22), the clamp's top (U16 in 22), its last texel
+        // stage 2: c per axis (S21 in 22: the position at the level, half a texel back for bilinear), the mask, the
+        // clamp's top (U16 in 22), the level's last texel
         s2_cu: DFF<SBits<22>>,
         s2_cv: DFF<SBits<22>>,
         s2_mask: DFF<Bits<22>>,
@@ -96,13 +102,9 @@ crate::stream_block! {
         w_va: Signal<Local, Bits<30>>,
         w_ua22: Signal<Local, SBits<22>>,
         w_va22: Signal<Local, SBits<22>>,
-        w_m22: Signal<Local, Bits<22>>,
-        w_one: Signal<Local, Bits<22>>,
-        w_side: Signal<Local, Bits<22>>,
-        w_span: Signal<Local, Bits<22>>,
+        w_above: Signal<Local, Bits<22>>,
         w_lm22: Signal<Local, Bits<22>>,
-        w_lspan: Signal<Local, Bits<22>>,
-        w_side_m1: Signal<Local, Bits<22>>,
+        w_lmask: Signal<Local, Bits<22>>,
         w_ru: Signal<Local, Bits<22>>,
         w_rv: Signal<Local, Bits<22>>,
         w_tu: Signal<Local, U8>,
@@ -117,8 +119,9 @@ impl Logic for TexAddr {
     fn update(&mut self) {
         dff_setup!(
             self, clock, s1_n, s1_m, s1_u, s1_v, s1_uwrap, s1_vwrap, s1_lin, s1b_au, s1b_av, s1b_m, s1b_lin, s1b_uwrap,
-            s1b_vwrap, s1b_lim, s2_ou, s2_ov, s2_cu, s2_cv, s2_mask, s2_top, s2_last, s2_m, s2_uwrap, s2_vwrap, s2_lin,
-            s3_ru, s3_rv, s3_last, s3_m, s3_uwrap, s3_vwrap, s3_lin, s4_m, s4_x0, s4_x1, s4_y0, s4_y1, s4_ub, s4_vb
+            s1b_vwrap, s1b_mask, s1b_lim, s2_ou, s2_ov, s2_cu, s2_cv, s2_mask, s2_top, s2_last, s2_m, s2_uwrap,
+            s2_vwrap, s2_lin, s3_ru, s3_rv, s3_last, s3_m, s3_uwrap, s3_vwrap, s3_lin, s4_m, s4_x0, s4_x1, s4_y0,
+            s4_y1, s4_ub, s4_vb
         );
         clock!(self, clock, valid);
         self.valid.d.next = self.valid_in.val();
@@ -165,14 +168,16 @@ impl Logic for TexAddr {
         self.s1b_lin.d.next = self.s1_lin.q.val();
         self.s1b_uwrap.d.next = self.s1_uwrap.q.val();
         self.s1b_vwrap.d.next = self.s1_vwrap.q.val();
-        // the limit: 256·2^m − 128 (bilinear) or 256·2^m − 1 (nearest), m ≤ 8
-        self.w_one.next = 1.into();
+        // the mask 256·2^m − 1 (bits 0 .. m + 7 set): the complement of bits 8..21 shifted up by m ≤ 8 (exact)
+        self.w_above.next = 0x3f_ff00.into(); // bits 8..21
         self.w_lm22.next = bit_cast::<22, 4>(self.s1_m.q.val()); // U4 in 22, widening
-        self.w_lspan.next = (self.w_one.val() << self.w_lm22.val()) << 8; // 256·2^m ≤ 2^16: exact
+        self.w_lmask.next = !(self.w_above.val() << self.w_lm22.val()); // bits 8 + m .. 21 cleared: U16 in 22
+        self.s1b_mask.d.next = self.w_lmask.val();
+        // the limit: 256·2^m − 128 (bilinear: the mask with bits 0..6 cleared) or 256·2^m − 1 (nearest: the mask)
         if self.s1_lin.q.val() {
-            self.s1b_lim.d.next = self.w_lspan.val() - 128; // ≥ 128: exact
+            self.s1b_lim.d.next = self.w_lmask.val() & 0x3f_ff80; // exact
         } else {
-            self.s1b_lim.d.next = self.w_lspan.val() - 1; // ≥ 255: exact
+            self.s1b_lim.d.next = self.w_lmask.val();
         }
 
         // stage 2: c = a − 128 (bilinear) or a (nearest)
@@ -183,18 +188,15 @@ impl Logic for TexAddr {
             self.s2_cu.d.next = self.s1b_au.q.val(); // nearest: the position itself
             self.s2_cv.d.next = self.s1b_av.q.val();
         }
-        // the level's side 2^m (U9 in 22), its span 256·2^m (U17 in 22), the last coordinate and texel
-        self.w_m22.next = bit_cast::<22, 4>(self.s1b_m.q.val()); // U4 in 22, widening
-        self.w_side.next = self.w_one.val() << self.w_m22.val(); // m ≤ 8: exact
-        self.w_span.next = self.w_side.val() << 8; // ≤ 2^16: exact
-        self.w_side_m1.next = self.w_side.val() - 1; // the last texel, U8 in 22, exact
-        self.s2_mask.d.next = self.w_span.val() - 1; // the last coordinate, U16, exact
+        // the clamp's top and the last texel 2^m − 1, both from the mask
+        self.s2_mask.d.next = self.s1b_mask.q.val();
         if self.s1b_lin.q.val() {
-            self.s2_top.d.next = self.w_span.val() - 256; // bilinear: up to the last texel's centre, exact
+            // bilinear: up to the last texel's centre, 256·2^m − 256 (the mask with bits 0..7 cleared), exact
+            self.s2_top.d.next = self.s1b_mask.q.val() & 0x3f_ff00;
         } else {
-            self.s2_top.d.next = self.w_span.val() - 1; // nearest: up to the last texel's end, exact
+            self.s2_top.d.next = self.s1b_mask.q.val(); // nearest: up to the last texel's end, 256·2^m − 1
         }
-        self.s2_last.d.next = self.w_side_m1.val().get_bits::<8>(0); // U8, a slice of a U8 value
+        self.s2_last.d.next = self.s1b_mask.q.val().get_bits::<8>(8); // 2^m − 1: U8, a slice of a U16 value
         self.s2_m.d.next = self.s1b_m.q.val();
         self.s2_uwrap.d.next = self.s1b_uwrap.q.val();
         self.s2_vwrap.d.next = self.s1b_vwrap.q.val();
