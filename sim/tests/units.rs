@@ -174,8 +174,20 @@ fn cos_sign_rtl_entries_are_the_models_for_every_swept_size() {
     }
 }
 
-/// Blocks a README gives the latency of that are not units of the table (each is a part of several units).
-const PARTS: &[(&str, usize)] = &[("tangent_to_normal", rtl::height::tangent_to_normal::LATENCY)];
+/// Blocks a README gives the latency of that are not units of the table (each is a part of several units): the
+/// height-map patent's tangent → normal, and the texture unit's fronts.
+const PARTS: &[(&str, usize)] = &[
+    ("tangent_to_normal", rtl::height::tangent_to_normal::LATENCY),
+    ("TexNearest", rtl::texture::front::nearest::LATENCY),
+    ("TexBilinear", rtl::texture::front::bilinear::LATENCY),
+    ("TexNearestMip", rtl::texture::front::nearest_mip::LATENCY),
+    ("TexNearestColour", rtl::texture::front::nearest_colour::LATENCY),
+    ("TexNearestMipColour", rtl::texture::front::nearest_mip_colour::LATENCY),
+    ("TexBilinearColour", rtl::texture::front::bilinear_colour::LATENCY),
+    ("TexTrilinear", rtl::texture::front::trilinear::LATENCY),
+    ("TexTrilinearColour", rtl::texture::front::trilinear_colour::LATENCY),
+    ("TexTrilinearTwoPass", rtl::texture::front::trilinear_two_pass::LATENCY),
+];
 
 /// Every "`block` (N" that rtl/README.md, README.md and ARCHITECTURE.md give (a unit's name, or a part's in `PARTS`,
 /// then its latency in brackets, a line break allowed between them) says the block's own latency: the figures are
