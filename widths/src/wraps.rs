@@ -325,11 +325,8 @@ pub const WAIVED: &[Waived] = &[
     w("HeightFetch", "s1_y.d", Bound, "as s1_x"),
     w("HeightFetch", "s4_out.d", Split, "one height of the fetched word, selected by a shift"),
     w("HeightNormal", "s1_k7.d", Bound, "8k − k = 7k ≥ 0: the same k on both sides"),
-    w("HeightNormal", "w_sm1", Bound, "s − 1 with s ∈ 11..23 (chosen at stage 7); only the register's reset zero, before the \
-        first vector reaches the stage, gives −1, and what it makes is never valid"),
     w("HeightNormal", "s9_a1.d", Bound, "a magnitude < 2^31 plus 2^(s − 1) ≤ 2^22: below 2^32"),
     w("HeightNormal", "s9_a2.d", Bound, "as s9_a1"),
-    w("HeightNormal", "s9_ay.d", Bound, "as s9_a1"),
     w("HeightNormal", "s10_q1.d", Bound, "rounded at the shift s chosen from the largest of the three magnitudes: ≤ 511 by \
         that choice; intervals cannot tie s to the magnitude"),
     w("HeightNormal", "s10_q2.d", Bound, "as s10_q1"),

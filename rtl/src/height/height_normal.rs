@@ -1,9 +1,11 @@
 //! `height_normal`: US 2004/0207631's normal unit [156]: N = 7·(−k·Tang1y, 2, −k·Tang2y) (16 fraction bits), brought to
 //! S10 for the shared normaliser by one shift for all three components, the smallest that keeps the largest rounded
-//! magnitude ≤ 511. See `vectors::height_normal`. Latency 12: 7k; the two `SmMulWide`s; the larger product; the
-//! largest magnitude; the
-//! shift from its leading one (one more where rounding carries, read off its top ten bits, no shifter); 2^(s−1);
-//! the three magnitudes + 2^(s−1); >> s; the signs.
+//! magnitude ≤ 511. See `vectors::height_normal`. Latency 12: 7k; the two `SmMulWide`s; the three comparisons of
+//! the magnitudes; the largest; its leading one and, at each place, whether rounding there carries (its top ten bits
+//! all ones); the shift s and 2^(s−1), both from those flags (no shifter); the three magnitudes + 2^(s−1); >> s; the
+//! signs. (With the larger product chosen beside its comparison, and the shift found by a priority chain in one
+//! stage, the ECP5-45F placed `height_pipeline` at 140.1 MHz, those two paths the critical ones: 2.35 ns of logic and
+//! 4.79 of routing, 3.08 and 4.45.)
 
 use crate::prim::delay::Delay;
 use crate::prim::q::{SBits, Sq9_0, U8};
@@ -32,8 +34,11 @@ crate::stream_block! {
         // stages 2–5: 7k·|t| < 1785·2^20 < 2^31 (U31 in 32), with t's sign
         mul1: SmMulWide<21>,
         mul2: SmMulWide<21>,
-        // stage 5b: the larger of the two products; N's signs (x, z negative where the tangent is positive: N = −7k·t)
-        s5b_m12: DFF<Bits<32>>,
+        // stage 5b: which of the three magnitudes is larger, pair by pair; N's signs (x, z negative where the tangent
+        // is positive: N = −7k·t)
+        s5b_g12: DFF<Bit>,
+        s5b_g1y: DFF<Bit>,
+        s5b_g2y: DFF<Bit>,
         s5b_p1: DFF<Bits<32>>,
         s5b_p2: DFF<Bits<32>>,
         s5b_n1: DFF<Bit>,
@@ -44,8 +49,10 @@ crate::stream_block! {
         s6_p2: DFF<Bits<32>>,
         s6_n1: DFF<Bit>,
         s6_n2: DFF<Bit>,
-        // stage 7: the shift s, 11..23: the largest rounded at s is ≤ 511
-        s7_s: DFF<Bits<5>>,
+        // stage 7: the largest's leading one, one-hot over places 19..30 (h), and whether its ten bits from each place
+        // down are all ones (a)
+        s7_h: [DFF<Bit>; 12],
+        s7_a: [DFF<Bit>; 12],
         s7_p1: DFF<Bits<32>>,
         s7_p2: DFF<Bits<32>>,
         s7_n1: DFF<Bit>,
@@ -78,8 +85,8 @@ crate::stream_block! {
         w_k: Signal<Local, Bits<16>>,
         w_k8: Signal<Local, Bits<16>>,
         w_ny: Signal<Local, Bits<32>>,
-        w_one: Signal<Local, Bits<32>>,
-        w_sm1: Signal<Local, Bits<5>>,
+        w_half: Signal<Local, Bits<32>>,
+        w_s: Signal<Local, Bits<5>>,
         w_r1: Signal<Local, Bits<32>>,
         w_ry: Signal<Local, Bits<32>>,
         w_r2: Signal<Local, Bits<32>>,
@@ -89,11 +96,15 @@ crate::stream_block! {
 impl Logic for HeightNormal {
     #[hdl_gen]
     fn update(&mut self) {
-        dff_setup!(self, clock, s1_k7, s1_t1, s1_t2, s6_m, s6_p1, s6_p2, s6_n1, s6_n2, s7_s, s7_p1, s7_p2, s7_n1);
+        dff_setup!(self, clock, s1_k7, s1_t1, s1_t2, s6_m, s6_p1, s6_p2, s6_n1, s6_n2, s7_p1, s7_p2, s7_n1);
         dff_setup!(self, clock, s7_n2, s8_half, s8_s, s8_p1, s8_p2, s8_n1, s8_n2, s9_a1, s9_ay, s9_a2, s9_s, s9_n1);
-        dff_setup!(self, clock, s5b_m12, s5b_p1, s5b_p2, s5b_n1, s5b_n2);
+        dff_setup!(self, clock, s5b_g12, s5b_g1y, s5b_g2y, s5b_p1, s5b_p2, s5b_n1, s5b_n2);
         dff_setup!(self, clock, s9_n2, s10_q1, s10_qy, s10_q2, s10_n1, s10_n2, s11_x, s11_y, s11_z);
         clock!(self, clock, mul1, mul2, valid);
+        for j in 0..12 {
+            self.s7_h[j].clock.next = self.clock.val();
+            self.s7_a[j].clock.next = self.clock.val();
+        }
         self.valid.d.next = self.valid_in.val();
         // stage 1: 7k = 8k − k, U11, exact
         self.w_k.next = bit_cast::<16, 8>(self.scale.val()); // U8 in 16, widening
@@ -106,109 +117,117 @@ impl Logic for HeightNormal {
         self.mul1.w.next = self.s1_k7.q.val();
         self.mul2.x.next = self.s1_t2.q.val();
         self.mul2.w.next = self.s1_k7.q.val();
-        // stage 5b: the larger product; N_x = −7k·t1 is negative where t1 is positive
+        // stage 5b: the three comparisons; N_x = −7k·t1 is negative where t1 is positive
         self.w_ny.next = 917_504.into(); // N_y = 7·2 with 16 fraction bits = 14·2^16
-        if self.mul1.p.val() > self.mul2.p.val() {
-            self.s5b_m12.d.next = self.mul1.p.val();
-        } else {
-            self.s5b_m12.d.next = self.mul2.p.val();
-        }
+        self.s5b_g12.d.next = self.mul1.p.val() > self.mul2.p.val();
+        self.s5b_g1y.d.next = self.mul1.p.val() > self.w_ny.val();
+        self.s5b_g2y.d.next = self.mul2.p.val() > self.w_ny.val();
         self.s5b_p1.d.next = self.mul1.p.val();
         self.s5b_p2.d.next = self.mul2.p.val();
         self.s5b_n1.d.next = !self.mul1.neg.val();
         self.s5b_n2.d.next = !self.mul2.neg.val();
-        // stage 6: the largest of the three magnitudes
-        if self.s5b_m12.q.val() > self.w_ny.val() {
-            self.s6_m.d.next = self.s5b_m12.q.val();
-        } else {
-            self.s6_m.d.next = self.w_ny.val();
+        // stage 6: the largest of the three magnitudes, chosen by the comparisons
+        self.s6_m.d.next = self.w_ny.val();
+        if self.s5b_g12.q.val() {
+            if self.s5b_g1y.q.val() {
+                self.s6_m.d.next = self.s5b_p1.q.val();
+            }
+        } else if self.s5b_g2y.q.val() {
+            self.s6_m.d.next = self.s5b_p2.q.val();
         }
         self.s6_p1.d.next = self.s5b_p1.q.val();
         self.s6_p2.d.next = self.s5b_p2.q.val();
         self.s6_n1.d.next = self.s5b_n1.q.val();
         self.s6_n2.d.next = self.s5b_n2.q.val();
-        // stage 7: the shift s: the leading one of m is at p ≥ 19 (m ≥ 14·2^16), so m >> (p − 8) ∈ 256..511; rounding
-        // at p − 8 reaches 512 exactly when the ten bits p..p − 9 are all ones, and then s = p − 7 (a priority chain)
-        if self.s6_m.q.val().get_bit(30) {
-            if self.s6_m.q.val().get_bits::<10>(21).all() {
-                self.s7_s.d.next = 23.into();
-            } else {
-                self.s7_s.d.next = 22.into();
-            }
-        } else if self.s6_m.q.val().get_bit(29) {
-            if self.s6_m.q.val().get_bits::<10>(20).all() {
-                self.s7_s.d.next = 22.into();
-            } else {
-                self.s7_s.d.next = 21.into();
-            }
-        } else if self.s6_m.q.val().get_bit(28) {
-            if self.s6_m.q.val().get_bits::<10>(19).all() {
-                self.s7_s.d.next = 21.into();
-            } else {
-                self.s7_s.d.next = 20.into();
-            }
-        } else if self.s6_m.q.val().get_bit(27) {
-            if self.s6_m.q.val().get_bits::<10>(18).all() {
-                self.s7_s.d.next = 20.into();
-            } else {
-                self.s7_s.d.next = 19.into();
-            }
-        } else if self.s6_m.q.val().get_bit(26) {
-            if self.s6_m.q.val().get_bits::<10>(17).all() {
-                self.s7_s.d.next = 19.into();
-            } else {
-                self.s7_s.d.next = 18.into();
-            }
-        } else if self.s6_m.q.val().get_bit(25) {
-            if self.s6_m.q.val().get_bits::<10>(16).all() {
-                self.s7_s.d.next = 18.into();
-            } else {
-                self.s7_s.d.next = 17.into();
-            }
-        } else if self.s6_m.q.val().get_bit(24) {
-            if self.s6_m.q.val().get_bits::<10>(15).all() {
-                self.s7_s.d.next = 17.into();
-            } else {
-                self.s7_s.d.next = 16.into();
-            }
-        } else if self.s6_m.q.val().get_bit(23) {
-            if self.s6_m.q.val().get_bits::<10>(14).all() {
-                self.s7_s.d.next = 16.into();
-            } else {
-                self.s7_s.d.next = 15.into();
-            }
-        } else if self.s6_m.q.val().get_bit(22) {
-            if self.s6_m.q.val().get_bits::<10>(13).all() {
-                self.s7_s.d.next = 15.into();
-            } else {
-                self.s7_s.d.next = 14.into();
-            }
-        } else if self.s6_m.q.val().get_bit(21) {
-            if self.s6_m.q.val().get_bits::<10>(12).all() {
-                self.s7_s.d.next = 14.into();
-            } else {
-                self.s7_s.d.next = 13.into();
-            }
-        } else if self.s6_m.q.val().get_bit(20) {
-            if self.s6_m.q.val().get_bits::<10>(11).all() {
-                self.s7_s.d.next = 13.into();
-            } else {
-                self.s7_s.d.next = 12.into();
-            }
-        } else if self.s6_m.q.val().get_bits::<10>(10).all() {
-            self.s7_s.d.next = 12.into();
-        } else {
-            self.s7_s.d.next = 11.into();
-        }
+        // stage 7: the leading one of m is at a place p ≥ 19 (m ≥ 14·2^16), so m >> (p − 8) ∈ 256..511; rounding at
+        // p − 8 reaches 512 exactly when the ten bits p..p − 9 are all ones, and then s = p − 7. Flag j is place
+        // 19 + j; m < 2^31, so place 30 has nothing above it.
+        self.s7_h[0].d.next = self.s6_m.q.val().get_bit(19) & !self.s6_m.q.val().get_bits::<11>(20).any();
+        self.s7_a[0].d.next = self.s6_m.q.val().get_bits::<10>(10).all();
+        self.s7_h[1].d.next = self.s6_m.q.val().get_bit(20) & !self.s6_m.q.val().get_bits::<10>(21).any();
+        self.s7_a[1].d.next = self.s6_m.q.val().get_bits::<10>(11).all();
+        self.s7_h[2].d.next = self.s6_m.q.val().get_bit(21) & !self.s6_m.q.val().get_bits::<9>(22).any();
+        self.s7_a[2].d.next = self.s6_m.q.val().get_bits::<10>(12).all();
+        self.s7_h[3].d.next = self.s6_m.q.val().get_bit(22) & !self.s6_m.q.val().get_bits::<8>(23).any();
+        self.s7_a[3].d.next = self.s6_m.q.val().get_bits::<10>(13).all();
+        self.s7_h[4].d.next = self.s6_m.q.val().get_bit(23) & !self.s6_m.q.val().get_bits::<7>(24).any();
+        self.s7_a[4].d.next = self.s6_m.q.val().get_bits::<10>(14).all();
+        self.s7_h[5].d.next = self.s6_m.q.val().get_bit(24) & !self.s6_m.q.val().get_bits::<6>(25).any();
+        self.s7_a[5].d.next = self.s6_m.q.val().get_bits::<10>(15).all();
+        self.s7_h[6].d.next = self.s6_m.q.val().get_bit(25) & !self.s6_m.q.val().get_bits::<5>(26).any();
+        self.s7_a[6].d.next = self.s6_m.q.val().get_bits::<10>(16).all();
+        self.s7_h[7].d.next = self.s6_m.q.val().get_bit(26) & !self.s6_m.q.val().get_bits::<4>(27).any();
+        self.s7_a[7].d.next = self.s6_m.q.val().get_bits::<10>(17).all();
+        self.s7_h[8].d.next = self.s6_m.q.val().get_bit(27) & !self.s6_m.q.val().get_bits::<3>(28).any();
+        self.s7_a[8].d.next = self.s6_m.q.val().get_bits::<10>(18).all();
+        self.s7_h[9].d.next = self.s6_m.q.val().get_bit(28) & !self.s6_m.q.val().get_bits::<2>(29).any();
+        self.s7_a[9].d.next = self.s6_m.q.val().get_bits::<10>(19).all();
+        self.s7_h[10].d.next = self.s6_m.q.val().get_bit(29) & !self.s6_m.q.val().get_bits::<1>(30).any();
+        self.s7_a[10].d.next = self.s6_m.q.val().get_bits::<10>(20).all();
+        self.s7_h[11].d.next = self.s6_m.q.val().get_bit(30);
+        self.s7_a[11].d.next = self.s6_m.q.val().get_bits::<10>(21).all();
         self.s7_p1.d.next = self.s6_p1.q.val();
         self.s7_p2.d.next = self.s6_p2.q.val();
         self.s7_n1.d.next = self.s6_n1.q.val();
         self.s7_n2.d.next = self.s6_n2.q.val();
-        // stage 8: the rounding constant 2^(s−1) (s − 1 ≥ 10)
-        self.w_one.next = 1.into();
-        self.w_sm1.next = self.s7_s.q.val() - 1; // U5, exact
-        self.s8_half.d.next = self.w_one.val() << self.w_sm1.val(); // 2^(s−1): U32, exact
-        self.s8_s.d.next = self.s7_s.q.val();
+        // stage 8: s = k (11..23) where the leading one is at k + 8 and does not carry, or at k + 7 and carries: one k
+        // exactly, so s and the rounding constant 2^(s−1) are ORs of constants
+        self.w_half.next = 0.into();
+        self.w_s.next = 0.into();
+        if self.s7_h[0].q.val() & !self.s7_a[0].q.val() {
+            self.w_half.next = self.w_half.val() | 1024;
+            self.w_s.next = self.w_s.val() | 11;
+        }
+        if (self.s7_h[1].q.val() & !self.s7_a[1].q.val()) | (self.s7_h[0].q.val() & self.s7_a[0].q.val()) {
+            self.w_half.next = self.w_half.val() | 2048;
+            self.w_s.next = self.w_s.val() | 12;
+        }
+        if (self.s7_h[2].q.val() & !self.s7_a[2].q.val()) | (self.s7_h[1].q.val() & self.s7_a[1].q.val()) {
+            self.w_half.next = self.w_half.val() | 4096;
+            self.w_s.next = self.w_s.val() | 13;
+        }
+        if (self.s7_h[3].q.val() & !self.s7_a[3].q.val()) | (self.s7_h[2].q.val() & self.s7_a[2].q.val()) {
+            self.w_half.next = self.w_half.val() | 8192;
+            self.w_s.next = self.w_s.val() | 14;
+        }
+        if (self.s7_h[4].q.val() & !self.s7_a[4].q.val()) | (self.s7_h[3].q.val() & self.s7_a[3].q.val()) {
+            self.w_half.next = self.w_half.val() | 16384;
+            self.w_s.next = self.w_s.val() | 15;
+        }
+        if (self.s7_h[5].q.val() & !self.s7_a[5].q.val()) | (self.s7_h[4].q.val() & self.s7_a[4].q.val()) {
+            self.w_half.next = self.w_half.val() | 32768;
+            self.w_s.next = self.w_s.val() | 16;
+        }
+        if (self.s7_h[6].q.val() & !self.s7_a[6].q.val()) | (self.s7_h[5].q.val() & self.s7_a[5].q.val()) {
+            self.w_half.next = self.w_half.val() | 65536;
+            self.w_s.next = self.w_s.val() | 17;
+        }
+        if (self.s7_h[7].q.val() & !self.s7_a[7].q.val()) | (self.s7_h[6].q.val() & self.s7_a[6].q.val()) {
+            self.w_half.next = self.w_half.val() | 131072;
+            self.w_s.next = self.w_s.val() | 18;
+        }
+        if (self.s7_h[8].q.val() & !self.s7_a[8].q.val()) | (self.s7_h[7].q.val() & self.s7_a[7].q.val()) {
+            self.w_half.next = self.w_half.val() | 262144;
+            self.w_s.next = self.w_s.val() | 19;
+        }
+        if (self.s7_h[9].q.val() & !self.s7_a[9].q.val()) | (self.s7_h[8].q.val() & self.s7_a[8].q.val()) {
+            self.w_half.next = self.w_half.val() | 524288;
+            self.w_s.next = self.w_s.val() | 20;
+        }
+        if (self.s7_h[10].q.val() & !self.s7_a[10].q.val()) | (self.s7_h[9].q.val() & self.s7_a[9].q.val()) {
+            self.w_half.next = self.w_half.val() | 1048576;
+            self.w_s.next = self.w_s.val() | 21;
+        }
+        if (self.s7_h[11].q.val() & !self.s7_a[11].q.val()) | (self.s7_h[10].q.val() & self.s7_a[10].q.val()) {
+            self.w_half.next = self.w_half.val() | 2097152;
+            self.w_s.next = self.w_s.val() | 22;
+        }
+        if self.s7_h[11].q.val() & self.s7_a[11].q.val() {
+            self.w_half.next = self.w_half.val() | 4194304;
+            self.w_s.next = self.w_s.val() | 23;
+        }
+        self.s8_half.d.next = self.w_half.val(); // 2^(s−1): U32, exact
+        self.s8_s.d.next = self.w_s.val();
         self.s8_p1.d.next = self.s7_p1.q.val();
         self.s8_p2.d.next = self.s7_p2.q.val();
         self.s8_n1.d.next = self.s7_n1.q.val();
