@@ -41,17 +41,18 @@ fn renamed(text: &str, module: &str) -> Exported {
     Exported { module: module.to_string(), text: mark_rings(&text) }
 }
 
-/// The memory of every module `…$ring` (`rtl::prim::ram_delay::RamDelay`'s RAM) marked `(* no_rw_check *)`: a
-/// delay line never reads the word it writes on the same edge, and so a synthesis tool need not keep the old word
-/// on such a collision (yosys otherwise adds a comparator and a bypass behind the block RAM's read). Simulators
-/// ignore the attribute.
+/// The memory of every module `…$ring` (`rtl::prim::ram_delay::RamDelay`'s RAM) and `…$tables`
+/// (`rtl::palette_lookup`'s two colour tables) marked `(* no_rw_check *)`: a delay line never reads the word it
+/// writes on the same edge, nor a pixel the table being written, and so a synthesis tool need not keep the old word
+/// on such a collision (yosys otherwise adds a comparator and a bypass behind the block RAM's read, which also keeps
+/// the read out of the block's output register). Simulators ignore the attribute.
 fn mark_rings(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 256);
     let mut ring = false;
     for line in text.split_inclusive('\n') {
         let t = line.trim_start();
         if let Some(rest) = t.strip_prefix("module ") {
-            ring = rest.split('(').next().is_some_and(|name| name.ends_with("$ring"));
+            ring = rest.split('(').next().is_some_and(|name| name.ends_with("$ring") || name.ends_with("$tables"));
         } else if ring && t.starts_with("reg[") && t.contains("] mem[") {
             out.push_str(&line[..line.len() - t.len()]);
             out.push_str("(* no_rw_check *) ");
@@ -153,6 +154,19 @@ mod tests {
         assert!(!free_to_another_process(&dir), "another process took the lock while it was held");
         drop(lock);
         assert!(free_to_another_process(&dir), "the lock was not released when dropped");
+    }
+
+    #[test]
+    fn only_the_memories_that_never_read_the_word_being_written_are_marked() {
+        // the palette lookup's two tables (a pixel reads one, the builder writes the other) and a delay line
+        let lookup = export::<rtl::palette_lookup::PaletteLookup<8, 9>>().text;
+        assert!(lookup.contains("(* no_rw_check *) reg[31:0] mem[511:0];"), "{lookup}");
+        let ring = named(rtl::prim::ram_delay::RamDelay::<48, 7, 100>::default(), "ring").text;
+        assert_eq!(ring.matches("(* no_rw_check *)").count(), 1, "{ring}");
+        // a memory of any other name is left as rust-hdl writes it (the AXI wrapper's FIFO may read the slot it
+        // writes: an empty FIFO)
+        let fetch = export::<rtl::height_fetch::HeightFetch>().text;
+        assert!(fetch.contains("] mem[") && !fetch.contains("no_rw_check"), "{fetch}");
     }
 
     #[test]

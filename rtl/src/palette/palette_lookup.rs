@@ -27,8 +27,9 @@ crate::stream_block! {
             out_b: U8,
             out_a: U8,
         }
-        /// the two tables, table t at addresses t·2^A + index
-        pub ram: RAM<Bits<32>, R>,
+        /// the two tables, table t at addresses t·2^A + index. The field's name marks its memory in the exported
+        /// Verilog `(* no_rw_check *)` (see `synth::export`): a pixel never reads the table being written
+        pub tables: RAM<Bits<32>, R>,
         top: Constant<Bits<R>>, // 2^A: table 1's first address
         // stage 1: the read address, the write (enable, address, data)
         s1_ra: DFF<Bits<R>>,
@@ -63,7 +64,7 @@ impl<const A: usize, const R: usize> Default for PaletteLookup<A, R> {
             out_b: Default::default(),
             out_a: Default::default(),
             // both tables start at zero, as a block RAM comes up from the bitstream (an `initial` block in the Verilog)
-            ram: RAM::new((0..1u64 << R).map(|a| (Bits::<R>::from(a), Bits::<32>::from(0u64))).collect()),
+            tables: RAM::new((0..1u64 << R).map(|a| (Bits::<R>::from(a), Bits::<32>::from(0u64))).collect()),
             top: Constant::new(Bits::<R>::from(1u64 << A)),
             s1_ra: Default::default(),
             s1_we: Default::default(),
@@ -82,8 +83,8 @@ impl<const A: usize, const R: usize> Logic for PaletteLookup<A, R> {
     fn update(&mut self) {
         dff_setup!(self, clock, s1_ra, s1_we, s1_wa, s1_wd, s3_e);
         clock!(self, clock, valid);
-        self.ram.read_clock.next = self.clock.val();
-        self.ram.write_clock.next = self.clock.val();
+        self.tables.read_clock.next = self.clock.val();
+        self.tables.write_clock.next = self.clock.val();
         self.valid.d.next = self.valid_in.val();
         // stage 1: {frame, idx} to read, {!frame, waddr} to write (the top bit chooses the table)
         self.w_i.next = bit_cast::<R, A>(self.idx.val()); // UA in R, widening
@@ -98,12 +99,12 @@ impl<const A: usize, const R: usize> Logic for PaletteLookup<A, R> {
         self.s1_we.d.next = self.we.val().any() & self.valid_in.val();
         self.s1_wd.d.next = self.wdata.val();
         // stage 2: the RAM reads table `frame` and writes table `!frame` on the same edge (never the same table)
-        self.ram.read_address.next = self.s1_ra.q.val();
-        self.ram.write_address.next = self.s1_wa.q.val();
-        self.ram.write_data.next = self.s1_wd.q.val();
-        self.ram.write_enable.next = self.s1_we.q.val();
+        self.tables.read_address.next = self.s1_ra.q.val();
+        self.tables.write_address.next = self.s1_wa.q.val();
+        self.tables.write_data.next = self.s1_wd.q.val();
+        self.tables.write_enable.next = self.s1_we.q.val();
         // stage 3: the entry, registered, split into RGBA (r in the low byte)
-        self.s3_e.d.next = self.ram.read_data.val();
+        self.s3_e.d.next = self.tables.read_data.val();
         self.out_r.next = self.s3_e.q.val().get_bits::<8>(0); // a split
         self.out_g.next = self.s3_e.q.val().get_bits::<8>(8); // a split
         self.out_b.next = self.s3_e.q.val().get_bits::<8>(16); // a split
