@@ -179,7 +179,7 @@ pub struct Cells {
 
 /// The hard blocks (DSP, block RAM) synthesis kept inside each of a design's top-level instances, read from the
 /// cells' names (yosys keeps a flattened cell's instance path in its name: `unit$0.mul1.s3_p.d_MULT18X18D_P0`,
-/// `lookup.ram.mem.0.0`); yosys lists each type apart, so the type never rests on the name.
+/// `lookup.tables.mem.0.0`); yosys lists each type apart, so the type never rests on the name.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Blocks {
     /// (instance, DSP, BRAM), in name order; `-` for cells at the top level
@@ -959,7 +959,7 @@ mod tests {
     fn hard_blocks_are_counted_by_the_instance_their_names_begin_with() {
         let dsp = "texture_filter/unit$0.mul0.s3_p.d_MULT18X18D_P0\ntexture_filter/unit$0.mul1.s3_p.d_MULT18X18D_P0\n\
                    texture_filter/norm.s2_sq$0$d_MULT18X18D_P0\n";
-        let bram = "texture_filter/norm.s6_r.q_DP16KD_DOA0\ntexture_filter/lookup.ram.mem.0.0\ntexture_filter/x\n";
+        let bram = "texture_filter/norm.s6_r.q_DP16KD_DOA0\ntexture_filter/lookup.tables.mem.0.0\ntexture_filter/x\n";
         let b = Blocks::parse(dsp, bram, "");
         assert_eq!(
             b.by_instance,

@@ -620,7 +620,7 @@ mod tests {
         let f = Formats::of::<rtl::palette_pipeline::PalettePipeline<12, 13>>();
         let q = |p: &str| f.format(p).map(|x| (x.name, x.bits, x.signed));
         assert_eq!(q("uut.idx"), Some(("Bits<12>".into(), 12, false)));
-        assert_eq!(q("uut.lookup.ram.read_address"), Some(("Bits<13>".into(), 13, false)));
+        assert_eq!(q("uut.lookup.tables.read_address"), Some(("Bits<13>".into(), 13, false)));
         assert_eq!(q("uut.builder.diffuse.s3_t$2.q"), Some(("Sq4_20".into(), 25, true)));
         assert_eq!(q("uut.builder.l_dly$1.line$3.d"), Some(("Sq1_10".into(), 12, true)));
         assert_eq!(q("uut.builder.conc"), Some(("U8".into(), 8, false)));
@@ -628,7 +628,7 @@ mod tests {
         assert_eq!(q("uut.no_such_field"), None);
         assert_eq!(f.owner("uut.builder.diffuse.s3_t$2.q"), Some(("Dot3".into(), "s3_t.q".into())));
         assert_eq!(f.owner("uut.builder.l_dly$1.line$3.d"), Some(("Delay".into(), "line.d".into())));
-        assert_eq!(f.owner("uut.lookup.ram.read_data"), Some(("PaletteLookup".into(), "ram.read_data".into())));
+        assert_eq!(f.owner("uut.lookup.tables.read_data"), Some(("PaletteLookup".into(), "tables.read_data".into())));
         assert_eq!(f.owner("uut.idx"), Some(("PalettePipeline".into(), "idx".into())));
         assert_eq!(f.block_at("uut.builder.diffuse").as_deref(), Some("Dot3"));
         assert_eq!(f.block_at("uut").as_deref(), Some("PalettePipeline"));
