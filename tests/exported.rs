@@ -511,3 +511,37 @@ fn the_ecp5_netlist_with_its_registers_in_the_blocks_passes_the_golden_vectors_a
         assert!(!ok, "{u}: a wrong packing passed:\n{out}");
     }
 }
+
+/// The iCE40 flow's products in logic, each split across the register that takes it (`softsplit`), still compute
+/// every golden vector: the unit prepared as the flow prepares it, every product split, run by the unit's exported
+/// bench; a split whose high half enters the sum one place too low does not.
+#[test]
+fn products_split_across_their_registers_pass_the_golden_vectors_and_a_wrong_split_fails() {
+    // blend: three 8 × 8 products, each into its stage-2 register; normalise: three squares and three products,
+    // each into a register whose only reader is its copy
+    for (u, split) in [("blend", 3), ("normalise", 6)] {
+        let d = scratch(&format!("{u}-softsplit"));
+        let (code, _, err) = bumprtl(&["verilog", u, "--out", d.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+        assert_eq!(synth::softsplit::netlists(&d, u, &format!("{u}.v")).unwrap(), split, "{u}");
+        let n = rows(u);
+        let passes = |v: &str| {
+            let (code, out) = sh(&d, &format!("iverilog -g2012 -o {v}.vvp {u}_tb.v {v} && vvp -n {v}.vvp"));
+            (code == 0 && out.lines().any(|l| l == format!("{n} passed, 0 failed")), out)
+        };
+        for v in [format!("{u}.prepared.v"), format!("{u}.split.v")] {
+            let (ok, out) = passes(&v);
+            assert!(ok, "{u}, {v}:\n{out}");
+        }
+        // the first split's sum takes its high half one place lower: its B loses a low "0" and gains a high one
+        let text = std::fs::read_to_string(d.join(format!("{u}.split.json"))).unwrap();
+        let sum = text.find("\"$bumprtl$softsplit$0$s1\":").unwrap_or_else(|| panic!("{u}: no split"));
+        let b = sum + text[sum..].find("\"B\":[\"0\",").expect("the high half shifted up");
+        let end = b + text[b..].find(']').unwrap();
+        let wrong = format!("{}\"B\":[{},\"0\"]{}", &text[..b], &text[b + 9..end], &text[end + 1..]);
+        std::fs::write(d.join("wrong.json"), wrong).unwrap();
+        synth::softsplit::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
+        let (ok, out) = passes("wrong.v");
+        assert!(!ok && out.contains(" passed, "), "{u}: a wrong split passed:\n{out}");
+    }
+}

@@ -344,9 +344,11 @@ pub const KEEP_OPERAND_COPIES: &str = "proc; setattr -set keep 1 *$mop_*/t:$dff"
 /// is flattened and its widths reduced (`opt -full` strips the constant-zero tops of the 16-bit operands rust-hdl
 /// multiplies), its `$mul` cells listed, and the smallest (A × B operand bits, then name) retyped `$__soft_mul`,
 /// the cell yosys's own DSP mapping leaves to logic: first as many as the blocks over 8, then more while the count
-/// is still over (two products can share a block, so moving one does not always free one).
-pub const FABRIC_PRODUCTS: &str = "iCE40: over 8 SB_MAC16, the fewest smallest products in logic that bring it to 8";
-const PREPARE: &str = "flatten; opt -full; wreduce; opt_clean; share; opt_clean";
+/// is still over (two products can share a block, so moving one does not always free one). Each product in logic is
+/// then split across the register that takes it (`crate::softsplit`), half its adder tree a clock.
+pub const FABRIC_PRODUCTS: &str = "iCE40: over 8 SB_MAC16, the fewest smallest products in logic that bring it to 8, \
+    each split across the register that takes it (bumprtl softsplit 1)";
+pub(crate) const PREPARE: &str = "flatten; opt -full; wreduce; opt_clean; share; opt_clean";
 
 /// A multiplier cell of a prepared design: its name and operand widths.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -393,18 +395,22 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
     for f in files {
         let _ = write!(script, "read_verilog {f}; ");
     }
-    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; write_rtlil {top}.prepared.il; tee -q -o {top}.products dump t:$mul");
+    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; tee -q -o {top}.products dump t:$mul; memory_collect; write_json {top}.prepared.json");
     tools::run(dir, tools::toolchain().yosys(), &["-q", "-p", &script])?;
     let dump = std::fs::read_to_string(dir.join(format!("{top}.products")))
         .map_err(|e| format!("no yosys product list: {e}"))?;
     let all = products(&dump);
+    let prepared = std::fs::read_to_string(dir.join(format!("{top}.prepared.json")))
+        .map_err(|e| format!("no prepared yosys design: {e}"))?;
     let mut n = 0usize;
     loop {
         n = (n + over as usize).min(all.len());
-        let soft = to_fabric(all.clone(), n);
-        let cells_list: Vec<String> = soft.iter().map(|p| format!("{top}/{}", p.name)).collect();
+        let soft: Vec<String> = to_fabric(all.clone(), n).into_iter().map(|p| p.name).collect();
+        let (split, soft, _) = crate::softsplit::split(&prepared, top, &soft)?;
+        write_atomic(&dir.join(format!("{top}.split.json")), split.as_bytes())?;
+        let cells_list: Vec<String> = soft.iter().map(|p| format!("{top}/{p}")).collect();
         let before = format!("chtype -set $__soft_mul {}", cells_list.join(" "));
-        let log = yosys_with(dir, family, top, &[], json, &before, Some(&format!("{top}.prepared.il")))?;
+        let log = yosys_with(dir, family, top, &[], json, &before, Some(&format!("{top}.split.json")))?;
         over = cells(family, &log).dsp.saturating_sub(limit);
         if over == 0 || n == all.len() {
             return Ok((log, n as u64));
@@ -419,17 +425,17 @@ fn yosys_with(
     files: &[&str],
     json: Option<&str>,
     before: &str,
-    rtlil: Option<&str>,
+    design: Option<&str>,
 ) -> Result<String, String> {
     let mut script = String::new();
     for f in files {
         let _ = write!(script, "read_verilog {f}; ");
     }
-    if let Some(il) = rtlil {
-        let _ = write!(script, "read_rtlil {il}; ");
+    if let Some(d) = design {
+        let _ = write!(script, "read_json {d}; ");
     }
     let synth = format!("{} -top {top}", family.synth_command());
-    if rtlil.is_some() {
+    if design.is_some() {
         // products marked for logic (`$__soft_mul`) after `synth_ice40`'s `begin` has checked the hierarchy: current
         // yosys refuses such a cell there, though `synth_ice40` makes them itself later on (`synth_ecp5` has no
         // `flatten` label: the iCE40 is the only family whose products go to logic)

@@ -12,6 +12,7 @@ pub mod lint;
 pub mod package;
 pub mod regpack;
 pub mod selfcheck;
+pub mod softsplit;
 pub mod tools;
 pub mod unit;
 
