@@ -202,7 +202,8 @@ pub fn netlist_verilog(dir: &std::path::Path, json: &str, v: &str) -> Result<(),
     crate::tools::run(dir, crate::tools::toolchain().yosys(), &["-q", "-p", &script]).map(|_| ())
 }
 
-/// How to split one product: its unsplit operand's bits (`cols`), the operand split into rows, the registers it
+/// How to split one product: its unsplit operand's bits (`cols`), the operand split into rows (the narrower: fewer
+/// rows to a piece), the registers it
 /// replaces (the one that takes the product, and the plain copies of that one, if every bit it gives goes to one),
 /// their clock, how many registers deep the pieces are summed (1, or 2 through the copies), and the bits the last
 /// sum drives (the last replaced registers' outputs; `Null` where a bit is read by none).
@@ -281,7 +282,7 @@ fn plan(module: &Value, name: &str) -> Option<Plan> {
         return None;
     }
     let (clock, q) = (bits(f, "CLK").to_vec(), bits(f, "Q").to_vec());
-    let (cols, rows) = if b.len() >= a.len() { (a, b) } else { (b, a) };
+    let (cols, rows) = if b.len() <= a.len() { (a, b) } else { (b, a) };
     if rows.len() < 2 || q.len() <= rows.len() {
         return None;
     }
@@ -392,11 +393,11 @@ fn drop_init(netnames: &mut Map<String, Value>, q: &[Value]) {
 mod tests {
     use super::*;
 
-    /// A module where `m` = a × b (4 × 6 bits) goes to a plain register `r` of 8 bits, its Q bits 30..37; with
+    /// A module where `m` = a × b (8 × 6 bits) goes to a plain register `r` of 8 bits, its Q bits 30..37; with
     /// `copy`, r's Q goes to a plain register `c` (Q bits 50..57) and nothing else; with `extra_load`, a bit of the
     /// product is read by another cell too.
     fn design(copy: bool, extra_load: bool) -> String {
-        let a: Vec<u64> = (2..6).collect();
+        let a: Vec<u64> = (100..108).collect();
         let b: Vec<u64> = (6..12).collect();
         let y: Vec<u64> = (12..22).collect();
         let q: Vec<u64> = (30..38).collect();
@@ -406,7 +407,7 @@ mod tests {
                 "connections": { "CLK": [1], "D": d, "Q": q } })
         };
         let mut cells = json!({
-            "m": { "type": "$mul", "parameters": { "A_SIGNED": p32(0), "B_SIGNED": p32(0), "A_WIDTH": p32(4),
+            "m": { "type": "$mul", "parameters": { "A_SIGNED": p32(0), "B_SIGNED": p32(0), "A_WIDTH": p32(8),
                 "B_WIDTH": p32(6), "Y_WIDTH": p32(10) },
                 "port_directions": { "A": "input", "B": "input", "Y": "output" },
                 "connections": { "A": a, "B": b, "Y": y } },
@@ -443,7 +444,7 @@ mod tests {
         let cells = m["cells"].as_object().unwrap();
         assert!(!cells.contains_key("m") && !cells.contains_key("r"));
         let (lo, hi) = (&cells["$bumprtl$softsplit$0$p0"], &cells["$bumprtl$softsplit$0$p1"]);
-        // b (6 bits, the wider) split at 3: the low half's product keeps the register's 8 bits, the high one 5
+        // b (6 bits, the narrower) split at 3: the low half's product keeps the register's 8 bits, the high one 5
         assert_eq!((list(bits(lo, "B")), list(bits(hi, "B"))), ("6 7 8".into(), "9 10 11".into()));
         assert_eq!((num(lo, "Y_WIDTH"), num(hi, "Y_WIDTH")), (Some(8), Some(5)));
         let sum = &cells["$bumprtl$softsplit$0$s1"];

@@ -94,12 +94,15 @@ pub const WAIVED: &[Waived] = &[
         stays below 2^17; intervals see a anywhere in its U17"),
     w("BilinearUnit", "w_r", Bound, "a'_h·2^F ± |b' − a'|·v is the weighted mean (< 2^25) plus 2^(2F − D − 1): below 2^26"),
     w("BilinearUnit", "s11_out.d", Bound, "the rounded weighted mean of UW values shifted down by 2F − D is at most 2^W − 1"),
-    w("Blend", "s1_dp.d", Modular, "src − d modulo 2^16: read (stage 1b) only where src ≥ d, where it is exact, 0 ..= 255"),
-    w("Blend", "s1_dn.d", Modular, "d − src modulo 2^16: read (stage 1b) only where src < d, where it is exact, 1 ..= 255"),
-    w("Blend", "s2_k.d", Bound, "(256·d | 128 + neg) − d = 255·d + 128 + neg: 128 ..= 65,154; intervals see the two d apart"),
+    w("Blend", "s1_dp.d", Modular, "src − dst modulo 2^16: x = src − d in two's complement, −255 ..= 255"),
+    w("Blend", "s1_kd.d", Bound, "(256·dst | 128) − dst = 255·dst + 128: 128 ..= 65,153; intervals see the two dst apart"),
+    w("Blend", "s1b_k.d", Modular, "k − 512·α modulo 2^16 where x < 0: the 512·[x < 0] of x_u = x + 512·[x < 0], taken \
+        off beside the product; k + x_u·α modulo 2^16 is then t"),
+    w("Blend", "w_a9", Modular, "α·512 modulo 2^16: taken off k modulo 2^16, where only the sum's 16 bits count"),
+    w("Blend", "s2_p.d", Modular, "x_u·α's low 16 bits (x_u < 512, so below 2^17 whole): the sum with k is taken modulo 2^16"),
     w("Blend", "s2b_lo.d", Split, "a product's low 8 bits; its high 8 beside it in s2b_hi (two registers: see Dot3)"),
-    w("Blend", "w_t", Modular, "k + (p or ~p) modulo 2^16, k = 255·d + 128 + neg: 255·d + 128 − p is 255·d + 128 + ~p + 1; \
-        the result, src·α + d·(255 − α) + 128, is 128 ..= 65,153"),
+    w("Blend", "w_t", Modular, "k + x_u·α modulo 2^16 = 255·d + 128 + (src − d)·α = src·α + d·(255 − α) + 128, \
+        128 ..= 65,153"),
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),
     w("Lod", "w_grp", Split, "five bits of m, a slice at 5g (g = 0..4, the loop's index)"),
     w("Lod", "s5c_mc.d", Bound, "m << 5·(4 − g) where groups 4 .. g + 1 are zero, so m < 2^(5g + 5) and the shift loses no one"),

@@ -3,7 +3,7 @@
 //! light_iter → (delay 9) → normalise ─────────────────────────────┴→ dot3 → gloss → α = P >> 2 → blend.
 //! Side-band values ride beside the stages they skip: C in a block-RAM delay line (`RamDelay`), the mode and the
 //! colours in the `DelayedBlend`, the light and P in short DFF chains.
-//! Latency 58 = bilinear 13 + cart_decode 4 + normalise 14 + dot3 7 + gloss 14 + blend 6.
+//! Latency 59 = bilinear 13 + cart_decode 4 + normalise 14 + dot3 7 + gloss 14 + blend 7.
 //!
 //! Four variants, each written by `cartesian_pipeline!` (`wiring.rs`, shared with `cart_surface`), so each exported
 //! Verilog holds only its own units:
@@ -13,7 +13,7 @@
 //!   map between them is linear.
 //! - `CartPipelineMatte` (`cart_pipeline_matte`) and `CartPipelineHemiOctMatte` (`cart_pipeline_hemi_oct_matte`):
 //!   the same for a material with C = 0, where the gloss unit's P = X: no gloss unit, no C port, no C delay line,
-//!   α = X >> 2 (latency 44 and 43).
+//!   α = X >> 2 (latency 45 and 44).
 
 use crate::cart_decode::CartDecode;
 use crate::cart_decode_hemi_oct::CartDecodeHemiOct;

@@ -4,10 +4,10 @@
 //! surface's triangles each have their own), in one block-RAM delay line to the dot product.
 //! bilinear(TexelX, TexelZ) → cart_decode → normalise ─┐
 //! L (unit, Sq1.10) ─────────── (RAM delay 29) ────────┴→ dot3 → gloss(C) → α = P >> 2 → blend.
-//! Latency 58 = bilinear 13 + cart_decode 4 + normalise 14 + dot3 7 + gloss 14 + blend 6.
+//! Latency 59 = bilinear 13 + cart_decode 4 + normalise 14 + dot3 7 + gloss 14 + blend 7.
 //!
 //! `cart_surface_matte` is the same pipeline for a material with C = 0, where the gloss unit's P = X: it holds no
-//! gloss unit and has no C port, and α = X >> 2 (latency 44). The `_hemi_oct` variants read hemi-octahedral texels
+//! gloss unit and has no C port, and α = X >> 2 (latency 45). The `_hemi_oct` variants read hemi-octahedral texels
 //! through `cart_decode_hemi_oct` (one clock less). `cartesian_pipeline!` (`wiring.rs`, shared with `cart_pipeline`)
 //! writes all eight, so each exported Verilog holds only its own units.
 

@@ -1,7 +1,7 @@
 //! `polar_pipeline`: US 6,819,319's first embodiment, one pixel per clock, built from the unit blocks themselves:
 //! polar_shade(S, R, Q, k1, k2, k3) → power(p) → α → blend(src, dst).
 //! p rides beside the shade unit in a DFF chain; the mode and the colours wait in the `DelayedBlend`.
-//! Latency 29 = polar_shade 11 + power 12 + blend 6.
+//! Latency 30 = polar_shade 11 + power 12 + blend 7.
 
 use crate::delayed_blend::DelayedBlend;
 use crate::polar_shade::PolarShade;
