@@ -19,11 +19,7 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
     }
     println!("  {carry:<12} {:>6}", r.cells.carry);
     if r.cells.soft > 0 {
-        println!(
-            "  {} of its products built in logic, the smallest first, to fit the {} {dsp}; each in pieces across \
-             the register that takes it (and its copy), where it has one",
-            r.cells.soft, p.dsp
-        );
+        println!("  {} of its products built in logic, the smallest first, to fit the {} {dsp}", r.cells.soft, p.dsp);
     }
     match (&r.place_error, r.lc, r.fmax_mhz) {
         (Some(e), _, _) => println!("  does not place: {e}"),

@@ -395,7 +395,7 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
     for f in files {
         let _ = write!(script, "read_verilog {f}; ");
     }
-    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; tee -q -o {top}.products dump t:$mul; memory_collect; write_json {top}.prepared.json");
+    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; write_rtlil {top}.prepared.il; tee -q -o {top}.products dump t:$mul; memory_collect; write_json {top}.prepared.json");
     tools::run(dir, tools::toolchain().yosys(), &["-q", "-p", &script])?;
     let dump = std::fs::read_to_string(dir.join(format!("{top}.products")))
         .map_err(|e| format!("no yosys product list: {e}"))?;
@@ -406,11 +406,19 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
     loop {
         n = (n + over as usize).min(all.len());
         let soft: Vec<String> = to_fabric(all.clone(), n).into_iter().map(|p| p.name).collect();
-        let (split, soft, _) = crate::softsplit::split(&prepared, top, &soft)?;
+        let (split, pieces, _) = crate::softsplit::split(&prepared, top, &soft)?;
         write_atomic(&dir.join(format!("{top}.split.json")), split.as_bytes())?;
-        let cells_list: Vec<String> = soft.iter().map(|p| format!("{top}/{p}")).collect();
-        let before = format!("chtype -set $__soft_mul {}", cells_list.join(" "));
-        let log = yosys_with(dir, family, top, &[], json, &before, Some(&format!("{top}.split.json")))?;
+        let retype = |cells: &[String]| {
+            let list: Vec<String> = cells.iter().map(|p| format!("{top}/{p}")).collect();
+            format!("chtype -set $__soft_mul {}", list.join(" "))
+        };
+        let log = match yosys_with(dir, family, top, &[], json, &retype(&pieces), Some(&format!("{top}.split.json"))) {
+            Ok(log) => log,
+            // yosys 0.23 stops on some designs read back from JSON (`cart_tex_nearest_surface_matte`, its map in
+            // SPRAM: "Assert `count_id(cell->name) == 0' failed", a cell named twice): those are synthesised from
+            // the RTLIL as before the split, their products in logic whole
+            Err(_) => yosys_with(dir, family, top, &[], json, &retype(&soft), Some(&format!("{top}.prepared.il")))?,
+        };
         over = cells(family, &log).dsp.saturating_sub(limit);
         if over == 0 || n == all.len() {
             return Ok((log, n as u64));
@@ -432,7 +440,8 @@ fn yosys_with(
         let _ = write!(script, "read_verilog {f}; ");
     }
     if let Some(d) = design {
-        let _ = write!(script, "read_json {d}; ");
+        let read = if d.ends_with(".il") { "read_rtlil" } else { "read_json" };
+        let _ = write!(script, "{read} {d}; ");
     }
     let synth = format!("{} -top {top}", family.synth_command());
     if design.is_some() {
