@@ -467,7 +467,7 @@ fn hardware_table(names: &[&str], hw: &[Vec<(synth::fpga::Part, synth::fpga::Fit
             &|f, _| match f {
                 Fit::Placed(r) => match (&r.place_error, r.fmax_mhz) {
                     (Some(_), _) => "does not place".into(),
-                    (None, Some(x)) => format!("{x:.1} MHz ({})", r.placements),
+                    (None, Some(x)) => format!("{x:.1} MHz ({})", r.placed_of()),
                     _ => "-".into(),
                 },
                 Fit::DoesNotFit(_) => "does not fit".into(),

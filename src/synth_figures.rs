@@ -58,16 +58,21 @@ pub fn rate(interval: usize, fmax_mhz: Option<f64>) -> String {
     }
 }
 
-/// What an fmax is the median of: "the median of 5 placements (nextpnr seeds), slowest 120.3, fastest 131.0 MHz".
+/// What an fmax is the median of: "the median of 5 placements (nextpnr seeds), slowest 120.3, fastest 131.0 MHz",
+/// and the seeds at which the design did not place, if any.
 pub fn placements(r: &synth::fpga::SynthReport) -> String {
     let n = r.placements;
     let range = match r.fmax_range {
         Some((lo, hi)) if n > 1 => format!(", slowest {lo:.1}, fastest {hi:.1} MHz"),
         _ => String::new(),
     };
-    match n {
+    let median = match n {
         1 => format!("one placement (nextpnr seed {})", r.seed),
         _ => format!("the median of {n} placements (nextpnr seeds){range}"),
+    };
+    match r.unplaced.as_slice() {
+        [] => median,
+        u => format!("{median}; it did not place at {}", u.join("; ")),
     }
 }
 

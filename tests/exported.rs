@@ -232,15 +232,17 @@ fn fmax_figures(out: &str) -> (f64, u32, f64, f64, u32) {
 fn synth_places_at_several_seeds_each_cached_and_reports_their_median() {
     let d = scratch("seeds");
     let cache = d.join("cache");
-    let run = |seeds: &str| {
+    let run_limited = |seeds: &str, limit: &str| {
         let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
             .args(["synth", "gloss", "--target", "up5k", "--seeds", seeds, "--dir", d.join("work").to_str().unwrap()])
             .env("BUMPRTL_SYNTH_CACHE", &cache)
+            .env("BUMPRTL_PLACE_LIMIT", limit)
             .output()
             .unwrap();
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         String::from_utf8_lossy(&o.stdout).into_owned()
     };
+    let run = |seeds: &str| run_limited(seeds, "900");
     let placements = || {
         let mut v: Vec<String> = std::fs::read_dir(&cache)
             .unwrap()
@@ -267,6 +269,13 @@ fn synth_places_at_several_seeds_each_cached_and_reports_their_median() {
     assert!(!d.join("work/gloss/nextpnr.seed1.log").exists(), "seed 1 was placed again");
     let again: Vec<String> = three.iter().map(|n| std::fs::read_to_string(cache.join(n)).unwrap()).collect();
     assert_eq!(again, kept);
+    // a placement stopped at the time limit is named with its seed, the median is of the others, and it is not
+    // cached (another run may finish it)
+    let out = run_limited("6", "0");
+    let (m6, n, ..) = fmax_figures(&out);
+    assert_eq!((m6, n), (median, 5), "{out}");
+    assert!(out.contains("it did not place at seed 6: nextpnr had not finished after 0 s"), "{out}");
+    assert_eq!(placements().len(), 5);
     // the figures are the cached placements': seed 1's entry changed by hand is what one placement reports
     let first = three.iter().find(|n| std::fs::read_to_string(cache.join(n)).unwrap().contains("\nseed=1\n")).unwrap();
     let text = std::fs::read_to_string(cache.join(first)).unwrap();
@@ -465,7 +474,7 @@ endmodule
     }
     let wrong = packed.replacen(both, "\"REGMODE_A\":\"NOREG\",\"REGMODE_B\":\"NOREG\"", 1);
     std::fs::write(d.join("wrong.json"), wrong).unwrap();
-    ::synth::regpack::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
+    ::synth::tools::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
     let (_, out) = runs("wrong.v");
     assert!(!out.lines().any(|l| l == want) && out.contains(" passed, "), "a wrong packing passed:\n{out}");
 }
@@ -506,7 +515,7 @@ fn the_ecp5_netlist_with_its_registers_in_the_blocks_passes_the_golden_vectors_a
         assert!(base.contains(from), "{u}: no {from} to change");
         let wrong = base.replacen(from, to, 1);
         std::fs::write(d.join("wrong.json"), wrong).unwrap();
-        synth::regpack::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
+        synth::tools::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
         let (ok, out) = netlist_passes(&d, u, "wrong.v", n);
         assert!(!ok, "{u}: a wrong packing passed:\n{out}");
     }
@@ -540,7 +549,7 @@ fn products_split_across_their_registers_pass_the_golden_vectors_and_a_wrong_spl
         let end = b + text[b..].find(']').unwrap();
         let wrong = format!("{}\"B\":[{},\"0\"]{}", &text[..b], &text[b + 9..end], &text[end + 1..]);
         std::fs::write(d.join("wrong.json"), wrong).unwrap();
-        synth::softsplit::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
+        synth::tools::netlist_verilog(&d, "wrong.json", "wrong.v").unwrap();
         let (ok, out) = passes("wrong.v");
         assert!(!ok && out.contains(" passed, "), "{u}: a wrong split passed:\n{out}");
     }

@@ -149,8 +149,12 @@ pub fn run_point(p: &Point, dir: &Path, place: Option<u32>) -> Result<PointFigur
     if let (Some(n), false) = (place, r.estimated) {
         if let Some(rep) = crate::units::place_cached(m.name, &udir, synth::fpga::Seeds::all(n))? {
             // a design whose cells fit the part but whose placement fails says so where its figures would be
-            r.part =
-                if rep.place_error.is_some() { format!("{} (does not place)", rep.part) } else { rep.part.clone() };
+            // (and one that fails at some seeds names them)
+            r.part = match (&rep.place_error, rep.unplaced.len()) {
+                (Some(_), _) => format!("{} (does not place)", rep.part),
+                (None, 0) => rep.part.clone(),
+                (None, k) => format!("{} (does not place at {k} of {n} seeds)", rep.part),
+            };
             r.lc = rep.lc;
             r.fmax = rep.fmax_mhz;
             (r.fmax_range, r.placements) = (rep.fmax_range, rep.placements);

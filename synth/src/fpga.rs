@@ -254,8 +254,10 @@ pub struct SynthReport {
     pub lc: Option<u64>,
     pub fmax_mhz: Option<f64>,
     pub critical: Option<String>,
-    /// why place-and-route failed, when it did
+    /// why place-and-route failed, when it did (at every seed: see `unplaced` for a design that places at some)
     pub place_error: Option<String>,
+    /// the seeds at which a design that places at others did not, each "seed N: why"
+    pub unplaced: Vec<String>,
     /// how many placements (nextpnr seeds) the figures are the median of, the seed of the median one, and the
     /// slowest and the fastest placement's fmax
     pub placements: u32,
@@ -270,6 +272,14 @@ pub struct SynthReport {
 impl SynthReport {
     pub fn part(&self) -> Part {
         part(&self.part).expect("a report names a known part")
+    }
+
+    /// How many placements the figures are the median of: "5", or "4 of 5" where one did not place.
+    pub fn placed_of(&self) -> String {
+        match self.unplaced.len() {
+            0 => self.placements.to_string(),
+            k => format!("{} of {}", self.placements, self.placements + k as u32),
+        }
     }
 }
 
@@ -347,7 +357,7 @@ pub const KEEP_OPERAND_COPIES: &str = "proc; setattr -set keep 1 *$mop_*/t:$dff"
 /// is still over (two products can share a block, so moving one does not always free one). Each product in logic is
 /// then split across the register that takes it (`crate::softsplit`), half its adder tree a clock.
 pub const FABRIC_PRODUCTS: &str = "iCE40: over 8 SB_MAC16, the fewest smallest products in logic that bring it to 8, \
-    each split across the register that takes it (bumprtl softsplit 1)";
+    each split across the register that takes it (bumprtl softsplit 2)";
 pub(crate) const PREPARE: &str = "flatten; opt -full; wreduce; opt_clean; share; opt_clean";
 
 /// A multiplier cell of a prepared design: its name and operand widths.
@@ -402,6 +412,13 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
     let all = products(&dump);
     let prepared = std::fs::read_to_string(dir.join(format!("{top}.prepared.json")))
         .map_err(|e| format!("no prepared yosys design: {e}"))?;
+    // the names yosys made so far end in numbers up to RTLIL's `autoidx`, which JSON does not carry: read back
+    // without it, yosys numbers its new cells from 1 again and stops when one is named twice ("Assert
+    // `count_id(cell->name) == 0'", `cart_tex_nearest_surface_matte` in `synth_ice40`'s arithmetic mapping)
+    let il = std::fs::read_to_string(dir.join(format!("{top}.prepared.il")))
+        .map_err(|e| format!("no prepared yosys design: {e}"))?;
+    let autoidx = il.lines().find(|l| l.starts_with("autoidx ")).ok_or("the prepared yosys design has no autoidx")?;
+    write_atomic(&dir.join(format!("{top}.autoidx.il")), format!("{autoidx}\n").as_bytes())?;
     let mut n = 0usize;
     loop {
         n = (n + over as usize).min(all.len());
@@ -412,13 +429,7 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
             let list: Vec<String> = cells.iter().map(|p| format!("{top}/{p}")).collect();
             format!("chtype -set $__soft_mul {}", list.join(" "))
         };
-        let log = match yosys_with(dir, family, top, &[], json, &retype(&pieces), Some(&format!("{top}.split.json"))) {
-            Ok(log) => log,
-            // yosys 0.23 stops on some designs read back from JSON (`cart_tex_nearest_surface_matte`, its map in
-            // SPRAM: "Assert `count_id(cell->name) == 0' failed", a cell named twice): those are synthesised from
-            // the RTLIL as before the split, their products in logic whole
-            Err(_) => yosys_with(dir, family, top, &[], json, &retype(&soft), Some(&format!("{top}.prepared.il")))?,
-        };
+        let log = yosys_with(dir, family, top, &[], json, &retype(&pieces), Some(&format!("{top}.split.json")))?;
         over = cells(family, &log).dsp.saturating_sub(limit);
         if over == 0 || n == all.len() {
             return Ok((log, n as u64));
@@ -440,8 +451,7 @@ fn yosys_with(
         let _ = write!(script, "read_verilog {f}; ");
     }
     if let Some(d) = design {
-        let read = if d.ends_with(".il") { "read_rtlil" } else { "read_json" };
-        let _ = write!(script, "{read} {d}; ");
+        let _ = write!(script, "read_rtlil {top}.autoidx.il; read_json {d}; ");
     }
     let synth = format!("{} -top {top}", family.synth_command());
     if design.is_some() {
@@ -679,9 +689,23 @@ fn wrapped(u: &Unit, dir: &Path, part: Part, choice: &str) -> Result<SynthReport
     })
 }
 
+/// How a placement stopped at the time limit begins its error; such a placement is not cached (another machine, or
+/// the same one less loaded, may finish it).
+const STOPPED: &str = "nextpnr had not finished after";
+
+/// How long one placement may take: `$BUMPRTL_PLACE_LIMIT` seconds, else 15 minutes. nextpnr-ice40 0.4's router can
+/// go round without end on a nearly full part: `cart_tex_nearest_surface_matte` on the UP5K (82 % of its logic
+/// cells) routes in minutes at seeds 1, 3, 4 and 5, and at seed 2 still had the same 5,591 arcs to route after
+/// 170,000 iterations.
+pub fn place_limit() -> std::time::Duration {
+    let s = std::env::var("BUMPRTL_PLACE_LIMIT").ok().and_then(|v| v.trim().parse().ok()).unwrap_or(900);
+    std::time::Duration::from_secs(s)
+}
+
 /// One nextpnr placement of `wrapped.json` in `dir` at `seed` and a `freq_mhz` target: `base` with this placement's
 /// logic cells, fmax and critical path (its log `nextpnr.seed<N>.log`). A placement that fails (a design too big
-/// for the part in a way the cell counts did not show) is a figure, not an error; a tool that cannot run is an error.
+/// for the part in a way the cell counts did not show) or that has not finished within `place_limit()` is a
+/// figure, not an error; a tool that cannot run is an error.
 fn place(dir: &Path, part: Part, freq_mhz: f64, seed: u32, base: &SynthReport) -> Result<SynthReport, String> {
     let mut r = SynthReport { seed, placements: 1, ..base.clone() };
     let (freq, seed_arg, asc) = (format!("{freq_mhz}"), seed.to_string(), format!("wrapped.seed{seed}.asc"));
@@ -695,8 +719,13 @@ fn place(dir: &Path, part: Part, freq_mhz: f64, seed: u32, base: &SynthReport) -
         Family::Ecp5 => tools::nextpnr_ecp5().ok_or_else(tools::nextpnr_ecp5_missing)?,
     };
     let lc_name = format!("{}:", part.logic_cell_name());
-    let out = match tools::run(dir, &prog, &args) {
-        Ok(o) => o,
+    let limit = place_limit();
+    let out = match tools::run_limited(dir, &prog, &args, limit) {
+        Ok(Some(o)) => o,
+        Ok(None) => {
+            r.place_error = Some(format!("{STOPPED} {} s", limit.as_secs()));
+            return Ok(r);
+        }
         // nextpnr said why the design does not place: a figure of the report; anything else (the tool missing or
         // crashing) is an error
         Err(e) => match e.lines().find(|l| l.contains("ERROR")) {
@@ -763,17 +792,21 @@ fn place_all(
 
 /// The median of placements of one design (one report a seed): that placement's logic cells, fmax and critical
 /// path, with how many placements it is the median of and their slowest and fastest fmax. With an even count it is
-/// the slower of the two middle placements, so that the critical path shown is one nextpnr reported. A placement
-/// that failed makes the whole a design that does not place, its error naming the seed: a design that places at
-/// some seeds only is not one a user can rely on.
-pub fn median(mut all: Vec<SynthReport>) -> Option<SynthReport> {
-    let n = all.len() as u32;
-    if let Some(k) = all.iter().position(|r| r.place_error.is_some()) {
-        let mut r = all.swap_remove(k);
+/// the slower of the two middle placements, so that the critical path shown is one nextpnr reported. Placements
+/// that failed are not ranked: the median is of those that placed, and the failed ones are named with their seeds
+/// (`unplaced`); a design that places at no seed is one that does not place, its error naming the first seed.
+pub fn median(all: Vec<SynthReport>) -> Option<SynthReport> {
+    let (failed, mut all): (Vec<_>, Vec<_>) = all.into_iter().partition(|r| r.place_error.is_some());
+    let unplaced =
+        failed.iter().map(|r| format!("seed {}: {}", r.seed, r.place_error.as_deref().unwrap_or(""))).collect();
+    if all.is_empty() {
+        let mut r = failed.into_iter().next()?;
         r.place_error = r.place_error.map(|e| format!("{e} (at nextpnr seed {})", r.seed));
-        (r.placements, r.fmax_mhz, r.fmax_range, r.lc, r.critical) = (n, None, None, None, None);
+        (r.placements, r.fmax_mhz, r.fmax_range, r.lc, r.critical) = (0, None, None, None, None);
+        r.unplaced = unplaced;
         return Some(r);
     }
+    let n = all.len() as u32;
     // a placement without an fmax figure (nextpnr printed none) ranks below every one with a figure
     let rank = |r: &SynthReport| r.fmax_mhz.unwrap_or(f64::NEG_INFINITY);
     all.sort_by(|a, b| rank(a).total_cmp(&rank(b)).then(a.seed.cmp(&b.seed)));
@@ -782,7 +815,7 @@ pub fn median(mut all: Vec<SynthReport>) -> Option<SynthReport> {
         _ => None,
     };
     let mut r = all.swap_remove((all.len() - 1) / 2);
-    (r.placements, r.fmax_range) = (n, range);
+    (r.placements, r.fmax_range, r.unplaced) = (n, range, unplaced);
     Some(r)
 }
 
@@ -838,7 +871,9 @@ pub fn synth_and_place(
     if !missing.is_empty() {
         let base = wrapped(u, dir, part, choice)?;
         for r in place_all(dir, part, freq_mhz, &missing, &base)? {
-            cache::put(&key(r.seed), "placement", &r.to_text())?;
+            if !r.place_error.as_deref().is_some_and(|e| e.starts_with(STOPPED)) {
+                cache::put(&key(r.seed), "placement", &r.to_text())?;
+            }
             have.push(r);
         }
     }
@@ -855,13 +890,14 @@ impl SynthReport {
         let c = &self.cells;
         let (lo, hi) = (self.fmax_range.map(|r| r.0.to_string()), self.fmax_range.map(|r| r.1.to_string()));
         format!(
-            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nplacements={}\nseed={}\nfmax_min={}\nfmax_max={}\nblocks={}\npacked={}\ninterval={}\n",
+            "unit={}\npart={}\nlut4={}\nff={}\ndsp={}\nbram={}\ncarry={}\nsoft={}\nspram={}\nlatency={}\nchoice={}\nlc={}\nfmax_mhz={}\ncritical={}\nplace_error={}\nplacements={}\nseed={}\nfmax_min={}\nfmax_max={}\nblocks={}\npacked={}\ninterval={}\nunplaced={}\n",
             self.unit, self.part, c.lut4, c.ff, c.dsp, c.bram, c.carry, c.soft, c.spram, self.latency, self.choice.replace('\n', " "),
             o(self.lc.map(|x| x.to_string())), o(self.fmax_mhz.map(|x| x.to_string())),
             o(self.critical.clone()), o(self.place_error.clone()), self.placements, self.seed, o(lo), o(hi),
             self.blocks.to_text(),
             self.packed,
-            self.interval
+            self.interval,
+            self.unplaced.join(" | ")
         )
     }
 
@@ -895,6 +931,7 @@ impl SynthReport {
             fmax_range: opt("fmax_min").and_then(|v| v.parse().ok()).zip(opt("fmax_max").and_then(|v| v.parse().ok())),
             blocks: Blocks::from_text(get("blocks")?),
             packed: get("packed").unwrap_or_default().to_string(),
+            unplaced: opt("unplaced").map(|v| v.split(" | ").map(str::to_string).collect()).unwrap_or_default(),
         })
     }
 }
@@ -933,10 +970,19 @@ mod tests {
             fmax_range: Some((6.25, 8.5)),
             blocks: Blocks { by_instance: vec![("unit$0".into(), 3, 0), ("norm".into(), 6, 1)] },
             packed: "2 multiplier operands and 1 products through the MULT18X18D registers".into(),
+            unplaced: vec!["seed 1: ERROR: no route".into(), "seed 4: nextpnr had not finished after 900 s".into()],
         };
         let back = SynthReport::from_text(&r.to_text()).unwrap();
         assert_eq!(back.to_text(), r.to_text());
-        let none = SynthReport { lc: None, fmax_mhz: None, critical: None, place_error: None, fmax_range: None, ..r };
+        let none = SynthReport {
+            lc: None,
+            fmax_mhz: None,
+            critical: None,
+            place_error: None,
+            fmax_range: None,
+            unplaced: vec![],
+            ..r
+        };
         assert_eq!(SynthReport::from_text(&none.to_text()).unwrap().to_text(), none.to_text());
         assert!(SynthReport::from_text("unit=u\nlut4=x\n").is_none());
         assert!(SynthReport::from_text(&none.to_text().replace("ecp5-45f", "ecp5-12f")).is_none());
@@ -960,13 +1006,18 @@ mod tests {
         assert_eq!((m.seed, m.fmax_mhz, m.placements, m.fmax_range), (4, Some(85.0), 4, Some((80.0, 95.0))));
         let one = median(vec![at(7, 50.0)]).unwrap();
         assert_eq!((one.seed, one.placements, one.fmax_range), (7, 1, Some((50.0, 50.0))));
-        // a placement with no fmax figure is the slowest; one that failed makes the design one that does not place
+        // a placement with no fmax figure is the slowest
         let m = median(vec![at(1, 60.0), SynthReport { fmax_mhz: None, ..at(2, 0.0) }, at(3, 70.0)]).unwrap();
         assert_eq!((m.seed, m.fmax_range), (1, None));
-        let failed = SynthReport { place_error: Some("ERROR: no route".into()), ..at(2, 0.0) };
-        let m = median(vec![at(1, 60.0), failed, at(3, 70.0)]).unwrap();
-        assert_eq!(m.place_error.as_deref(), Some("ERROR: no route (at nextpnr seed 2)"));
-        assert_eq!((m.fmax_mhz, m.placements, m.critical), (None, 3, None));
+        // one that failed is named, and the median is of the others: of two, the slower
+        let failed = |seed| SynthReport { place_error: Some("ERROR: no route".into()), ..at(seed, 0.0) };
+        let m = median(vec![at(1, 60.0), failed(2), at(3, 70.0)]).unwrap();
+        assert_eq!((m.place_error, m.seed, m.fmax_mhz, m.placements), (None, 1, Some(60.0), 2));
+        assert_eq!((m.fmax_range, m.unplaced), (Some((60.0, 70.0)), vec!["seed 2: ERROR: no route".to_string()]));
+        // failed at every seed: a design that does not place, the first seed named
+        let m = median(vec![failed(3), failed(5)]).unwrap();
+        assert_eq!(m.place_error.as_deref(), Some("ERROR: no route (at nextpnr seed 3)"));
+        assert_eq!((m.fmax_mhz, m.placements, m.critical, m.unplaced.len()), (None, 0, None, 2));
         assert!(median(vec![]).is_none());
     }
 

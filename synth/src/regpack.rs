@@ -649,12 +649,6 @@ fn sim_library() -> Result<String, String> {
     Ok(models() + &out)
 }
 
-/// Write a yosys JSON netlist `json` in `dir` as Verilog `v` (yosys `write_verilog`), for a simulator.
-pub fn netlist_verilog(dir: &std::path::Path, json: &str, v: &str) -> Result<(), String> {
-    let script = format!("read_json {json}; write_verilog -noattr {v}");
-    crate::tools::run(dir, crate::tools::toolchain().yosys(), &["-q", "-p", &script]).map(|_| ())
-}
-
 /// The unit `top` (its Verilog `verilog` in `dir`) through `synth_ecp5`, as yosys writes it (`<top>.ecp5.json`,
 /// `<top>.ecp5.v`) and packed by this pass (`<top>.packed.json`, `<top>.packed.v`), with the library a simulator
 /// runs them on (`ecp5_cells.v`: yosys's cells and `models()`): each netlist module is `top`, ports and latency
@@ -666,7 +660,7 @@ pub fn netlists(dir: &std::path::Path, top: &str, verilog: &str) -> Result<Packi
     let (packed, p) = pack_ecp5(&text, top)?;
     crate::export::write_atomic(&dir.join(format!("{top}.packed.json")), packed.as_bytes())?;
     for n in ["ecp5", "packed"] {
-        netlist_verilog(dir, &format!("{top}.{n}.json"), &format!("{top}.{n}.v"))?;
+        crate::tools::netlist_verilog(dir, &format!("{top}.{n}.json"), &format!("{top}.{n}.v"))?;
     }
     crate::export::write_atomic(&dir.join("ecp5_cells.v"), sim_library()?.as_bytes())?;
     Ok(p)

@@ -84,7 +84,7 @@ pub fn split(json: &str, top: &str, soft: &[String]) -> Result<(String, Vec<Stri
             let (lo, hi) = (j * g / pieces, (j + 1) * g / pieces);
             let y = fresh(w - lo);
             let m = format!("{tag}$p{j}");
-            arith.push((m.clone(), mul(&plan.cols, &plan.rows[lo..hi], &y)));
+            arith.push((m.clone(), self::arith("$mul", &plan.cols, &plan.rows[lo..hi], &y)));
             cells_out.push(m);
             let q = reg(format!("{tag}$p{j}_q"), y, &mut fresh);
             values.push((lo, q));
@@ -97,7 +97,7 @@ pub fn split(json: &str, top: &str, soft: &[String]) -> Result<(String, Vec<Stri
             shifted.extend(v.iter().cloned());
             let last = m + 1 == values.len();
             let y = if last && plan.levels == 1 { plan.out.clone() } else { fresh(w) };
-            arith.push((format!("{tag}$s{m}"), add(&acc, &shifted, &y)));
+            arith.push((format!("{tag}$s{m}"), self::arith("$add", &acc, &shifted, &y)));
             acc = y;
         }
         let out_init = plan.levels == 2;
@@ -131,22 +131,10 @@ pub fn split(json: &str, top: &str, soft: &[String]) -> Result<(String, Vec<Stri
     Ok((text, cells_out, count))
 }
 
-/// An unsigned product `y` = a × b, y's width.
-fn mul(a: &[Value], b: &[Value], y: &[Value]) -> Value {
+/// An unsigned `$mul` or `$add` cell `y` = a × b or a + b, y's width.
+fn arith(kind: &str, a: &[Value], b: &[Value], y: &[Value]) -> Value {
     json!({
-        "hide_name": 1, "type": "$mul",
-        "parameters": { "A_SIGNED": p32(0), "A_WIDTH": p32(a.len()), "B_SIGNED": p32(0), "B_WIDTH": p32(b.len()),
-            "Y_WIDTH": p32(y.len()) },
-        "attributes": {},
-        "port_directions": { "A": "input", "B": "input", "Y": "output" },
-        "connections": { "A": a, "B": b, "Y": y },
-    })
-}
-
-/// An unsigned sum `y` = a + b, y's width.
-fn add(a: &[Value], b: &[Value], y: &[Value]) -> Value {
-    json!({
-        "hide_name": 1, "type": "$add",
+        "hide_name": 1, "type": kind,
         "parameters": { "A_SIGNED": p32(0), "A_WIDTH": p32(a.len()), "B_SIGNED": p32(0), "B_WIDTH": p32(b.len()),
             "Y_WIDTH": p32(y.len()) },
         "attributes": {},
@@ -190,16 +178,9 @@ pub fn netlists(dir: &std::path::Path, top: &str, verilog: &str) -> Result<usize
     let (out, _, n) = split(&text, top, &products)?;
     crate::export::write_atomic(&dir.join(format!("{top}.split.json")), out.as_bytes())?;
     for n in ["prepared", "split"] {
-        netlist_verilog(dir, &format!("{top}.{n}.json"), &format!("{top}.{n}.v"))?;
+        crate::tools::netlist_verilog(dir, &format!("{top}.{n}.json"), &format!("{top}.{n}.v"))?;
     }
     Ok(n)
-}
-
-/// A coarse design (yosys JSON) as Verilog a simulator runs. `opt_clean` first: a register's initial value is on
-/// whichever of its output's names `proc` left it, and `write_verilog` writes it only on the one it declares `reg`.
-pub fn netlist_verilog(dir: &std::path::Path, json: &str, v: &str) -> Result<(), String> {
-    let script = format!("read_json {json}; opt_clean; write_verilog -noattr {v}");
-    crate::tools::run(dir, crate::tools::toolchain().yosys(), &["-q", "-p", &script]).map(|_| ())
 }
 
 /// How to split one product: its unsplit operand's bits (`cols`), the operand split into rows (the narrower: fewer

