@@ -466,7 +466,7 @@ fn hardware_table(names: &[&str], hw: &[Vec<(synth::fpga::Part, synth::fpga::Fit
             "fmax, 1 pixel/clock (placements)",
             &|f, _| match f {
                 Fit::Placed(r) => match (&r.place_error, r.fmax_mhz) {
-                    (Some(_), _) => "does not place".into(),
+                    (Some(_), _) => r.unplaced_text(),
                     (None, Some(x)) => format!("{x:.1} MHz ({})", r.placed_of()),
                     _ => "-".into(),
                 },

@@ -58,11 +58,22 @@ const FIGURE_3: usize = 8;
 const MATERIAL: [f64; 4] = [0.85, 0.7, 0.5, 1.0];
 
 /// The builders' placed fmax, MHz, when measured: `table_builder` on the ECP5-25F, `palette_pipeline_shared` (its
-/// shared builder inside) on the UP5K.
-#[derive(Clone, Copy, Debug, Default)]
+/// shared builder inside) on the UP5K; and for each how many placements it is the median of ("5", "4 of 5"), or
+/// why it has none (a design that does not place).
+#[derive(Clone, Debug, Default)]
 pub struct Fmax {
     pub builder_mhz: Option<f64>,
     pub shared_mhz: Option<f64>,
+    pub builder_placed: String,
+    pub shared_placed: String,
+}
+
+/// How many placements a report's fmax is the median of, or why it has none.
+fn placed(r: &synth::fpga::SynthReport) -> String {
+    match &r.place_error {
+        Some(e) => format!("{}: {e}", r.unplaced_text()),
+        None => r.placed_of(),
+    }
 }
 
 /// The largest palette `palette_pipeline_shared` holds: its 8-bit index (two tables of 256 words in 4 of the UP5K's
@@ -100,7 +111,12 @@ pub fn command(no_synth: bool, dir: &std::path::Path, out: &std::path::Path) -> 
             "",
             five,
         )?;
-        Fmax { builder_mhz: one.fmax_mhz, shared_mhz: shared.fmax_mhz }
+        Fmax {
+            builder_mhz: one.fmax_mhz,
+            shared_mhz: shared.fmax_mhz,
+            builder_placed: placed(&one),
+            shared_placed: placed(&shared),
+        }
     };
     run(fmax, out)
 }
@@ -141,19 +157,20 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
     println!("per-frame table for s_N normals; paper: Pentium 300 MHz (its 16,384 row says 16348); model: one core here, the");
     println!("bit-exact table_builder with the palette's normals normalised once per map (the palette changes per map, not per");
     println!("frame: the same normaliser output the builder computes), chrome and environment in f64 (no rtl);");
-    let at = |f: Option<f64>, place: &str| match f {
-        Some(f) => format!("{f:.1} MHz (on the {place}, the median of {} placements)", synth::fpga::Seeds::FIVE.n),
+    let at = |f: Option<f64>, place: &str, placed: &str| match f {
+        Some(f) => format!("{f:.1} MHz (on the {place}, the median of {placed} placements)"),
+        None if !placed.is_empty() => format!("its fmax (on the {place}: {placed})"),
         None => "its fmax (not measured: --no-synth, or the tools missing)".into(),
     };
     println!(
         "rtl µs: table_builder, one normal a clock (s_N + {} clocks) at {}",
         vectors_latency(),
-        at(fmax.builder_mhz, "ECP5-25F")
+        at(fmax.builder_mhz, "ECP5-25F", &fmax.builder_placed)
     );
     println!(
         "UP5K µs: palette_pipeline_shared's builder, one normal every two clocks (2·s_N + {} clocks) at {}; s_N ≤ {SHARED_MAX}",
         rtl::table_builder_shared::LATENCY,
-        at(fmax.shared_mhz, "UP5K")
+        at(fmax.shared_mhz, "UP5K", &fmax.shared_placed)
     );
     println!(
         "{:<20} {:>6} {:>9} {:>11} {:>10} {:>9} {:>9} {:>16} {:>18}",

@@ -22,7 +22,7 @@ pub fn synth_row(r: &synth::fpga::SynthReport) {
         println!("  {} of its products built in logic, the smallest first, to fit the {} {dsp}", r.cells.soft, p.dsp);
     }
     match (&r.place_error, r.lc, r.fmax_mhz) {
-        (Some(e), _, _) => println!("  does not place: {e}"),
+        (Some(e), _, _) => println!("  {}: {e}", r.unplaced_text()),
         (None, lc, f) => {
             if let Some(lc) = lc {
                 println!("  {:<12} {}  (placed, with the serial I/O wrapper)", p.logic_cell_name(), share(lc, p.lut4));

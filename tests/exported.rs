@@ -270,13 +270,29 @@ fn synth_places_at_several_seeds_each_cached_and_reports_their_median() {
     assert!(!d.join("work/gloss/nextpnr.seed1.log").exists(), "seed 1 was placed again");
     let again: Vec<String> = three.iter().map(|n| std::fs::read_to_string(cache.join(n)).unwrap()).collect();
     assert_eq!(again, kept);
-    // a placement stopped at the time limit is named with its seed, the median is of the others, and it is not
-    // cached (another run may finish it)
+    // a placement stopped at the time limit is named with its seed, the median is of the others; it is cached with
+    // its limit, read back under the same limit and placed again under a longer one
     let out = run_limited("6", "0");
     let (m6, n, ..) = fmax_figures(&out);
     assert_eq!((m6, n), (median, 5), "{out}");
     assert!(out.contains("it did not place at seed 6: nextpnr had not finished after 0 s"), "{out}");
-    assert_eq!(placements().len(), 5);
+    assert_eq!(placements().len(), 6);
+    let log6 = d.join("work/gloss/nextpnr.seed6.log");
+    std::fs::remove_file(&log6).unwrap();
+    let again = run_limited("6", "0");
+    assert!(again.contains("it did not place at seed 6") && !log6.exists(), "{again}");
+    let placed = run("6");
+    let (_, n, ..) = fmax_figures(&placed);
+    assert!(n == 6 && !placed.contains("did not place") && log6.exists(), "{placed}");
+    // a limit that is not a number of seconds is refused in one line
+    let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+        .args(["synth", "gloss", "--target", "up5k", "--seeds", "7", "--dir", d.join("work").to_str().unwrap()])
+        .env("BUMPRTL_SYNTH_CACHE", &cache)
+        .env("BUMPRTL_PLACE_LIMIT", "15m")
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && err.lines().count() == 1 && err.contains("BUMPRTL_PLACE_LIMIT=15m"), "{err}");
     // the figures are the cached placements': seed 1's entry changed by hand is what one placement reports
     let first = three.iter().find(|n| std::fs::read_to_string(cache.join(n)).unwrap().contains("\nseed=1\n")).unwrap();
     let text = std::fs::read_to_string(cache.join(first)).unwrap();

@@ -21,7 +21,7 @@ pub fn markdown(rs: &[PointFigures], budgets: &[f64]) -> String {
         "Error against each scene's f64 ideal, 8-bit LSB (mean / max; angle in degrees). The shade's error split: encoding, method, datapath \
          (a palette's quantization is its encoding; a height map's parts are taken through its B-spline). Cost: iCE40 yosys cells (products beyond the UP5K's 8 SB_MAC16 in logic); \
          `cost` = SB_LUT4 + {LUT4_PER_MAC16}·SB_MAC16; `est.`: the pipeline plus the swept unit's difference. P: on the scene's Pareto set of cost \
-         against mean colour error. fmax: the median of nextpnr's placements at seeds 1 … n, with the slowest and the fastest.\n"
+         against mean colour error. fmax: the median of nextpnr's placements at seeds 1 … n that place, with the slowest and the fastest (the part column names seeds that did not).\n"
     );
     let _ = writeln!(s, "| point | pipeline | knob | colour | shade | angle ° | encoding | method | datapath | LUT4 | FF | MAC16 | RAM40 | SPRAM | in logic | cost | part | LC | fmax MHz (min–max, placements) | latency | P | model Mpx/s |");
     let _ = writeln!(s, "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");

@@ -151,9 +151,9 @@ pub fn run_point(p: &Point, dir: &Path, place: Option<u32>) -> Result<PointFigur
             // a design whose cells fit the part but whose placement fails says so where its figures would be
             // (and one that fails at some seeds names them)
             r.part = match (&rep.place_error, rep.unplaced.len()) {
-                (Some(_), _) => format!("{} (does not place)", rep.part),
+                (Some(_), _) => format!("{} ({})", rep.part, rep.unplaced_text()),
                 (None, 0) => rep.part.clone(),
-                (None, k) => format!("{} (does not place at {k} of {n} seeds)", rep.part),
+                (None, _) => format!("{} (not placed at {})", rep.part, rep.unplaced.join("; ")),
             };
             r.lc = rep.lc;
             r.fmax = rep.fmax_mhz;

@@ -256,7 +256,8 @@ pub struct SynthReport {
     pub critical: Option<String>,
     /// why place-and-route failed, when it did (at every seed: see `unplaced` for a design that places at some)
     pub place_error: Option<String>,
-    /// the seeds at which a design that places at others did not, each "seed N: why"
+    /// the seeds at which the design did not place (nextpnr's error, or stopped at the time limit), each "seed N:
+    /// why", in seed order
     pub unplaced: Vec<String>,
     /// how many placements (nextpnr seeds) the figures are the median of, the seed of the median one, and the
     /// slowest and the fastest placement's fmax
@@ -272,6 +273,21 @@ pub struct SynthReport {
 impl SynthReport {
     pub fn part(&self) -> Part {
         part(&self.part).expect("a report names a known part")
+    }
+
+    /// The time limit a placement was stopped at, in seconds (None: it was not stopped).
+    pub fn stopped_after(&self) -> Option<u64> {
+        let rest = self.place_error.as_deref()?.strip_prefix(STOPPED)?;
+        rest.split_whitespace().next()?.parse().ok()
+    }
+
+    /// What a design that did not place shows where its fmax would be: "not placed within 900 s" where nextpnr was
+    /// stopped at the time limit, else "does not place".
+    pub fn unplaced_text(&self) -> String {
+        match self.stopped_after() {
+            Some(s) => format!("not placed within {s} s"),
+            None => "does not place".into(),
+        }
     }
 
     /// How many placements the figures are the median of: "5", or "4 of 5" where one did not place.
@@ -405,7 +421,7 @@ fn yosys(dir: &Path, family: Family, top: &str, files: &[&str], json: Option<&st
     for f in files {
         let _ = write!(script, "read_verilog {f}; ");
     }
-    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; write_rtlil {top}.prepared.il; tee -q -o {top}.products dump t:$mul; memory_collect; write_json {top}.prepared.json");
+    let _ = write!(script, "hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; tee -q -o {top}.products dump t:$mul; memory_collect; write_rtlil {top}.prepared.il; write_json {top}.prepared.json");
     tools::run(dir, tools::toolchain().yosys(), &["-q", "-p", &script])?;
     let dump = std::fs::read_to_string(dir.join(format!("{top}.products")))
         .map_err(|e| format!("no yosys product list: {e}"))?;
@@ -635,7 +651,8 @@ fn critical_path(log: &str) -> Option<String> {
     Some(format!("{first} → {last} ({total})"))
 }
 
-/// How many placements an fmax is the median of: nextpnr at seeds 1 ..= `n`, each placement cached under its seed;
+/// How many placements an fmax is the median of: nextpnr at seeds 1 ..= `n` (those that place: `median`), each
+/// placement cached under its seed;
 /// at least `least` of them in hand (placed now where the cache does not hold them), and any other of the `n` the
 /// cache holds reused. `synth` and `report` place all five; the demo places one and reuses what the cache holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -689,17 +706,20 @@ fn wrapped(u: &Unit, dir: &Path, part: Part, choice: &str) -> Result<SynthReport
     })
 }
 
-/// How a placement stopped at the time limit begins its error; such a placement is not cached (another machine, or
-/// the same one less loaded, may finish it).
+/// How a placement stopped at the time limit begins its error, followed by the limit ("… after 900 s"). It is cached
+/// with its limit and placed again only under a longer one.
 const STOPPED: &str = "nextpnr had not finished after";
 
 /// How long one placement may take: `$BUMPRTL_PLACE_LIMIT` seconds, else 15 minutes. nextpnr-ice40 0.4's router can
 /// go round without end on a nearly full part: `cart_tex_nearest_surface_matte` on the UP5K (82 % of its logic
 /// cells) routes in minutes at seeds 1, 3, 4 and 5, and at seed 2 still had the same 5,591 arcs to route after
 /// 170,000 iterations.
-pub fn place_limit() -> std::time::Duration {
-    let s = std::env::var("BUMPRTL_PLACE_LIMIT").ok().and_then(|v| v.trim().parse().ok()).unwrap_or(900);
-    std::time::Duration::from_secs(s)
+pub fn place_limit() -> Result<std::time::Duration, String> {
+    let secs = match std::env::var("BUMPRTL_PLACE_LIMIT") {
+        Ok(v) => v.trim().parse().map_err(|_| format!("BUMPRTL_PLACE_LIMIT={v}: not a whole number of seconds"))?,
+        Err(_) => 900,
+    };
+    Ok(std::time::Duration::from_secs(secs))
 }
 
 /// One nextpnr placement of `wrapped.json` in `dir` at `seed` and a `freq_mhz` target: `base` with this placement's
@@ -719,10 +739,11 @@ fn place(dir: &Path, part: Part, freq_mhz: f64, seed: u32, base: &SynthReport) -
         Family::Ecp5 => tools::nextpnr_ecp5().ok_or_else(tools::nextpnr_ecp5_missing)?,
     };
     let lc_name = format!("{}:", part.logic_cell_name());
-    let limit = place_limit();
+    let limit = place_limit()?;
     let out = match tools::run_limited(dir, &prog, &args, limit) {
-        Ok(Some(o)) => o,
-        Ok(None) => {
+        Ok((o, true)) => o,
+        Ok((o, false)) => {
+            write_atomic(&dir.join(format!("nextpnr.seed{seed}.log")), &o.stderr)?;
             r.place_error = Some(format!("{STOPPED} {} s", limit.as_secs()));
             return Ok(r);
         }
@@ -796,11 +817,14 @@ fn place_all(
 /// that failed are not ranked: the median is of those that placed, and the failed ones are named with their seeds
 /// (`unplaced`); a design that places at no seed is one that does not place, its error naming the first seed.
 pub fn median(all: Vec<SynthReport>) -> Option<SynthReport> {
-    let (failed, mut all): (Vec<_>, Vec<_>) = all.into_iter().partition(|r| r.place_error.is_some());
+    let (mut failed, mut all): (Vec<_>, Vec<_>) = all.into_iter().partition(|r| r.place_error.is_some());
+    failed.sort_by_key(|r| r.seed);
     let unplaced =
         failed.iter().map(|r| format!("seed {}: {}", r.seed, r.place_error.as_deref().unwrap_or(""))).collect();
     if all.is_empty() {
-        let mut r = failed.into_iter().next()?;
+        // nextpnr's own error before a placement stopped at the time limit
+        let k = failed.iter().position(|r| r.stopped_after().is_none()).unwrap_or(0);
+        let mut r = failed.into_iter().nth(k)?;
         r.place_error = r.place_error.map(|e| format!("{e} (at nextpnr seed {})", r.seed));
         (r.placements, r.fmax_mhz, r.fmax_range, r.lc, r.critical) = (0, None, None, None, None);
         r.unplaced = unplaced;
@@ -851,12 +875,14 @@ pub fn synth_and_place(
         Family::Ecp5 => tools::nextpnr_ecp5().unwrap_or_else(|| "nextpnr-ecp5".into()),
     };
     let yosys = tools::toolchain().yosys();
+    // a placement stopped at a shorter time limit than this run's is placed again
+    let limit = place_limit()?;
     let key = |seed: u32| cache::key(&format!("{inputs}\nseed {seed}"), &[&yosys, &pnr]);
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let cached = || -> Vec<SynthReport> {
         (1..=seeds.n)
             .filter_map(|s| cache::get(&key(s), "placement").as_deref().and_then(SynthReport::from_text))
-            .filter(|r| r.placements == 1)
+            .filter(|r| r.placements == 1 && r.stopped_after().is_none_or(|s| s >= limit.as_secs()))
             .collect()
     };
     let mut have = cached();
@@ -871,9 +897,7 @@ pub fn synth_and_place(
     if !missing.is_empty() {
         let base = wrapped(u, dir, part, choice)?;
         for r in place_all(dir, part, freq_mhz, &missing, &base)? {
-            if !r.place_error.as_deref().is_some_and(|e| e.starts_with(STOPPED)) {
-                cache::put(&key(r.seed), "placement", &r.to_text())?;
-            }
+            cache::put(&key(r.seed), "placement", &r.to_text())?;
             have.push(r);
         }
     }
@@ -1014,10 +1038,19 @@ mod tests {
         let m = median(vec![at(1, 60.0), failed(2), at(3, 70.0)]).unwrap();
         assert_eq!((m.place_error, m.seed, m.fmax_mhz, m.placements), (None, 1, Some(60.0), 2));
         assert_eq!((m.fmax_range, m.unplaced), (Some((60.0, 70.0)), vec!["seed 2: ERROR: no route".to_string()]));
-        // failed at every seed: a design that does not place, the first seed named
-        let m = median(vec![failed(3), failed(5)]).unwrap();
+        // failed at every seed: a design that does not place, the first seed named, nextpnr's own error before a
+        // placement stopped at the time limit
+        let m = median(vec![failed(5), failed(3)]).unwrap();
         assert_eq!(m.place_error.as_deref(), Some("ERROR: no route (at nextpnr seed 3)"));
+        assert_eq!(m.unplaced_text(), "does not place");
         assert_eq!((m.fmax_mhz, m.placements, m.critical, m.unplaced.len()), (None, 0, None, 2));
+        let stopped = |seed| SynthReport { place_error: Some(format!("{STOPPED} 900 s")), ..at(seed, 0.0) };
+        assert_eq!((stopped(1).stopped_after(), failed(1).stopped_after()), (Some(900), None));
+        let m = median(vec![stopped(1), failed(4), stopped(2)]).unwrap();
+        assert_eq!(m.place_error.as_deref(), Some("ERROR: no route (at nextpnr seed 4)"));
+        assert_eq!(m.unplaced[0], "seed 1: nextpnr had not finished after 900 s");
+        let m = median(vec![stopped(2)]).unwrap();
+        assert_eq!(m.unplaced_text(), "not placed within 900 s");
         assert!(median(vec![]).is_none());
     }
 

@@ -84,7 +84,7 @@ pub fn split(json: &str, top: &str, soft: &[String]) -> Result<(String, Vec<Stri
             let (lo, hi) = (j * g / pieces, (j + 1) * g / pieces);
             let y = fresh(w - lo);
             let m = format!("{tag}$p{j}");
-            arith.push((m.clone(), self::arith("$mul", &plan.cols, &plan.rows[lo..hi], &y)));
+            arith.push((m.clone(), arith_cell("$mul", &plan.cols, &plan.rows[lo..hi], &y)));
             cells_out.push(m);
             let q = reg(format!("{tag}$p{j}_q"), y, &mut fresh);
             values.push((lo, q));
@@ -97,7 +97,7 @@ pub fn split(json: &str, top: &str, soft: &[String]) -> Result<(String, Vec<Stri
             shifted.extend(v.iter().cloned());
             let last = m + 1 == values.len();
             let y = if last && plan.levels == 1 { plan.out.clone() } else { fresh(w) };
-            arith.push((format!("{tag}$s{m}"), self::arith("$add", &acc, &shifted, &y)));
+            arith.push((format!("{tag}$s{m}"), arith_cell("$add", &acc, &shifted, &y)));
             acc = y;
         }
         let out_init = plan.levels == 2;
@@ -132,7 +132,7 @@ pub fn split(json: &str, top: &str, soft: &[String]) -> Result<(String, Vec<Stri
 }
 
 /// An unsigned `$mul` or `$add` cell `y` = a × b or a + b, y's width.
-fn arith(kind: &str, a: &[Value], b: &[Value], y: &[Value]) -> Value {
+fn arith_cell(kind: &str, a: &[Value], b: &[Value], y: &[Value]) -> Value {
     json!({
         "hide_name": 1, "type": kind,
         "parameters": { "A_SIGNED": p32(0), "A_WIDTH": p32(a.len()), "B_SIGNED": p32(0), "B_WIDTH": p32(b.len()),

