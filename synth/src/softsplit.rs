@@ -237,18 +237,13 @@ fn plan(module: &Value, name: &str) -> Option<Plan> {
         .collect();
     let mut ff: Option<&str> = None;
     let mut used = 0;
-    for (i, b) in y.iter().enumerate() {
-        let b = b.as_u64()?;
-        if port_bits.contains(&b) {
-            return None;
-        }
-        match loads.get(&b).map(Vec::as_slice).unwrap_or(&[]) {
-            [] => {}
-            [(cn, "D", j)] if *j == i && ff.is_none_or(|f| f == *cn) => {
-                ff = Some(cn);
-                used = used.max(i + 1);
+    for (i, reader) in d_readers(&loads, &port_bits, y)?.into_iter().enumerate() {
+        if let Some((cn, j)) = reader {
+            if j != i || ff.is_some_and(|f| f != cn) {
+                return None;
             }
-            _ => return None,
+            ff = Some(cn);
+            used = i + 1;
         }
     }
     let ff = ff?;
@@ -290,26 +285,36 @@ fn copies(
 ) -> Option<(Vec<String>, Vec<Value>)> {
     let mut names: Vec<String> = Vec::new();
     let mut out = vec![Value::Null; q.len()];
-    for (i, b) in q.iter().enumerate() {
-        let b = b.as_u64()?;
-        if port_bits.contains(&b) {
-            return None;
-        }
-        match loads.get(&b).map(Vec::as_slice).unwrap_or(&[]) {
-            [] => {}
-            [(cn, "D", j)] => {
-                let c = plain(module, cells, cn, Some(clock))?;
-                out[i] = bits(c, "Q").get(*j)?.clone();
-                if !names.iter().any(|n| n == cn) {
-                    names.push(cn.to_string());
-                }
+    for (i, reader) in d_readers(loads, port_bits, q)?.into_iter().enumerate() {
+        if let Some((cn, j)) = reader {
+            let c = plain(module, cells, cn, Some(clock))?;
+            out[i] = bits(c, "Q").get(j)?.clone();
+            if !names.iter().any(|n| n == cn) {
+                names.push(cn.to_string());
             }
-            _ => return None,
         }
     }
     // every bit a copy takes is one of q's
     let all = names.iter().all(|n| bits(&cells[n], "D").iter().all(|d| q.contains(d)));
     (all && !names.is_empty()).then_some((names, out))
+}
+
+/// Each bit of `v`'s one reader, a register's D input: for each bit, the register and the bit's place in its D, or
+/// None where nothing reads the bit; None for the whole when a bit is a port's or is read by anything else or twice.
+fn d_readers<'a>(loads: &Loads<'a>, port_bits: &[u64], v: &[Value]) -> Option<Vec<Option<(&'a str, usize)>>> {
+    v.iter()
+        .map(|b| {
+            let b = b.as_u64()?;
+            if port_bits.contains(&b) {
+                return None;
+            }
+            match loads.get(&b).map(Vec::as_slice).unwrap_or(&[]) {
+                [] => Some(None),
+                [(cn, "D", j)] => Some(Some((*cn, *j))),
+                _ => None,
+            }
+        })
+        .collect()
 }
 
 fn max_bit(module: &Value) -> u64 {
