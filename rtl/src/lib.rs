@@ -130,4 +130,46 @@ mod vendored {
         }
         at!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26 27 28 29 30 31 32);
     }
+
+    /// What a VCD says of a value, read here as the published probes read it: bit after bit, most significant
+    /// first, `V1` a one and any other a zero; at most 64 bits.
+    fn from_vcd(v: VCDValue) -> Option<u64> {
+        match v {
+            VCDValue::Single(b) => Some(u64::from(b == hdl_vcd::Value::V1)),
+            VCDValue::Vector(bits) if bits.len() <= 64 => {
+                Some(bits.into_iter().fold(0, |acc, b| acc << 1 | u64::from(b == hdl_vcd::Value::V1)))
+            }
+            _ => None,
+        }
+    }
+
+    fn words<const N: usize>() {
+        let mut x: u128 = 0x2545_f491_4f6c_dd1d;
+        for _ in 0..64 {
+            x = x.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            let b = Bits::<N>::from(if N >= 64 { x as u64 } else { x as u64 & ((1 << N) - 1) });
+            assert_eq!(Synth::short_word(b), from_vcd(Synth::vcd(b)), "Bits<{N}> {x:#x}");
+            let s = Signal::<Out, Bits<N>>::new_with_default(b);
+            assert_eq!(Atom::short_word(&s), from_vcd(Atom::vcd(&s)), "Signal<Bits<{N}>> {x:#x}");
+        }
+        assert_eq!(Synth::short_word(Bits::<N>::default()).is_some(), N <= 64, "Bits<{N}>");
+    }
+
+    /// The vendored `short_word` (the probe's read of a value, vendor/rust-hdl-core/BUMPRTL.md) is what the value's
+    /// VCD says, at every width a block uses and past 64 bits, for a bit, and for an undriven signal (all `Z`).
+    #[test]
+    fn short_words_are_what_the_vcd_says() {
+        macro_rules! at {
+            ($($n:literal)*) => { $(words::<$n>();)* };
+        }
+        at!(1 2 3 7 8 9 12 16 17 24 31 32 33 40 48 63 64 65 96 128);
+        for bit in [false, true] {
+            assert_eq!(Synth::short_word(bit), from_vcd(Synth::vcd(bit)));
+        }
+        let mut open = Signal::<InOut, Bits<12>>::default();
+        open.set_tristate_is_output(false);
+        open.simulate_connected_tristate(&mut Signal::<InOut, Bits<12>>::default());
+        assert!(matches!(Atom::vcd(&open), VCDValue::Vector(ref z) if z.iter().all(|b| *b == hdl_vcd::Value::Z)));
+        assert_eq!(Atom::short_word(&open), Some(0));
+    }
 }

@@ -347,19 +347,6 @@ pub struct Ranges {
     next: usize,
 }
 
-impl Ranges {
-    fn value(a: &dyn Atom) -> Option<u64> {
-        use rust_hdl::core::synth::VCDValue;
-        match a.vcd() {
-            VCDValue::Single(v) => Some((v == hdl_vcd::Value::V1) as u64),
-            VCDValue::Vector(v) if v.len() <= 64 => {
-                Some(v.iter().fold(0u64, |acc, b| acc << 1 | (*b == hdl_vcd::Value::V1) as u64))
-            }
-            _ => None,
-        }
-    }
-}
-
 /// The path is only read on the first clock, when the signals are named: later clocks keep no names.
 impl Probe for Ranges {
     fn visit_start_scope(&mut self, name: &str, _node: &dyn Block) {
@@ -379,7 +366,8 @@ impl Probe for Ranges {
         self.path.pop();
     }
     fn visit_atom(&mut self, name: &str, a: &dyn Atom) {
-        let Some(v) = Ranges::value(a) else { return };
+        // the value as its VCD gives it (a `Z` bit reads 0), without building the VCD's vector of bits
+        let Some(v) = a.short_word() else { return };
         let bits = a.bits();
         let s = if bits < 64 && bits > 0 && v >> (bits - 1) & 1 == 1 { v as i64 - (1i64 << bits) } else { v as i64 };
         if self.clocks == 0 {

@@ -39,6 +39,11 @@ pub trait Atom {
     fn kind(&self) -> AtomKind;
     fn descriptor(&self) -> TypeDescriptor;
     fn vcd(&self) -> VCDValue;
+    /// bumprtl: `Synth::short_word` of the atom's value: what `vcd` gives, as one word, without building it where
+    /// the type can say.
+    fn short_word(&self) -> Option<u64> {
+        crate::synth::short_word_of(&self.vcd())
+    }
     fn id(&self) -> usize;
     fn verilog(&self) -> VerilogLiteral;
     fn constraints(&self) -> Vec<PinConstraint>;

@@ -197,6 +197,15 @@ impl<D: Direction, T: Synth> Atom for Signal<D, T> {
         }
     }
 
+    // bumprtl: an undriven signal's `vcd` is all `Z`, which the default reads
+    fn short_word(&self) -> Option<u64> {
+        if !self.signal_is_undriven {
+            self.val.short_word()
+        } else {
+            crate::synth::short_word_of(&self.vcd())
+        }
+    }
+
     fn id(&self) -> usize {
         self.id
     }

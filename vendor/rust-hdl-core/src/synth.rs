@@ -32,6 +32,24 @@ pub trait Synth: Default + Copy + PartialEq + Debug {
     fn bits(self) -> usize {
         Self::BITS
     }
+    /// bumprtl: the value as one word, bit i of the value in bit i of the word (`V1` a one, any other bit a zero),
+    /// when `vcd` gives it as at most 64 bits; `None` otherwise. A probe reads it every clock: the default goes
+    /// through `vcd`, which builds a vector a call; a bit vector answers without one.
+    fn short_word(self) -> Option<u64> {
+        short_word_of(&self.vcd())
+    }
+}
+
+/// bumprtl: `Synth::short_word` from a VCD value: a single bit, or a vector of at most 64 bits, most significant
+/// first.
+pub fn short_word_of(v: &VCDValue) -> Option<u64> {
+    match v {
+        VCDValue::Single(b) => Some((*b == vcd::Value::V1) as u64),
+        VCDValue::Vector(bits) if bits.len() <= 64 => {
+            Some(bits.iter().fold(0u64, |acc, b| acc << 1 | (*b == vcd::Value::V1) as u64))
+        }
+        _ => None,
+    }
 }
 
 impl<const N: usize> Synth for Bits<N> {
@@ -50,6 +68,11 @@ impl<const N: usize> Synth for Bits<N> {
 
     fn verilog(self) -> VerilogLiteral {
         self.into()
+    }
+
+    // bumprtl: the bits themselves, as `vcd` gives them
+    fn short_word(self) -> Option<u64> {
+        (N <= 64).then(|| self.to_u64())
     }
 }
 
@@ -73,6 +96,11 @@ impl Synth for Bit {
 
     fn verilog(self) -> VerilogLiteral {
         self.into()
+    }
+
+    // bumprtl: the bit itself, as `vcd` gives it
+    fn short_word(self) -> Option<u64> {
+        Some(self as u64)
     }
 }
 
