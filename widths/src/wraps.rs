@@ -108,6 +108,8 @@ pub const WAIVED: &[Waived] = &[
     w("Lod", "s5c_mc.d", Bound, "m << 5·(4 − g) where groups 4 .. g + 1 are zero, so m < 2^(5g + 5) and the shift loses no one"),
     w("Lod", "s5c_e.d", Modular, "16 − 5·(4 − g) − lp in 6-bit two's complement, lp ≤ 4 the leading one's place: −8 ..= 16 \
         (−8 is 56), wrapping on purpose below 0"),
+    w("Lod", "s6_e1.d", Modular, "e + 1 in 6-bit two's complement, e ∈ −8 ..= 16: −7 ..= 17, wrapping on purpose where e is \
+        negative (−1 is 63, and 63 + 1 is 0)"),
     w("Lod", "s6_addr.d", Split, "the table's address: the 8 bits below m's leading one once the shift has put it at bit 24; \
         the leading one itself is dropped on purpose, the bits below bit 16 truncated"),
     w("Lod", "w_frac", Split, "frac(λ) in 8 bits: λ's bits 9..2 (Sq5.10), the integer part above them read apart (w_int), \
