@@ -2,16 +2,16 @@
 //! 128 × 128, or with `L` = 8 up to 256 × 256) in four 2×2-interleaved banks, one bilinear footprint read a clock,
 //! written texel by texel through the same stream (`we`). See `vectors::tex_fetch` for the layout and the ports.
 //!
-//! Latency 7: the level's side, its base, and the coordinates taken modulo the side (and the write's); each bank
-//! column's word column plus the level's base, and each bank row's word row shifted to the level's row length; the bank
-//! addresses, that sum plus the row (and the write's address and bank); the banks' read (their own register); the four
-//! words registered (a block RAM's output straight into a select is slow: `height_fetch` measured it); the four words
-//! again; each texel picked from the four words. (On the ECP5 the first register of the words is the DP16KD's output
-//! register; with the select behind it, that read into the select was the nearest pipelines' critical path, 1.61 ns of
-//! logic and 4.41 ns of routing, 166 MHz. The base joins the column a clock before the row: base + row + column in one
-//! clock, two adders in a row, was the next one, 1.96 ns of logic and 3.94 ns of routing, 170 MHz; and with the base's
-//! table behind the registered side log2, in stage 2, the trilinear pipelines' write address was one of theirs, 6.4
-//! ns.)
+//! Latency 7: the level's side, its base, and the coordinates taken modulo the side (and the write's); each bank's two
+//! addends, its word column plus the level's base and its word row shifted to the level's row length (in the bank a
+//! write writes, the write's); the bank addresses, each the sum of its bank's addends; the banks' read (their own
+//! register); the four words registered (a block RAM's output straight into a select is slow: `height_fetch` measured
+//! it); the four words again; each texel picked from the four words. (On the ECP5 the first register of the words is
+//! the DP16KD's output register; with the select behind it, that read into the select was the nearest pipelines'
+//! critical path, 1.61 ns of logic and 4.41 ns of routing, 166 MHz. The base joins the column a clock before the row:
+//! base + row + column in one clock, two adders in a row, was the next one, 1.96 ns of logic and 3.94 ns of routing,
+//! 170 MHz; and with the base's table behind the registered side log2, in stage 2, the trilinear pipelines' write
+//! address was one of theirs, 6.4 ns.)
 //!
 //! The banks are single-port (`SpRam`): `synth_ice40 -spram` puts each in one of the UP5K's four SPRAMs, so a
 //! 128 × 128 map and its chain (43.7 KB) fit a part whose 30 EBR hold 15 KB.
@@ -220,23 +220,22 @@ crate::stream_block! {
         s1_wx: DFF<U8>,
         s1_wy: DFF<U8>,
         s1_wdata: DFF<U16>,
-        // stage 2: per parity p the level's base plus the column that bank column p reads, halved (base ≤ 5,462 at
-        // L = 8, the column < 2^7: U15); the row likewise, halved and shifted to its place (row·2^(m−1) < 2^(2L−1),
-        // U15 at L = 8); the parities for the select. The addresses are 15 bits whatever the banks' A (a bank takes
-        // its A low bits, all of the address where the level is held; yosys drops the rest)
-        s2_bc: [DFF<Bits<15>>; 2],
-        s2_row: [DFF<Bits<15>>; 2],
+        // stage 2: each bank's two addends, its own registers: bank p + 2q's the level's base plus the column that
+        // bank column p reads, halved (base ≤ 5,462 at L = 8, the column < 2^7: U15), and the row bank row q reads,
+        // halved and shifted to its place (row·2^(m−1) < 2^(2L−1), U15 at L = 8); in the bank a write writes, the
+        // write's. The parities for the select. The addresses are 15 bits whatever the banks' A (a bank takes its A
+        // low bits, all of the address where the level is held; yosys drops the rest)
+        s2_col: [DFF<Bits<15>>; 4],
+        s2_row: [DFF<Bits<15>>; 4],
         s2_px: [DFF<Bit>; 2],
         s2_py: [DFF<Bit>; 2],
         s2_rd: DFF<Bit>,
         s2_we: DFF<Bit>,
         s2_wpx: DFF<Bit>,
         s2_wpy: DFF<Bit>,
-        s2_wbc: DFF<Bits<15>>,
-        s2_wrow: DFF<Bits<15>>,
         s2_wdata: DFF<U16>,
-        // stage 3: the four bank addresses, the write's in the bank it writes (registered: the banks read and write
-        // them)
+        // stage 3: the four bank addresses, each the sum of its bank's two addends (registered: the banks read and
+        // write them)
         s3_addr: [DFF<Bits<15>>; 4],
         s3_px: [DFF<Bit>; 2],
         s3_py: [DFF<Bit>; 2],
@@ -272,11 +271,11 @@ crate::stream_block! {
         w_base: Signal<Local, Bits<15>>,
         w_wbase: Signal<Local, Bits<15>>,
         w_bc: [Signal<Local, Bits<15>>; 2],
+        w_row: [Signal<Local, Bits<15>>; 2],
         w_wbc: Signal<Local, Bits<15>>,
-        w_sum: [Signal<Local, Bits<15>>; 4],
+        w_wrow: Signal<Local, Bits<15>>,
         w_kx: [Signal<Local, Bit>; 4],
         w_ky: [Signal<Local, Bit>; 4],
-        w_wsum: Signal<Local, Bits<15>>,
     }
 }
 
@@ -285,14 +284,12 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
     fn update(&mut self) {
         dff_setup!(
             self, clock, s1_m, s1_base, s1_held, s1_wbase, s1_wheld, s1_rd, s1_we, s1_wm, s1_wx, s1_wy, s1_wdata,
-            s2_rd, s2_we, s2_wpx, s2_wpy, s2_wbc, s2_wrow, s2_wdata, s3_rd, wr_data, s4_rd, s5_rd, s5b_rd
+            s2_rd, s2_we, s2_wpx, s2_wpy, s2_wdata, s3_rd, wr_data, s4_rd, s5_rd, s5b_rd
         );
         clock!(self, clock, valid);
         for n in 0..2 {
             self.s1_x[n].clock.next = self.clock.val();
             self.s1_y[n].clock.next = self.clock.val();
-            self.s2_bc[n].clock.next = self.clock.val();
-            self.s2_row[n].clock.next = self.clock.val();
             self.s2_px[n].clock.next = self.clock.val();
             self.s2_py[n].clock.next = self.clock.val();
             self.s3_px[n].clock.next = self.clock.val();
@@ -305,6 +302,8 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
             self.s5b_py[n].clock.next = self.clock.val();
         }
         for n in 0..4 {
+            self.s2_col[n].clock.next = self.clock.val();
+            self.s2_row[n].clock.next = self.clock.val();
             self.s3_addr[n].clock.next = self.clock.val();
             self.wr_en[n].clock.next = self.clock.val();
             self.s5_word[n].clock.next = self.clock.val();
@@ -365,11 +364,10 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.w_base.next = self.s1_base.q.val();
         for n in 0..2 {
             self.w_bc[n].next = self.w_base.val() + self.w_c15[n].val(); // ≤ 5,462 + 127: U15, exact
-            self.s2_bc[n].d.next = self.w_bc[n].val();
-            // (y >> 1)·2^(m−1) as ((y >> 1) << m) >> 1, which is 0 for m = 0 with no case of its own: y >> 1 < 2^m−1
-            // so (y >> 1) << m < 2^(2m−1) ≤ 2^15, U15, exact, and the last shift drops a zero
+                                                                         // (y >> 1)·2^(m−1) as ((y >> 1) << m) >> 1, which is 0 for m = 0 with no case of its own: y >> 1 < 2^m−1
+                                                                         // so (y >> 1) << m < 2^(2m−1) ≤ 2^15, U15, exact, and the last shift drops a zero
             self.w_rm[n].next = self.w_r15[n].val() << self.s1_m.q.val();
-            self.s2_row[n].d.next = self.w_rm[n].val() >> 1; // U14, exact
+            self.w_row[n].next = self.w_rm[n].val() >> 1; // U14, exact
         }
         self.s2_px[0].d.next = self.s1_x[0].q.val().get_bit(0);
         self.s2_px[1].d.next = self.s1_x[1].q.val().get_bit(0);
@@ -381,39 +379,49 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.w_wc15.next = bit_cast::<15, 7>(self.s1_wx.q.val().get_bits::<7>(1)); // x >> 1: U7 in 15
         self.w_wr15.next = bit_cast::<15, 7>(self.s1_wy.q.val().get_bits::<7>(1)); // y >> 1: U7 in 15
         self.w_wrm.next = self.w_wr15.val() << self.s1_wm.q.val(); // U15, exact, as the read's
-        self.s2_wrow.d.next = self.w_wrm.val() >> 1; // U14, exact
+        self.w_wrow.next = self.w_wrm.val() >> 1; // U14, exact
         self.w_wbase.next = self.s1_wbase.q.val();
         self.w_wbc.next = self.w_wbase.val() + self.w_wc15.val(); // ≤ 5,462 + 127: U15, exact
-        self.s2_wbc.d.next = self.w_wbc.val();
+                                                                  // bank p + 2q's addends: column p's and row q's; one address a bank a clock, so in the bank a write writes,
+                                                                  // the write's (a vector either reads or writes, so nothing is lost), as a single-port RAM (the UP5K's SPRAM)
+                                                                  // needs it. Each bank has its own pair, chosen here, so that its address is one adder from its registers:
+                                                                  // with the choice after the sum, the colour fetch's stage 3 (2.13 ns of logic, 4.38 ns of routing to banks
+                                                                  // spread over the ECP5's block RAM) was cart_tex_nearest_mip_colour's critical path, 153.5 MHz
+        self.s2_col[0].d.next = self.w_bc[0].val();
+        self.s2_row[0].d.next = self.w_row[0].val();
+        self.s2_col[1].d.next = self.w_bc[1].val();
+        self.s2_row[1].d.next = self.w_row[0].val();
+        self.s2_col[2].d.next = self.w_bc[0].val();
+        self.s2_row[2].d.next = self.w_row[1].val();
+        self.s2_col[3].d.next = self.w_bc[1].val();
+        self.s2_row[3].d.next = self.w_row[1].val();
+        if self.s1_we.q.val() & self.s1_wheld.q.val() {
+            if self.s1_wy.q.val().get_bit(0) {
+                if self.s1_wx.q.val().get_bit(0) {
+                    self.s2_col[3].d.next = self.w_wbc.val();
+                    self.s2_row[3].d.next = self.w_wrow.val();
+                } else {
+                    self.s2_col[2].d.next = self.w_wbc.val();
+                    self.s2_row[2].d.next = self.w_wrow.val();
+                }
+            } else if self.s1_wx.q.val().get_bit(0) {
+                self.s2_col[1].d.next = self.w_wbc.val();
+                self.s2_row[1].d.next = self.w_wrow.val();
+            } else {
+                self.s2_col[0].d.next = self.w_wbc.val();
+                self.s2_row[0].d.next = self.w_wrow.val();
+            }
+        }
         self.s2_wpx.d.next = self.s1_wx.q.val().get_bit(0);
         self.s2_wpy.d.next = self.s1_wy.q.val().get_bit(0);
         self.s2_we.d.next = self.s1_we.q.val() & self.s1_wheld.q.val(); // a level it does not hold: no write
         self.s2_wdata.d.next = self.s1_wdata.q.val();
 
-        // stage 3: bank (p, q) = p + 2q at (base + column p) + row q (< 5,462 at L = 7, < 21,846 at L = 8: U15, exact)
-        self.w_sum[0].next = self.s2_bc[0].q.val() + self.s2_row[0].q.val();
-        self.w_sum[1].next = self.s2_bc[1].q.val() + self.s2_row[0].q.val();
-        self.w_sum[2].next = self.s2_bc[0].q.val() + self.s2_row[1].q.val();
-        self.w_sum[3].next = self.s2_bc[1].q.val() + self.s2_row[1].q.val();
-        self.w_wsum.next = self.s2_wbc.q.val() + self.s2_wrow.q.val(); // U15, exact
-
-        // one address a bank a clock: the write's in the bank it writes, else the read's (a vector either reads or
-        // writes, so nothing is lost), as a single-port RAM (the UP5K's SPRAM) needs it
+        // stage 3: bank (p, q) = p + 2q at (base + column p) + row q, or the write's (< 5,462 at L = 7, < 21,846 at
+        // L = 8: U15, exact)
         for n in 0..4 {
-            self.s3_addr[n].d.next = self.w_sum[n].val();
-        }
-        if self.s2_we.q.val() {
-            if self.s2_wpy.q.val() {
-                if self.s2_wpx.q.val() {
-                    self.s3_addr[3].d.next = self.w_wsum.val();
-                } else {
-                    self.s3_addr[2].d.next = self.w_wsum.val();
-                }
-            } else if self.s2_wpx.q.val() {
-                self.s3_addr[1].d.next = self.w_wsum.val();
-            } else {
-                self.s3_addr[0].d.next = self.w_wsum.val();
-            }
+            // U15, exact (the bound above)
+            self.s3_addr[n].d.next = self.s2_col[n].q.val() + self.s2_row[n].q.val();
         }
         // the write's bank (x mod 2) + 2·(y mod 2)
         self.wr_en[0].d.next = self.s2_we.q.val() & !self.s2_wpx.q.val() & !self.s2_wpy.q.val();
