@@ -48,6 +48,7 @@ pub mod polar {
     pub mod cos_sign;
     pub mod polar_pipeline;
     pub mod polar_shade;
+    pub mod polar_tex;
     pub mod power;
     pub mod sincos;
     pub mod tables;
@@ -96,7 +97,7 @@ pub use height::{
     tangent_to_normal, texture_filter,
 };
 pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder, table_builder_shared};
-pub use polar::{cos_sign, polar_pipeline, polar_shade, power, sincos, tables};
+pub use polar::{cos_sign, polar_pipeline, polar_shade, polar_tex, power, sincos, tables};
 pub use shared::{bilinear, blend, delayed_blend, div255, dot3, gloss, normalise};
 pub use stream::StreamUnit;
 pub use texture::{lod, tex_addr, tex_fetch};

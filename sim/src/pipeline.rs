@@ -263,24 +263,35 @@ impl Pipeline for CartSurface {
     }
 }
 
-/// A Cartesian pipeline on the texture unit: the host-fed pipeline it is built on prepares the frame (its lights,
-/// material and ideals); each pixel's texels and blend factors give way to what a rasteriser gives, the sample's
-/// position (Sq11.8, texels of level 0) and its screen derivatives (Sq8.8), and the frame begins with a prologue
-/// that loads the map and its MIP chain into the unit's memory, one texel a clock. The levels: each texel of a
-/// level the four texels under it of the level above averaged as unit vectors and made unit length again, then
-/// encoded as the host's texels are.
+/// A pipeline on the texture unit (a Cartesian or a polar one): the host-fed pipeline it is built on prepares the
+/// frame (its lights, material and ideals); each pixel's texels and blend factors (a polar host's filtered S and R)
+/// give way to what a rasteriser gives, the sample's position (Sq11.8, texels of level 0) and its screen
+/// derivatives (Sq8.8), and the frame begins with a prologue that loads the map and its MIP chain into the unit's
+/// memory, one texel a clock. The levels: each texel of a level the four texels under it of the level above
+/// averaged as unit vectors and made unit length again (a polar map's: the average direction), then encoded as the
+/// host's texels are.
 pub struct CartTex {
     row: &'static Row,
     host: Box<dyn Pipeline>,
+    host_row: &'static Row,
+    settings: Settings,
     filter: pipelines::Filter,
     /// the front with the last prepared frame's prologue written into its memory: what `normal` reads
     loaded: std::sync::RwLock<Option<std::sync::Arc<vectors::texture::front::Front>>>,
 }
 
 impl CartTex {
-    pub fn new(row: &'static Row, host: &'static Row, filter: pipelines::Filter) -> CartTex {
-        let host = build(host, &Scene::default(), &Settings::default());
-        CartTex { row, host, filter, loaded: Default::default() }
+    /// The row's pipeline on the host row's, the host built for the scene with these settings (a polar host's
+    /// power and weight).
+    pub fn new(
+        row: &'static Row,
+        host_row: &'static Row,
+        filter: pipelines::Filter,
+        scene: &Scene,
+        settings: &Settings,
+    ) -> CartTex {
+        let host = build(host_row, scene, settings);
+        CartTex { row, host, host_row, settings: *settings, filter, loaded: Default::default() }
     }
 
     /// The scene's colour map where the pipeline holds a colour path (a pipeline with one needs one: `renders`).
@@ -293,15 +304,38 @@ impl CartTex {
         Some(c)
     }
 
-    /// The texel decode of the host-fed pipeline it is built on.
-    fn decode(&self) -> Decode {
-        match self.host.row().family {
-            Family::Cartesian(d) => d,
-            Family::CartSurface(v) => v.decode,
-            _ => unreachable!("a texture-unit pipeline is built on a Cartesian host (the table's rows)"),
+    /// The texels of the host-fed pipeline it is built on: a Cartesian decode's, or polar in an angle scale.
+    fn texels(&self) -> Texels {
+        match self.host_row.family {
+            Family::Cartesian(d) => Texels::Cartesian(d),
+            Family::CartSurface(v) => Texels::Cartesian(v.decode),
+            Family::Polar(scale) => Texels::Polar(scale),
+            _ => unreachable!("a texture-unit pipeline is built on a Cartesian or a polar host (the table's rows)"),
         }
     }
+
+    /// A unit normal as the host's 16-bit texel: the low byte TexelX, U or S, the high byte TexelZ, V or R.
+    fn texel(&self, n: [f64; 3]) -> i64 {
+        let (lo, hi) = match self.texels() {
+            Texels::Cartesian(Decode::Seed) => cart_encode::encode(Encoder::Seed, n),
+            Texels::Cartesian(Decode::HemiOct) => cart_encode::encode(Encoder::HemiOct, n),
+            Texels::Polar(scale) => {
+                let (s, r) = polar_encode::encode_normal(scale, n);
+                (s as u8, r as u8)
+            }
+        };
+        lo as i64 | ((hi as i64) << 8)
+    }
 }
+
+/// The texels a pipeline on the texture unit reads: its host's.
+#[derive(Clone, Copy, Debug)]
+enum Texels {
+    Cartesian(Decode),
+    Polar(Scale),
+}
+
+impl CartTex {}
 
 /// The map's MIP chain as unit normals, level 0 (side t) first, down to 1 × 1: each texel the normalised mean of
 /// the four under it.
@@ -359,9 +393,24 @@ impl Pipeline for CartTex {
                  blended by its fraction"
             }
         };
-        let texels = match self.decode() {
-            Decode::HemiOct => "hemi-octahedral texels",
-            Decode::Seed => "seed-encoded texels",
+        let texels = match self.texels() {
+            Texels::Cartesian(Decode::HemiOct) => "hemi-octahedral texels",
+            Texels::Cartesian(Decode::Seed) => "seed-encoded texels",
+            Texels::Polar(scale) => {
+                let s = &self.settings;
+                let l = polar_encode::encode_light(scale, scene.light_dir(0.5, 0.5), s.h);
+                return format!(
+                    "the texture unit ({f}; the map and its MIP chain in its memory), polar texels ({}): S and R \
+                     filtered as numbers, one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
+                    scale.name(),
+                    l.t.to_degrees(),
+                    l.q,
+                    l.k1,
+                    l.k2,
+                    l.k3,
+                    s.pw as f64 / 4.0
+                );
+            }
         };
         let light = match self.row.serves.per {
             pipelines::Per::Vertex => "lights interpolated per pixel",
@@ -386,21 +435,16 @@ impl Pipeline for CartTex {
             self.row.name
         );
         let log_side = t.trailing_zeros() as i64;
-        let from_host = |h: &[i64]| vectors::cart_tex::from_host(self.host.model(), model.inputs, h);
+        let from_host = |h: &[i64]| vectors::textured::from_host(self.host.model(), model.inputs, h);
         // the prologue: every level of the chain, the smallest first, encoded as the host encodes its texels
-        let encoder = match self.decode() {
-            Decode::HemiOct => Encoder::HemiOct,
-            Decode::Seed => Encoder::Seed,
-        };
         let chain = mip_chain(&scene.normals(), t);
         let blank = vec![0; model.inputs.len()];
         let mut inputs = vec![];
         for (k, level) in chain.iter().enumerate().rev() {
             let (m, side) = (log_side - k as i64, t >> k);
             for (i, &n) in level.iter().enumerate() {
-                let (x, z) = cart_encode::encode(encoder, n);
                 let mut v = blank.clone();
-                front::put_write(&mut v, &at, m, (i % side) as i64, (i / side) as i64, x as i64 | ((z as i64) << 8));
+                front::put_write(&mut v, &at, m, (i % side) as i64, (i / side) as i64, self.texel(n));
                 inputs.push(v);
             }
         }
@@ -493,7 +537,7 @@ impl Pipeline for CartTex {
         let model = self.model();
         let at = At::of(model.inputs, self.filter.front().mip());
         let (t, c) = (front.read(input, &at), front.read_colour(input, &at));
-        self.host.normal(&vectors::cart_tex::host_vector(self.host.model(), model.inputs, input, t, c))
+        self.host.normal(&vectors::textured::host_vector(self.host.model(), model.inputs, input, t, c))
     }
     fn surface_ideal(&self, scene: &Scene, ideal: &Ideal) -> Option<f64> {
         self.host.surface_ideal(scene, ideal)
@@ -896,7 +940,7 @@ pub fn build(row: &'static Row, scene: &Scene, s: &Settings) -> Box<dyn Pipeline
         Family::Cartesian(decode) => Box::new(Cartesian { decode, gloss: row.serves.gloss, row }),
         Family::CartSurface(variant) => Box::new(CartSurface { variant, row }),
         Family::CartTex { host, filter } => {
-            Box::new(CartTex::new(row, pipelines::named(host).expect("a host row"), filter))
+            Box::new(CartTex::new(row, pipelines::named(host).expect("a host row"), filter, scene, s))
         }
         Family::Polar(scale) => Box::new(Polar { scale, pw: s.pw, h: s.h, row }),
         Family::Height => Box::new(Height { row, ..Height::with_bits(scene, s.height_bits) }),

@@ -197,8 +197,10 @@ impl Row {
         match self.family {
             Family::Cartesian(_) | Family::CartSurface(_) => self.serves.gloss || scene.conc == 0,
             // the memory holds a map of side 2^0 … 2^7 and its chain
-            Family::CartTex { .. } => {
-                (self.serves.gloss || scene.conc == 0)
+            Family::CartTex { host, .. } => {
+                // a polar host has no gloss unit and takes no C (its power unit is the specular term)
+                let polar = named(host).is_some_and(|h| matches!(h.family, Family::Polar(_)));
+                (self.serves.gloss || scene.conc == 0 || polar)
                     && scene.tex.is_power_of_two()
                     && scene.tex <= 1 << vectors::tex_fetch::MAX_LOG_SIDE
                     && (!self.serves.colour || scene.colour_map.as_ref().is_some_and(|c| c.side == scene.tex))
@@ -913,6 +915,22 @@ pub static PIPELINES: &[Row] = &[
         units: &["polar_shade_dc", "power", "blend"],
         serves: one_light(Encoding::PolarDc255, false, 0),
     },
+    tex(
+        "polar_tex_bilinear",
+        "polar, texture unit, bilinear",
+        "polar_pipeline",
+        polar(Scale::Seed),
+        Filter::Bilinear,
+        &["tex_addr", "tex_fetch", "bilinear", "polar_shade", "power", "blend"],
+    ),
+    tex(
+        "polar_tex_trilinear",
+        "polar, texture unit, trilinear",
+        "polar_pipeline",
+        polar(Scale::Seed),
+        Filter::Trilinear,
+        &["lod", "tex_addr", "tex_fetch", "bilinear", "polar_shade", "power", "blend"],
+    ),
     Row {
         name: "height_pipeline",
         family: Family::Height,

@@ -24,9 +24,10 @@
 //! # green = "opengl"              # normal_map: opengl (green up the image) | directx (green down)
 //! encoding = "seed"               # seed | hemi_oct | polar | polar_dc255 | heights | palette
 //! # palette = 256                 # palette: s_N, 1 to 4,096
-//! # filter = "bilinear"           # seed, hemi_oct: nearest | nearest_mip | bilinear | trilinear | trilinear_two_pass
+//! # filter = "bilinear"           # seed, hemi_oct: nearest | nearest_mip | bilinear | trilinear | trilinear_two_pass;
+//!                                 # polar: bilinear | trilinear
 //! # lod_bias = -1.0               # the MIP filters: levels added to λ, −8 to 8 − 1/256 in 1/256
-//! # fetch = "unit"                # seed, hemi_oct: unit (the texture unit's memory) | host
+//! # fetch = "unit"                # seed, hemi_oct, polar: unit (the texture unit's memory) | host
 //! # wrap = "repeat"               # repeat | clamp, or [u, v] one each; default: the surface's own (all but heights)
 //!
 //! [light]
@@ -621,11 +622,12 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     let filter_span = bump.filter.as_ref().map(|f| f.span());
     let fetch = bump.fetch.as_ref().map(|f| *f.get_ref());
     let fetch_span = bump.fetch.as_ref().map(|f| f.span());
-    if filter != Filter::Bilinear && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
+    let polar = matches!(encoding, Encoding::Polar | Encoding::PolarDc255);
+    if filter != Filter::Bilinear && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) && !polar {
         return Err(at.err(
             filter_span.clone().unwrap_or(bump_span.clone()),
             format!(
-                "[bump] filter = \"{}\": only the Cartesian encodings (seed, hemi_oct) have that filter",
+                "[bump] filter = \"{}\": only the Cartesian and polar encodings (seed, hemi_oct, polar) have that filter",
                 filter.name()
             ),
         ));
@@ -651,10 +653,10 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
         }
         scene.wrap = Some(w.get_ref().0);
     }
-    if fetch.is_some() && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) {
+    if fetch.is_some() && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) && !polar {
         return Err(at.err(
             fetch_span.clone().unwrap_or(bump_span.clone()),
-            "[bump] fetch: only the Cartesian encodings (seed, hemi_oct) have pipelines on the texture unit yet",
+            "[bump] fetch: only the Cartesian and polar encodings (seed, hemi_oct, polar) have pipelines on the texture unit yet",
         ));
     }
     // the choices that pick the pipeline, as the pipeline holds them (`Choices`)
@@ -720,7 +722,34 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             if let Some(w) = &mat.weight {
                 settings.h = w.get_ref().0;
             }
-            crate::pipelines::one_light(encoding, false, 0)
+            if !matches!(filter, Filter::Bilinear | Filter::Trilinear) {
+                return Err(at.err(
+                    filter_span.clone().unwrap_or(bump_span.clone()),
+                    format!("[bump] filter = \"{}\": the polar pipelines filter bilinearly, or trilinearly on the texture unit (only the Cartesian encodings have that filter)", filter.name()),
+                ));
+            }
+            // fed by the host (bilinear, the default), or on the texture unit (fetch = "unit", or a filter only the
+            // unit has)
+            let host = crate::pipelines::one_light(encoding, false, 0);
+            let unit = Choices { filter, fetch: Fetch::Unit, ..host };
+            let side = scene.tex;
+            let fits = side.is_power_of_two() && side <= 1 << vectors::tex_fetch::MAX_LOG_SIDE;
+            let on_unit = crate::pipelines::choose(&unit).is_some();
+            let span = || fetch_span.clone().or(filter_span.clone()).unwrap_or(bump_span.clone());
+            match fetch {
+                Some(Fetch::Host) if filter != Filter::Bilinear => {
+                    return Err(at.err(span(), format!("[bump] filter = \"{}\": the host-fed polar pipeline filters bilinearly; its other filters are the texture unit's (fetch = \"unit\")", filter.name())));
+                }
+                Some(Fetch::Host) => host,
+                None if filter == Filter::Bilinear => host,
+                _ if !on_unit => {
+                    return Err(at.err(span(), format!("[bump] fetch = \"unit\": no pipeline on the texture unit serves {} (the polar ones take the seed's angle scale, bilinear or trilinear)", unit.describe())));
+                }
+                _ if !fits => {
+                    return Err(at.err(span(), format!("[bump] fetch = \"unit\": the texture unit's pipelines hold maps of side 1, 2, 4 … 128; this map's side is {side}")));
+                }
+                _ => unit,
+            }
         }
         Encoding::Heights => {
             one_light("height")?;

@@ -156,6 +156,8 @@ pub static UNITS: &[Unit] = &[
     unit!(map: &vectors::cart_tex::trilinear_surface_matte_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceMatteColour),
     unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOctColour),
     unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct_matte_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOctMatteColour),
+    unit!(map: &vectors::polar_tex::bilinear::MODEL, rtl::polar_tex::PolarTexBilinear),
+    unit!(map: &vectors::polar_tex::trilinear::MODEL, rtl::polar_tex::PolarTexTrilinear),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -96,7 +96,15 @@ fn expected(
         let served = WITH_COLOUR.contains(&(encoding, per_surface, filter, gloss)) && fetch != Some("host");
         return served.then(|| format!("cart_tex_{filter}{surface}{hemi}{matte}_colour"));
     }
-    if (!cartesian && (filter != "bilinear" || fetch.is_some())) || (fetch == Some("unit") && !on_unit) {
+    // polar texels (the seed's scale) on the texture unit: asked for, or a filter only the unit has; the host-fed
+    // polar pipelines with fetch = "host" or nothing said
+    let polar = matches!(encoding, "polar" | "polar_dc255");
+    if encoding == "polar" && (fetch == Some("unit") || (fetch.is_none() && filter == "trilinear")) {
+        return matches!(filter, "bilinear" | "trilinear").then(|| format!("polar_tex_{filter}"));
+    }
+    let host_polar = polar && fetch == Some("host");
+    if (!cartesian && (filter != "bilinear" || (fetch.is_some() && !host_polar))) || (fetch == Some("unit") && !on_unit)
+    {
         return None;
     }
     if cartesian && fetch != Some("host") && on_unit {
@@ -281,6 +289,25 @@ mod built {
                 x.pixels().iter().map(|v| p.normal(v).expect("a normal")).collect()
             };
             assert!(normals(u.as_ref(), &pu) == normals(h.as_ref(), &ph), "{what}: normals");
+        }
+    }
+
+    /// The polar pipeline on the unit at level 0 is the host-fed one: S and R read from the memory and filtered as
+    /// numbers by the unit's bilinear units give the frame the host's own filtering gave, pixel for pixel, on the
+    /// quad (its R wrapping across footprints) and on the demo's torus, at the scene's power and weight.
+    #[test]
+    fn the_units_polar_frame_is_the_host_fed_frame() {
+        let unit = pipelines::named("polar_tex_bilinear").unwrap();
+        let host = pipelines::named("polar_pipeline").unwrap();
+        let demo = sim::scene_file::parse(sim::scene_file::DEMO, "demo.toml", std::path::Path::new(".")).unwrap().scene;
+        let settings = Settings { pw: 10, h: 0.75, ..Settings::default() };
+        for (what, scene) in [("quad", Scene { size: 96, ..Scene::default() }), ("demo", Scene { size: 128, ..demo })] {
+            let (u, h) = (build(unit, &scene, &settings), build(host, &scene, &settings));
+            let (pu, ph) = (u.prepare(&scene), h.prepare(&scene));
+            let (ou, oh) = (sim::render::model(u.model(), &pu), sim::render::model(h.model(), &ph));
+            assert!(ou.outs.len() > 1000, "{what}: {} pixels", ou.outs.len());
+            let differ = ou.outs.iter().zip(&oh.outs).filter(|(a, b)| a != b).count();
+            assert_eq!((differ, ou.outs.len()), (0, oh.outs.len()), "{what}");
         }
     }
 

@@ -221,6 +221,21 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         &["only the Cartesian encodings"],
     );
     refused(&scene("seed", "filter = \"cubic\"\n", "surface", ""), "s.toml:5:10:", &["bilinear", "nearest"]);
+    // polar texels: fed by the host unless the scene asks for the texture unit or a filter only it has
+    assert_eq!(kind(scene("polar", "", "surface", "")), "polar_pipeline");
+    assert_eq!(kind(scene("polar", host, "surface", "")), "polar_pipeline");
+    assert_eq!(kind(scene("polar", "fetch = \"unit\"\n", "surface", "")), "polar_tex_bilinear");
+    assert_eq!(kind(scene("polar", "filter = \"trilinear\"\n", "surface", "")), "polar_tex_trilinear");
+    refused(
+        &scene("polar", &format!("filter = \"trilinear\"\n{host}"), "surface", ""),
+        "s.toml:",
+        &["filters bilinearly"],
+    );
+    refused(
+        &scene("polar_dc255", "fetch = \"unit\"\n", "surface", ""),
+        "s.toml:5:9:",
+        &["no pipeline on the texture unit"],
+    );
     assert_eq!(scene_file::load(&scenes_dir().join("up5k.toml")).unwrap().pipeline.name, v(Decode::Seed, true, false));
     // its map of 128 texels in the texture unit's memory: the nearest texel, one light per surface, matte
     let textured = scene_file::load(&scenes_dir().join("up5k_textured.toml")).unwrap().pipeline.name;

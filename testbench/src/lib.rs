@@ -258,6 +258,19 @@ macro_rules! unit_tests {
     };
 }
 
+/// Random streams through rust-hdl (from an empty memory, which both read as zero), and a long random stream under
+/// Verilator after the hard cases have loaded the chain it reads (the hard cases with bubbles in rust-hdl are
+/// `unit_tests!`'s `hard_cases_with_bubbles`): a pipeline on the texture unit, whose random reads find their texels
+/// only once the hard cases have written them.
+pub fn three_streams<U: StreamUnit>(m: &'static UnitModel, seed: u64) {
+    random_vs_model::<U>(m, 4, 500);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut inputs = (m.hard_cases)();
+    inputs.extend((0..30_000).map(|_| (m.random)(&mut rng)));
+    external::<U>(Simulator::Verilator, m, &inputs, Bubbles::Random { one_in: 3, seed })
+        .assert_clean("verilator, random after the hard cases");
+}
+
 /// Property-based check above 2^20 inputs: proptest draws `cases` stream seeds and bubble densities; each case
 /// streams `per_case` vectors from the model's generator (edges weighted in) through rust-hdl and checks them all.
 pub fn random_vs_model<U: StreamUnit>(model: &'static UnitModel, cases: u32, per_case: usize) {

@@ -25,7 +25,7 @@ use rtl::cart_tex::{
     CartTexTrilinearSurfaceMatteColour, CartTexTrilinearTwoPassMatte,
 };
 use rtl::StreamUnit;
-use testbench::{external, random_vs_model, unit_tests, Bubbles};
+use testbench::{three_streams, unit_tests};
 use vectors::cart_tex::{
     bilinear, bilinear_colour, bilinear_hemi_oct, bilinear_hemi_oct_colour, bilinear_hemi_oct_matte,
     bilinear_hemi_oct_matte_colour, bilinear_matte, bilinear_matte_colour, bilinear_surface, bilinear_surface_colour,
@@ -45,7 +45,6 @@ use vectors::cart_tex::{
     trilinear_surface_hemi_oct_matte, trilinear_surface_hemi_oct_matte_colour, trilinear_surface_matte,
     trilinear_surface_matte_colour, trilinear_two_pass_matte,
 };
-use vectors::UnitModel;
 
 unit_tests!(cart_tex_bilinear, CartTexBilinear, bilinear::MODEL);
 unit_tests!(cart_tex_bilinear_matte, CartTexBilinearMatte, bilinear_matte::MODEL);
@@ -196,19 +195,6 @@ unit_tests!(
     CartTexTrilinearSurfaceHemiOctMatteColour,
     trilinear_surface_hemi_oct_matte_colour::MODEL
 );
-
-/// Random streams through rust-hdl (from an empty memory, which both read as zero), and a long random stream under
-/// Verilator after the hard cases have loaded the chain it reads (the hard cases with bubbles in rust-hdl are
-/// `unit_tests!`'s `hard_cases_with_bubbles`).
-fn three_streams<U: StreamUnit>(m: &'static UnitModel, seed: u64) {
-    use rand::SeedableRng;
-    random_vs_model::<U>(m, 4, 500);
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut inputs = (m.hard_cases)();
-    inputs.extend((0..30_000).map(|_| (m.random)(&mut rng)));
-    external::<U>(synth::cosim::Simulator::Verilator, m, &inputs, Bubbles::Random { one_in: 3, seed })
-        .assert_clean("verilator, random after the hard cases");
-}
 
 #[test]
 fn cart_tex_bilinear_streams() {

@@ -33,6 +33,7 @@ mod palette_pipeline_shared;
 mod polar_pipeline;
 mod polar_shade;
 mod polar_shade_dc;
+mod polar_tex;
 mod power;
 mod replicate;
 mod sincos;

@@ -31,6 +31,7 @@ pub mod polar {
     pub mod polar_encode;
     pub mod polar_pipeline;
     pub mod polar_shade;
+    pub mod polar_tex;
     pub mod power;
     pub mod sincos;
 }
@@ -67,6 +68,7 @@ pub mod texture {
     pub mod lod;
     pub mod tex_addr;
     pub mod tex_fetch;
+    pub mod textured;
 }
 
 pub mod csv;
@@ -82,7 +84,7 @@ pub use height::{
     texture_filter,
 };
 pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
-pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, power, sincos};
+pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, polar_tex, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
-pub use texture::{lod, tex_addr, tex_fetch};
+pub use texture::{lod, tex_addr, tex_fetch, textured};
 pub use unit::{Port, UnitModel};

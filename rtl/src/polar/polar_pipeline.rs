@@ -12,7 +12,7 @@ use rust_hdl::prelude::*;
 
 pub const AT_POWER: usize = crate::polar_shade::LATENCY; // 11
 pub const AT_BLEND: usize = AT_POWER + crate::power::LATENCY; // 23
-pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 29
+pub const LATENCY: usize = AT_BLEND + crate::blend::LATENCY; // 30
 
 /// The signals the block's Verilog leaves unused on purpose (`StreamUnit::waivers`).
 const WAIVERS: &[crate::stream::Waiver] = &[(
