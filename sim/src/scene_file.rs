@@ -743,7 +743,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                 Some(Fetch::Host) => host,
                 None if filter == Filter::Bilinear => host,
                 _ if !on_unit => {
-                    return Err(at.err(span(), format!("[bump] fetch = \"unit\": no pipeline on the texture unit serves {} (the polar ones take the seed's angle scale, bilinear or trilinear)", unit.describe())));
+                    return Err(at.err(span(), format!("[bump] fetch = \"unit\": no pipeline on the texture unit serves {} (the polar ones take US 6,819,319's angle scale, encoding = \"polar\", bilinear or trilinear)", unit.describe())));
                 }
                 _ if !fits => {
                     return Err(at.err(span(), format!("[bump] fetch = \"unit\": the texture unit's pipelines hold maps of side 1, 2, 4 … 128; this map's side is {side}")));
