@@ -273,7 +273,6 @@ impl Pipeline for CartSurface {
 pub struct CartTex {
     row: &'static Row,
     host: Box<dyn Pipeline>,
-    host_row: &'static Row,
     settings: Settings,
     filter: pipelines::Filter,
     /// the front with the last prepared frame's prologue written into its memory: what `normal` reads
@@ -291,7 +290,7 @@ impl CartTex {
         settings: &Settings,
     ) -> CartTex {
         let host = build(host_row, scene, settings);
-        CartTex { row, host, host_row, settings: *settings, filter, loaded: Default::default() }
+        CartTex { row, host, settings: *settings, filter, loaded: Default::default() }
     }
 
     /// The scene's colour map where the pipeline holds a colour path (a pipeline with one needs one: `renders`).
@@ -306,7 +305,7 @@ impl CartTex {
 
     /// The texels of the host-fed pipeline it is built on: a Cartesian decode's, or polar in an angle scale.
     fn texels(&self) -> Texels {
-        match self.host_row.family {
+        match self.host.row().family {
             Family::Cartesian(d) => Texels::Cartesian(d),
             Family::CartSurface(v) => Texels::Cartesian(v.decode),
             Family::Polar(scale) => Texels::Polar(scale),
@@ -334,8 +333,6 @@ enum Texels {
     Cartesian(Decode),
     Polar(Scale),
 }
-
-impl CartTex {}
 
 /// The map's MIP chain as unit normals, level 0 (side t) first, down to 1 × 1: each texel the normalised mean of
 /// the four under it.
@@ -397,18 +394,11 @@ impl Pipeline for CartTex {
             Texels::Cartesian(Decode::HemiOct) => "hemi-octahedral texels",
             Texels::Cartesian(Decode::Seed) => "seed-encoded texels",
             Texels::Polar(scale) => {
-                let s = &self.settings;
-                let l = polar_encode::encode_light(scale, scene.light_dir(0.5, 0.5), s.h);
                 return format!(
                     "the texture unit ({f}; the map and its MIP chain in its memory), polar texels ({}): S and R \
-                     filtered as numbers, one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
+                     filtered as numbers, {}",
                     scale.name(),
-                    l.t.to_degrees(),
-                    l.q,
-                    l.k1,
-                    l.k2,
-                    l.k3,
-                    s.pw as f64 / 4.0
+                    polar_light(scale, self.settings.pw, self.settings.h, scene)
                 );
             }
         };
@@ -609,21 +599,29 @@ impl Polar {
     }
 }
 
+/// The polar pipelines' light and power in words: the surface's one light as encoded (at the quad's centre) and p.
+fn polar_light(scale: Scale, pw: i64, h: f64, scene: &Scene) -> String {
+    let l = polar_encode::encode_light(scale, scene.light_dir(0.5, 0.5), h);
+    format!(
+        "one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
+        l.t.to_degrees(),
+        l.q,
+        l.k1,
+        l.k2,
+        l.k3,
+        pw as f64 / 4.0
+    )
+}
+
 impl Pipeline for Polar {
     fn row(&self) -> &'static Row {
         self.row
     }
     fn describe(&self, scene: &Scene) -> String {
-        let l = polar_encode::encode_light(self.scale, scene.light_dir(0.5, 0.5), self.h);
         format!(
-            "({}): S, R bilinear as numbers, one light per surface (T {:.1}°, Q {}, k = {}, {}, {}), p = {}",
+            "({}): S, R bilinear as numbers, {}",
             self.scale.name(),
-            l.t.to_degrees(),
-            l.q,
-            l.k1,
-            l.k2,
-            l.k3,
-            self.pw as f64 / 4.0
+            polar_light(self.scale, self.pw, self.h, scene)
         )
     }
     fn prepare(&self, scene: &Scene) -> Prepared {

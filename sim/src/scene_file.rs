@@ -738,7 +738,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             let span = || fetch_span.clone().or(filter_span.clone()).unwrap_or(bump_span.clone());
             match fetch {
                 Some(Fetch::Host) if filter != Filter::Bilinear => {
-                    return Err(at.err(span(), format!("[bump] filter = \"{}\": the host-fed polar pipeline filters bilinearly; its other filters are the texture unit's (fetch = \"unit\")", filter.name())));
+                    return Err(at.err(filter_span.clone().unwrap_or(bump_span.clone()), format!("[bump] filter = \"{}\": the host-fed polar pipeline filters bilinearly; its other filters are the texture unit's (fetch = \"unit\")", filter.name())));
                 }
                 Some(Fetch::Host) => host,
                 None if filter == Filter::Bilinear => host,
