@@ -1,5 +1,6 @@
 //! Verilog export: rust-hdl's `generate_verilog`, with the top module (and its DFF submodules' prefix) renamed
-//! from rust-hdl's `top` to the unit's name, so that several units can be read into one tool run.
+//! from rust-hdl's `top` to the unit's name, so that several units can be read into one tool run; each child's clock
+//! a wire (`clocks_as_wires`) and the delay lines' memories marked (`mark_rings`).
 
 use rtl::axis::AxisBlock;
 use rtl::StreamUnit;
@@ -35,10 +36,122 @@ pub fn named<B: Block>(mut uut: B, module: &str) -> Exported {
 }
 
 /// rust-hdl's Verilog `text` with its `top` renamed `module` (apart from `named`, which is compiled once a block),
-/// and its delay lines' memories marked (`mark_rings`).
+/// its children's clocks made wires (`clocks_as_wires`) and its delay lines' memories marked (`mark_rings`).
 fn renamed(text: &str, module: &str) -> Exported {
-    let text = text.replace("module top(", &format!("module {module}(")).replace("top$", &format!("{module}$"));
-    Exported { module: module.to_string(), text: mark_rings(&text) }
+    let text = text.replace("module top(", &format!("module {module}("));
+    let text = prefix_renamed(&text, "top$", &format!("{module}$"));
+    Exported { module: module.to_string(), text: mark_rings(&clocks_as_wires(&text)) }
+}
+
+/// Whether `c` can be part of a Verilog identifier as rust-hdl writes them (`$` joins a child to its parent).
+fn ident_char(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_' || c == '$'
+}
+
+/// `text` with every identifier that starts with `from` starting with `to` instead: rust-hdl's module names
+/// `top$child$…`, but not a signal whose name only ends in `top` (`s2_top$d`, which a plain replace made
+/// `s2_<unit>$d` in the exported file and its waveforms).
+fn prefix_renamed(text: &str, from: &str, to: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 4096);
+    let mut rest = text;
+    while let Some(i) = rest.find(from) {
+        let starts = !rest[..i].chars().next_back().is_some_and(ident_char);
+        out.push_str(&rest[..i]);
+        out.push_str(if starts { to } else { from });
+        rest = &rest[i + from.len()..];
+    }
+    out.push_str(rest);
+    out
+}
+
+/// rust-hdl hands each child its clock inside the parent's combinational block (`always @(*) begin … x$clock =
+/// clock; …`), so every clock edge, rising and falling, wakes every such block in the design to pass the edge on,
+/// and an event-driven simulator evaluates all the logic twice a clock more than the design needs (Icarus ran the
+/// trilinear colour pipeline at 10 ms a clock, 5 ms with this pass). A child's clock assigned once in its module, at
+/// the top level of a combinational block, from one of the module's inputs, is the same signal as a continuous
+/// assignment of that input: it becomes `wire x$clock; assign x$clock = clock;` and leaves the block. Any other
+/// use (assigned twice, under a condition, from an expression) stays as rust-hdl wrote it.
+fn clocks_as_wires(text: &str) -> String {
+    let mut out = String::with_capacity(text.len() + 4096);
+    let mut module = String::new();
+    for line in text.split_inclusive('\n') {
+        if line.starts_with("module ") && !module.is_empty() {
+            out.push_str(&module_clocks_as_wires(&module));
+            module.clear();
+        }
+        module.push_str(line);
+    }
+    out.push_str(&module_clocks_as_wires(&module));
+    out
+}
+
+/// `clocks_as_wires` on one module's text.
+fn module_clocks_as_wires(module: &str) -> String {
+    use std::collections::{HashMap, HashSet};
+    let lines: Vec<&str> = module.split_inclusive('\n').collect();
+    let indent = |l: &str| l.len() - l.trim_start().len();
+    let mut inputs = HashSet::new();
+    let mut clock_regs = HashSet::new();
+    // every line that assigns each name (`name = …` or `name <= …`)
+    let mut assigned: HashMap<&str, usize> = HashMap::new();
+    for l in &lines {
+        let t = l.trim();
+        if let Some(rest) = t.strip_prefix("input wire") {
+            if let Some(name) = rest.trim().strip_suffix(';').filter(|n| !n.contains(['[', ' '])) {
+                inputs.insert(name);
+            }
+        } else if let Some(name) = t.strip_prefix("reg").and_then(|r| r.trim().strip_suffix(';')) {
+            if name.ends_with("$clock") && !name.contains(['[', ' ']) {
+                clock_regs.insert(name);
+            }
+        }
+        if let Some((lhs, _)) = t.split_once(" = ").or_else(|| t.split_once(" <= ")) {
+            *assigned.entry(lhs.trim()).or_default() += 1;
+        }
+    }
+    // the assignments that move: at the statement level of an `always @(*) begin` block
+    let mut moved: Vec<(&str, &str)> = Vec::new();
+    let mut moved_lines = HashSet::new();
+    let mut block: Option<(usize, Option<usize>)> = None; // (the always line's indent, its statements' indent)
+    for (i, l) in lines.iter().enumerate() {
+        let t = l.trim();
+        match &mut block {
+            None if t == "always @(*) begin" => block = Some((indent(l), None)),
+            None => {}
+            Some((at, _)) if t == "end" && indent(l) == *at => block = None,
+            Some((_, level)) if !t.is_empty() => {
+                let level = *level.get_or_insert(indent(l));
+                let pair = t.strip_suffix(';').and_then(|a| a.split_once(" = "));
+                if let Some((lhs, rhs)) = pair.filter(|_| indent(l) == level) {
+                    if clock_regs.contains(lhs) && inputs.contains(rhs) && assigned.get(lhs) == Some(&1) {
+                        moved.push((lhs, rhs));
+                        moved_lines.insert(i);
+                    }
+                }
+            }
+            Some(_) => {}
+        }
+    }
+    if moved.is_empty() {
+        return module.to_string();
+    }
+    let source: HashMap<&str, &str> = moved.iter().copied().collect();
+    let mut out = String::with_capacity(module.len() + 32 * moved.len());
+    for (i, l) in lines.iter().enumerate() {
+        if moved_lines.contains(&i) {
+            continue;
+        }
+        let t = l.trim();
+        let declared = t.strip_prefix("reg").and_then(|r| r.trim().strip_suffix(';'));
+        match declared.and_then(|name| source.get(name).map(|rhs| (name, rhs))) {
+            Some((name, rhs)) => {
+                let pad = &l[..indent(l)];
+                out.push_str(&format!("{pad}wire {name};\n{pad}assign {name} = {rhs};\n"));
+            }
+            None => out.push_str(l),
+        }
+    }
+    out
 }
 
 /// The memory of every module `…$ring` (`rtl::prim::ram_delay::RamDelay`'s RAM) and `…$tables`
@@ -131,6 +244,48 @@ impl FolderLock {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_top_prefix_is_renamed_only_where_an_identifier_starts() {
+        let text = "module top$a$s2_top(d,q,clock);\n    top$a$s2_top s2_top(.d(s2_top$d), .q(stop$q));\n";
+        let got = prefix_renamed(text, "top$", "unit$");
+        assert_eq!(got, "module unit$a$s2_top(d,q,clock);\n    unit$a$s2_top s2_top(.d(s2_top$d), .q(stop$q));\n");
+    }
+
+    /// A child's clock handed on at the top level of the block from an input leaves the block as a wire; one
+    /// under a condition, one assigned twice and one from an expression stay where they are.
+    #[test]
+    fn only_a_clock_passed_on_unconditionally_from_an_input_becomes_a_wire() {
+        let text = "\
+module m(clock,other,en);
+    input wire  clock;
+    input wire  other;
+    input wire  en;
+    reg  a$clock;
+    reg  b$clock;
+    reg  c$clock;
+    reg  d$clock;
+    reg  e$clock;
+    always @(*) begin
+        a$clock = clock;
+        if (en) begin
+            b$clock = clock;
+        end
+        c$clock = clock;
+        c$clock = other;
+        d$clock = ~clock;
+        e$clock = other;
+    end
+endmodule // m
+";
+        let got = clocks_as_wires(text);
+        let want = text
+            .replace("    reg  a$clock;\n", "    wire a$clock;\n    assign a$clock = clock;\n")
+            .replace("    reg  e$clock;\n", "    wire e$clock;\n    assign e$clock = other;\n")
+            .replace("        a$clock = clock;\n", "")
+            .replace("        e$clock = other;\n", "");
+        assert_eq!(got, want);
+    }
 
     /// Whether another process (util-linux's `flock -n`) can take the folder's lock now.
     fn free_to_another_process(dir: &Path) -> bool {
