@@ -2,8 +2,8 @@
 //! derivatives of u and v (Sq8.8, texels of level 0 a pixel), the map's side 2^n and the bias (Sq3.8, levels), the
 //! level ⌊λ⌋, frac(λ) in 8 bits and the nearest level ⌊λ + ½⌋, λ = log2 ρ + bias clamped to [0, n]; see
 //! `vectors::lod` for the exact recipe. ρ² comes from four squarers, log2 from the leading one of ρ² and a 256-entry
-//! table of its next 8 bits. Latency 14: magnitudes; their saturation to U16; the squarers' operand register; the
-//! squares; the two sums; their comparison; the larger; the leading one within each group of five bits; the first
+//! table of its next 8 bits. Latency 15: magnitudes; their saturation to U16; the squarers' operand register; the
+//! squares; the squares again, in the fabric; the two sums; their comparison; the larger; the leading one within each group of five bits; the first
 //! group with one, and the shift by whole groups; the rest of the normalising shift; the table (its read register)
 //! beside the exponent plus the bias; the table's output register; λ; the clamps. (With the comparison and the
 //! choice in one stage on 33-bit sums, the UP5K placed the unit at 41.5 MHz, that path the critical one; with the
@@ -16,7 +16,7 @@ use rust_hdl::prelude::*;
 use rust_hdl::widgets::prelude::ROM;
 
 /// Clock edges from an input to its output: the length of the valid chain, and of the datapath's stages.
-pub const LATENCY: usize = 14;
+pub const LATENCY: usize = 15;
 
 /// The table: entry f = round(log2(1 + (f + ½)/256)·2^9), the log of the midpoint of the mantissa's bin. The
 /// model's `vectors::lod::table_entry` is the same formula written apart; a test compares the two entry by entry.
@@ -73,6 +73,11 @@ crate::stream_block! {
         s1b_a: [DFF<U16>; 4],
         // stage 2: the squares, Uq16.8 (truncated)
         s2_q: [DFF<Bits<24>>; 4],
+        // stage 2b: the squares again, the adders' operands. On the ECP5 each square is the MULT18X18D's own output
+        // register, and its route to the adder was the colour pipelines' critical path
+        // (cart_tex_nearest_mip_hemi_oct_colour at 166.4 MHz: 2.34 ns of logic, 3.68 ns of routing); a fabric
+        // register the placer can put by the adder takes that route into a clock of its own
+        s2b_q: [DFF<Bits<24>>; 4],
         // stage 3: L_x and L_y, Uq17.8
         s3_lx: DFF<Bits<25>>,
         s3_ly: DFF<Bits<25>>,
@@ -121,8 +126,8 @@ crate::stream_block! {
         s9_level: DFF<Bits<4>>,
         s9_frac: DFF<U8>,
         s9_near: DFF<Bits<4>>,
-        n_dly: Delay<Bits<4>, 13>, // log_side beside the stages up to λ
-        b_dly: Delay<Sq3_8, 10>, // the bias beside the stages up to the table's address
+        n_dly: Delay<Bits<4>, 14>, // log_side beside the stages up to λ
+        b_dly: Delay<Sq3_8, 11>, // the bias beside the stages up to the table's address
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
         w_mag: [Signal<Local, Bits<17>>; 4],
         w_sq: [Signal<Local, Bits<32>>; 4],
@@ -160,6 +165,7 @@ impl Logic for Lod {
             self.s1_a[i].clock.next = self.clock.val();
             self.s1b_a[i].clock.next = self.clock.val();
             self.s2_q[i].clock.next = self.clock.val();
+            self.s2b_q[i].clock.next = self.clock.val();
         }
         // stage 1: the magnitudes, −d = !d + 1 on 17 bits (−(−256) = 2^16 is still right there, read unsigned)
         self.w_mag[0].next = self.du_dx.val();
@@ -191,10 +197,11 @@ impl Logic for Lod {
             // stage 2: a², 16 × 16 → 32 bits, exact, then >> 8 (floor): Uq16.8
             self.w_sq[i].next = self.s1b_a[i].q.val() * self.s1b_a[i].q.val();
             self.s2_q[i].d.next = self.w_sq[i].val().get_bits::<24>(8); // U32 >> 8: U24, truncated
+            self.s2b_q[i].d.next = self.s2_q[i].q.val(); // stage 2b: carried
         }
         // stage 3: L_x = q(u_x) + q(v_x), L_y = q(u_y) + q(v_y): U24 + U24 → U25, exact
-        self.s3_lx.d.next = bit_cast::<25, 24>(self.s2_q[0].q.val()) + bit_cast::<25, 24>(self.s2_q[1].q.val());
-        self.s3_ly.d.next = bit_cast::<25, 24>(self.s2_q[2].q.val()) + bit_cast::<25, 24>(self.s2_q[3].q.val());
+        self.s3_lx.d.next = bit_cast::<25, 24>(self.s2b_q[0].q.val()) + bit_cast::<25, 24>(self.s2b_q[1].q.val());
+        self.s3_ly.d.next = bit_cast::<25, 24>(self.s2b_q[2].q.val()) + bit_cast::<25, 24>(self.s2b_q[3].q.val());
         // stage 4: which edge is the longer
         self.s4_gt.d.next = self.s3_lx.q.val() > self.s3_ly.q.val();
         self.s4_lx.d.next = self.s3_lx.q.val();
