@@ -159,10 +159,10 @@ fn dff(clock: &[Value], d: &[Value], q: &[Value]) -> Value {
 /// (`<top>.split.json`, `<top>.split.v`): coarse cells, which a simulator runs as they are, each module `top` with
 /// its ports and latency, so the unit's exported testbench runs on either. How many products were split.
 pub fn netlists(dir: &std::path::Path, top: &str, verilog: &str) -> Result<usize, String> {
-    use crate::fpga::{KEEP_OPERAND_COPIES, PREPARE};
+    use crate::fpga::{KEEP_COPIES, PREPARE};
     let yosys = |script: &str| crate::tools::run(dir, crate::tools::toolchain().yosys(), &["-q", "-p", script]);
     yosys(&format!(
-        "read_verilog {verilog}; hierarchy -top {top}; {KEEP_OPERAND_COPIES}; {PREPARE}; memory_collect; \
+        "read_verilog {verilog}; hierarchy -top {top}; {KEEP_COPIES}; {PREPARE}; memory_collect; \
          write_json {top}.prepared.json"
     ))?;
     let text =
