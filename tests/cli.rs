@@ -114,10 +114,10 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     for f in [
         "cart_tex_bilinear_model.png",
         "cart_tex_bilinear_rust_hdl.png",
-        "polar_pipeline_model.png",
+        "polar_tex_bilinear_model.png",
         "cart_tex_bilinear_hemi_oct_model.png",
         "cart_tex_bilinear.vcd",
-        "polar_pipeline.vcd",
+        "polar_tex_bilinear.vcd",
         "cart_tex_bilinear_hemi_oct.vcd",
         "verilog/cart_tex_bilinear.v",
         "fig8a_blinn.png",
@@ -313,7 +313,7 @@ fn a_users_height_map_goes_through_the_height_cartesian_polar_and_palette_paths(
         "height_pipeline_rust_hdl.png",
         // 8 × 8, a side the texture unit's memory holds
         "cart_tex_bilinear_model.png",
-        "polar_pipeline_model.png",
+        "polar_tex_bilinear_model.png",
         "palette_pipeline_model.png",
         "palette_pipeline_12_model.png",
     ] {

@@ -728,8 +728,9 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                     format!("[bump] filter = \"{}\": the polar pipelines filter bilinearly, or trilinearly on the texture unit (only the Cartesian encodings have that filter)", filter.name()),
                 ));
             }
-            // fed by the host (bilinear, the default), or on the texture unit (fetch = "unit", or a filter only the
-            // unit has)
+            // on the texture unit where one of its pipelines serves the scene and its memory holds the map (the
+            // default, as for the Cartesian encodings: the angle scale of US 6,819,319, a side up to 128), else fed
+            // by the host (bilinear); fetch = "host" takes the host-fed one
             let host = crate::pipelines::one_light(encoding, false, 0);
             let unit = Choices { filter, fetch: Fetch::Unit, ..host };
             let side = scene.tex;
@@ -741,7 +742,7 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
                     return Err(at.err(filter_span.clone().unwrap_or(bump_span.clone()), format!("[bump] filter = \"{}\": the host-fed polar pipeline filters bilinearly; its other filters are the texture unit's (fetch = \"unit\")", filter.name())));
                 }
                 Some(Fetch::Host) => host,
-                None if filter == Filter::Bilinear => host,
+                None if filter == Filter::Bilinear && !(on_unit && fits) => host,
                 _ if !on_unit => {
                     return Err(at.err(span(), format!("[bump] fetch = \"unit\": no pipeline on the texture unit serves {} (the polar ones take US 6,819,319's angle scale, encoding = \"polar\", bilinear or trilinear)", unit.describe())));
                 }

@@ -82,7 +82,9 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     ] {
         assert_eq!(kind(f), want, "{f}");
     }
-    assert_eq!(kind("polar.toml"), "polar_pipeline");
+    assert_eq!(kind("polar.toml"), "polar_tex_bilinear");
+    assert_eq!(kind("polar_host.toml"), "polar_pipeline");
+    assert_eq!(kind("sphere_polar.toml"), "polar_pipeline");
     assert_eq!(scene_file::load(&scenes_dir().join("polar.toml")).unwrap().settings.pw, 16);
     assert_eq!(kind("height.toml"), "height_pipeline");
     assert_eq!(kind("palette.toml"), "palette_pipeline");
@@ -221,8 +223,16 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         &["only the Cartesian encodings"],
     );
     refused(&scene("seed", "filter = \"cubic\"\n", "surface", ""), "s.toml:5:10:", &["bilinear", "nearest"]);
-    // polar texels: fed by the host unless the scene asks for the texture unit or a filter only it has
-    assert_eq!(kind(scene("polar", "", "surface", "")), "polar_pipeline");
+    // polar texels: on the texture unit where it holds the map, fed by the host on asking, or where the unit has no
+    // pipeline for the angle scale or no room for the map
+    assert_eq!(kind(scene("polar", "", "surface", "")), "polar_tex_bilinear");
+    assert_eq!(kind(scene("polar_dc255", "", "surface", "")), "polar_pipeline_dc");
+    assert_eq!(kind(scene("polar", "texels = 256\n", "surface", "")), "polar_pipeline");
+    refused(
+        &scene("polar", "texels = 256\nfetch = \"unit\"\n", "surface", ""),
+        "s.toml:6:9:",
+        &["1, 2, 4 … 128", "256"],
+    );
     assert_eq!(kind(scene("polar", host, "surface", "")), "polar_pipeline");
     assert_eq!(kind(scene("polar", "fetch = \"unit\"\n", "surface", "")), "polar_tex_bilinear");
     assert_eq!(kind(scene("polar", "filter = \"trilinear\"\n", "surface", "")), "polar_tex_trilinear");
