@@ -84,4 +84,33 @@ mod tests {
         let [s, r] = f.step(&read, &at);
         assert_eq!((s, r), (100, 128));
     }
+
+    /// The hard cases' reads of R across its wrap, at every level: the front gives R = (250 + 6) / 2 = 128 half way
+    /// between columns 0 and 1 and, repeating, between the last column and column 0; clamped at x = 0, column 0's
+    /// R = 6 alone. S = 100 throughout. (The MIP reads past the level are the model's to give: not checked here.)
+    #[test]
+    fn the_hard_cases_read_r_across_its_wrap_at_every_level() {
+        use crate::texture::textured::r_wrap_seams;
+        let m = &bilinear::MODEL;
+        let at = At::of(m.inputs, false);
+        let mut f = front::Front::new(Filter::Bilinear);
+        let levels = r_wrap_seams(Filter::Bilinear, &at, &vec![0; m.inputs.len()]);
+        for w in &levels[0] {
+            f.step(w, &at);
+        }
+        assert_eq!(levels.len(), 5);
+        for (k, level) in levels[1..].iter().enumerate() {
+            let got: Vec<[i64; 2]> = level.iter().map(|v| f.step(v, &at)).collect();
+            // x = 0 repeating, x = 0 clamped, x = 1 texel repeating, clamped
+            assert_eq!(got, [[100, 128], [100, 6], [100, 128], [100, 128]], "level of side 2^{}", k + 1);
+        }
+        // and the pipeline's hard cases hold them, for each filter
+        for (m, filt, h) in all() {
+            let at = At::of(m.inputs, filt.mip());
+            let hard = (m.hard_cases)();
+            let base = crate::texture::textured::from_host(h, m.inputs, &(h.hard_cases)()[0]);
+            let seams: Vec<Vec<i64>> = r_wrap_seams(filt, &at, &base).into_iter().flatten().collect();
+            assert!(hard.ends_with(&seams), "{}", m.name);
+        }
+    }
 }

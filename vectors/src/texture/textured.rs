@@ -325,7 +325,51 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port], sweep: Sweep
             out.push(v.clone());
         }
     }
+    if is_polar(host) {
+        out.extend(r_wrap_seams(filter, &at, &base).into_iter().flatten());
+    }
     out
+}
+
+/// A polar map's R across its 255 → 0 wrap at every level of the region's chain (US 6,819,319's shortcoming 2, made
+/// by the front's filter): in the level of side 2^m (m ≥ 1) R = 6 in column 0 and R = 250 in columns 1 and 2^m − 1,
+/// S = 100, rows 0 and 1. The first vectors write them; then, level by level, reads at row 0's centre half way
+/// between two columns: inside the map (x = 1.0 texels of the level) and across its edge (x = 0: repeating, column
+/// 2^m − 1 beside column 0; clamped, column 0 alone), as level 0 of the map of side 2^m and, with a MIP filter, as
+/// the level of the region's map that λ names and half a level past it (trilinear: half way to the next).
+pub fn r_wrap_seams(filter: Filter, at: &At, base: &[i64]) -> Vec<Vec<Vec<i64>>> {
+    let mut writes = vec![];
+    for m in 1..=REGION_LOG2 {
+        for y in 0..2 {
+            for (x, r) in [(0, 6), (1, 250), ((1 << m) - 1, 250)] {
+                let mut v = base.to_vec();
+                front::put_write(&mut v, at, m, x, y, 100 | (r << 8));
+                writes.push(v);
+            }
+        }
+    }
+    let mut levels = vec![writes];
+    for m in 1..=REGION_LOG2 {
+        // (the map's log side, the derivatives, the level's texel in level-0 texels of that map)
+        let mut reads: Vec<(i64, [i64; 4], i64)> = vec![(m, [256, 0, 0, 256], 256)];
+        if filter.mip() {
+            let k = REGION_LOG2 - m;
+            reads.push((REGION_LOG2, [256 << k, 0, 0, 256 << k], 256 << k));
+            reads.push((REGION_LOG2, [(256 << k) * 181 / 128, 0, 0, 0], 256 << k));
+        }
+        let mut level = vec![];
+        for (s, d, texel) in reads {
+            for x in [0, texel] {
+                for wrap in [true, false] {
+                    let mut v = base.to_vec();
+                    front::put_read(&mut v, at, [x, texel / 2], s, [wrap, true], d);
+                    level.push(v);
+                }
+            }
+        }
+        levels.push(level);
+    }
+    levels
 }
 
 /// The front's ports (with a colour map, its memory select) followed by the host's other ports (with a colour map,
