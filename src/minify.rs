@@ -1,6 +1,6 @@
 //! `bumprtl minify [SCENE.toml] --out DIR`: the texture unit's filters (nearest, the nearest texel of the nearest
-//! MIP level, bilinear, trilinear) on one scene, the demo's torus by default, against a supersampled f64 ideal
-//! (`sim::minify`): the colour error over every pixel and over the minified ones, as a table (DIR/minify.md, and
+//! MIP level, bilinear, trilinear; for a polar scene the polar pipelines' bilinear and trilinear, lit as they are)
+//! on one scene, the demo's torus by default, against a supersampled f64 ideal (`sim::minify`): the colour error over every pixel and over the minified ones, as a table (DIR/minify.md, and
 //! printed), and as pictures: the ideal, and each filter's frame beside its error heat map on one scale
 //! (DIR/minify_<filter>.png); then the MIP filters over a sweep of LOD biases. The scene is read (or refused)
 //! before anything is written.
@@ -24,8 +24,17 @@ fn table(name: &str, n: usize, bias: f64, ideal: &minify::Ideal, lines: &[Line],
          {} pixels, {minified} of them minified (λ > {MINIFIED}). Beside it, the same filter computed in f64 on \
          the float MIP chain the unit's memory is loaded from (each level's texel the normalised mean of the four \
          under it): the method's own error, without the texels' encoding or the datapath's widths. The MIP filters \
-         read λ + {bias} (the LOD bias).\n",
-        ideal.rgb.len()
+         read λ + {bias} (the LOD bias).{}\n",
+        ideal.rgb.len(),
+        match ideal.shading {
+            minify::Shading::Polar { pw, h } => format!(
+                " Polar texels (US 6,819,319's first embodiment): the filters are the polar pipelines' on the texture \
+                 unit, which filter S and R as numbers; the ideal is lit as they are, max(0, (1 − h) + h·N·L)^p with \
+                 h = {h} and p = {}.",
+                pw as f64 / 4.0
+            ),
+            minify::Shading::Gloss(_) => String::new(),
+        }
     );
     let _ = writeln!(
         s,
@@ -72,7 +81,8 @@ fn table(name: &str, n: usize, bias: f64, ideal: &minify::Ideal, lines: &[Line],
         );
     }
     // the sweep: each MIP filter's minified mean at each bias, the pipeline's and the method's in f64
-    let mip: Vec<usize> = (0..minify::FILTERS.len()).filter(|&k| minify::FILTERS[k].0.front().mip()).collect();
+    let mip: Vec<usize> =
+        (0..minify::FILTERS.len()).filter(|&k| swept.iter().any(|w| w.hardware[k].is_some())).collect();
     let _ = writeln!(
         s,
         "\nThe MIP filters' mean error on the minified pixels by LOD bias (the pipeline / the filter in f64). The \
@@ -119,7 +129,7 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize, bias: Option<f64>) -
         scene.lod_bias = sim::scene_file::LodBias::try_from(b).map_err(|e| format!("--lod-bias {b}: {e}"))?.0;
     }
     let scene = &scene;
-    let ideal = minify::ideal(scene, samples);
+    let ideal = minify::ideal_shaded(scene, samples, minify::Shading::of(&spec));
     let named = |e: String| match path {
         Some(p) => format!("{}: {e}", p.display()),
         None => e,

@@ -4,7 +4,8 @@
 //! at that point, made unit length and lit by the pixel's light as the pipelines' ideal is. Against it, the colour
 //! each filter's pipeline gives (the bit-exact model, which the rtl equals), over every pixel and over the minified
 //! ones, where λ = log2 ρ of the pixel's own derivatives is above ½ (the nearest level is no longer level 0). The
-//! MIP filters read λ plus the scene's LOD bias; `sweep` measures them over a range of biases.
+//! MIP filters read λ plus the scene's LOD bias; `sweep` measures them over a range of biases. A polar scene's
+//! ideal is lit as the polar pipeline's is (`Shading::Polar`), and its filters are the polar pipelines on the unit.
 
 use crate::pipeline::{build, gloss_shade, Pipeline};
 use crate::pipelines::{self, Filter, Settings};
@@ -25,8 +26,66 @@ pub const FILTERS: [(Filter, &str); 4] = [
     (Filter::Trilinear, "cart_tex_trilinear_matte"),
 ];
 
+/// The polar filters on the texture unit (US 6,819,319's angle scale: S and R filtered as numbers), each with its
+/// pipeline.
+pub const POLAR_FILTERS: [(Filter, &str); 2] =
+    [(Filter::Bilinear, "polar_tex_bilinear"), (Filter::Trilinear, "polar_tex_trilinear")];
+
+/// How the ideal lights a normal n under the pixel's light l: the shade α, 0 … 255.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shading {
+    /// the Cartesian pipelines': max(0, N·L) through the gloss unit's ideal at C (`gloss_shade`)
+    Gloss(i64),
+    /// the polar pipelines': max(0, (1 − h) + h·N·L)^p, p = pw / 4
+    Polar { pw: i64, h: f64 },
+}
+
+impl Shading {
+    /// The shading of a scene's pipeline family: polar for a polar pipeline (its power and weight), else the gloss
+    /// unit's at the scene's C.
+    pub fn of(spec: &crate::scene_file::SceneSpec) -> Shading {
+        match spec.pipeline.family {
+            pipelines::Family::Polar(_) => Shading::Polar { pw: spec.settings.pw, h: spec.settings.h },
+            pipelines::Family::CartTex { host, .. }
+                if matches!(pipelines::named(host).map(|h| h.family), Some(pipelines::Family::Polar(_))) =>
+            {
+                Shading::Polar { pw: spec.settings.pw, h: spec.settings.h }
+            }
+            _ => Shading::Gloss(spec.scene.conc),
+        }
+    }
+
+    pub fn alpha(self, n: [f64; 3], l: [f64; 3]) -> f64 {
+        match self {
+            Shading::Gloss(conc) => gloss_shade(conc, n, l),
+            Shading::Polar { pw, h } => {
+                let d = (1.0 - h) + h * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]);
+                255.0 * d.clamp(0.0, 1.0).powf(pw as f64 / 4.0)
+            }
+        }
+    }
+
+    /// The filters measured under this shading, each with its pipeline.
+    pub fn filters(self) -> &'static [(Filter, &'static str)] {
+        match self {
+            Shading::Gloss(_) => &FILTERS,
+            Shading::Polar { .. } => &POLAR_FILTERS,
+        }
+    }
+
+    /// What the pipelines are built with: the polar power and weight.
+    fn settings(self) -> Settings {
+        match self {
+            Shading::Gloss(_) => Settings::default(),
+            Shading::Polar { pw, h } => Settings { pw, h, ..Settings::default() },
+        }
+    }
+}
+
 /// The supersampled ideal of a frame, pixel by pixel in the pipelines' order.
 pub struct Ideal {
+    /// how each sample is lit, and so which filters are measured against it
+    pub shading: Shading,
     /// the colour, 8-bit units, real
     pub rgb: Vec<[f64; 3]>,
     /// λ = log2 ρ of the pixel's derivatives (unclamped)
@@ -103,13 +162,18 @@ fn sample(normals: &[[f64; 3]], t: usize, x: f64, y: f64, wrap: [bool; 2]) -> [f
     crate::surface::unit(m)
 }
 
-/// The scene's supersampled ideal with `n × n` samples a pixel.
+/// The scene's supersampled ideal with `n × n` samples a pixel, lit as the Cartesian pipelines are at the scene's C.
 pub fn ideal(scene: &Scene, n: usize) -> Ideal {
+    ideal_shaded(scene, n, Shading::Gloss(scene.conc))
+}
+
+/// The scene's supersampled ideal with `n × n` samples a pixel, each sample lit by `shading`.
+pub fn ideal_shaded(scene: &Scene, n: usize, shading: Shading) -> Ideal {
     let normals = scene.normals();
     let t = scene.tex;
     let frame = crate::raster::frame(scene, &normals);
     let chain = crate::pipeline::mip_chain(&normals, t);
-    let mut out = Ideal { rgb: vec![], lambda: vec![], at: vec![], method: Default::default() };
+    let mut out = Ideal { shading, rgb: vec![], lambda: vec![], at: vec![], method: Default::default() };
     for px in &frame.pixels {
         let d = px.deriv; // du/dx, dv/dx, du/dy, dv/dy in texels of level 0
         let mut rgb = [0.0; 3];
@@ -117,7 +181,7 @@ pub fn ideal(scene: &Scene, n: usize) -> Ideal {
             for sx in 0..n {
                 let (ox, oy) = ((sx as f64 + 0.5) / n as f64 - 0.5, (sy as f64 + 0.5) / n as f64 - 0.5);
                 let (x, y) = (px.pos[0] + d[0] * ox + d[2] * oy, px.pos[1] + d[1] * ox + d[3] * oy);
-                let c = scene.blend_ideal(gloss_shade(scene.conc, sample(&normals, t, x, y, px.wrap), px.light));
+                let c = scene.blend_ideal(shading.alpha(sample(&normals, t, x, y, px.wrap), px.light));
                 for k in 0..3 {
                     rgb[k] += c[k] / (n * n) as f64;
                 }
@@ -128,12 +192,18 @@ pub fn ideal(scene: &Scene, n: usize) -> Ideal {
         out.lambda.push(rho.log2());
         out.at.push(px.at);
     }
-    out.method = methods(scene, &frame, &chain);
+    out.method = methods(scene, &frame, &chain, shading);
     out
 }
 
-/// Each filter of `FILTERS` in f64 on the float chain, pixel by pixel, the MIP filters at λ plus the scene's bias.
-fn methods(scene: &Scene, frame: &crate::raster::Frame, chain: &[Vec<[f64; 3]>]) -> [Vec<[f64; 3]>; 4] {
+/// Each filter of `FILTERS` in f64 on the float chain, pixel by pixel, the MIP filters at λ plus the scene's bias,
+/// lit by `shading`.
+fn methods(
+    scene: &Scene,
+    frame: &crate::raster::Frame,
+    chain: &[Vec<[f64; 3]>],
+    shading: Shading,
+) -> [Vec<[f64; 3]>; 4] {
     std::array::from_fn(|k| {
         let f = FILTERS[k].0;
         let bias = if f.front().mip() { scene.lod_bias } else { 0.0 };
@@ -144,14 +214,15 @@ fn methods(scene: &Scene, frame: &crate::raster::Frame, chain: &[Vec<[f64; 3]>])
                 let d = px.deriv;
                 let rho = (d[0] * d[0] + d[1] * d[1]).sqrt().max((d[2] * d[2] + d[3] * d[3]).sqrt());
                 let n = method(f, chain, scene.tex, px, rho.log2() + bias);
-                scene.blend_ideal(gloss_shade(scene.conc, n, px.light))
+                scene.blend_ideal(shading.alpha(n, px.light))
             })
             .collect()
     })
 }
 
 /// One bias of the sweep: the MIP filters' mean error on the minified pixels, the pipeline's and the f64 method's,
-/// in `FILTERS`' order (None for the filters without a level of detail).
+/// in `FILTERS`' order (None for the filters without a level of detail, or without a pipeline under the ideal's
+/// shading).
 pub struct Swept {
     pub bias: f64,
     pub hardware: [Option<f64>; 4],
@@ -163,15 +234,19 @@ pub fn sweep(scene: &Scene, ideal: &Ideal) -> Result<Vec<Swept>, String> {
     let normals = scene.normals();
     let frame = crate::raster::frame(scene, &normals);
     let chain = crate::pipeline::mip_chain(&normals, scene.tex);
-    let mip: Vec<usize> = (0..FILTERS.len()).filter(|&k| FILTERS[k].0.front().mip()).collect();
+    let measured = ideal.shading.filters();
+    let mip: Vec<usize> = (0..FILTERS.len())
+        .filter(|&k| FILTERS[k].0.front().mip() && measured.iter().any(|f| f.0 == FILTERS[k].0))
+        .collect();
     let mut out = vec![];
     for bias in SWEEP {
         let biased = Scene { lod_bias: bias, ..scene.clone() };
         let at = Ideal {
+            shading: ideal.shading,
             rgb: ideal.rgb.clone(),
             lambda: ideal.lambda.clone(),
             at: ideal.at.clone(),
-            method: methods(&biased, &frame, &chain),
+            method: methods(&biased, &frame, &chain, ideal.shading),
         };
         let lines = measure_only(&biased, &at, &mip)?;
         let (mut hardware, mut method) = ([None; 4], [None; 4]);
@@ -200,14 +275,21 @@ pub struct Line {
     pub error: Vec<Option<f64>>,
 }
 
-/// Every filter of `FILTERS` on the scene (its gloss must be 0: the filters' pipelines are matte) against `ideal`.
+/// Every filter of the ideal's shading (`Shading::filters`: for the Cartesian one the scene's gloss must be 0, the
+/// filters' pipelines being matte) on the scene against `ideal`.
 pub fn measure(scene: &Scene, ideal: &Ideal) -> Result<Vec<Line>, String> {
-    measure_only(scene, ideal, &[0, 1, 2, 3])
+    let which: Vec<usize> = ideal
+        .shading
+        .filters()
+        .iter()
+        .map(|f| FILTERS.iter().position(|g| g.0 == f.0).expect("a filter of FILTERS"))
+        .collect();
+    measure_only(scene, ideal, &which)
 }
 
-/// The filters `FILTERS[k]` for each k of `which`, as `measure`.
+/// The filters `FILTERS[k]` for each k of `which` (through the ideal's shading's pipelines), as `measure`.
 pub fn measure_only(scene: &Scene, ideal: &Ideal, which: &[usize]) -> Result<Vec<Line>, String> {
-    if scene.conc != 0 {
+    if matches!(ideal.shading, Shading::Gloss(_)) && scene.conc != 0 {
         return Err(format!(
             "the minification table runs the matte pipelines: the scene's gloss is {}, not 0",
             scene.conc
@@ -215,12 +297,19 @@ pub fn measure_only(scene: &Scene, ideal: &Ideal, which: &[usize]) -> Result<Vec
     }
     let mut lines = vec![];
     for &i in which {
-        let (filter, name) = FILTERS[i];
+        let filter = FILTERS[i].0;
+        let name = ideal
+            .shading
+            .filters()
+            .iter()
+            .find(|f| f.0 == filter)
+            .map(|f| f.1)
+            .ok_or_else(|| format!("no pipeline filters {} under this shading", filter.name()))?;
         let row = pipelines::named(name).ok_or_else(|| format!("no pipeline {name}"))?;
         if !row.renders(scene) {
             return Err(format!("{name} cannot render this scene (the texture unit holds maps of side 1, 2, 4 … 128)"));
         }
-        let p: Box<dyn Pipeline> = build(row, scene, &Settings::default());
+        let p: Box<dyn Pipeline> = build(row, scene, &ideal.shading.settings());
         let prep = p.prepare(scene);
         let img = crate::render::model(p.model(), &prep);
         assert_eq!(img.outs.len(), ideal.rgb.len(), "{name}: the pipeline's pixels and the ideal's");

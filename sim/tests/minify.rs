@@ -45,3 +45,35 @@ fn each_row_of_the_sweep_is_the_measure_at_that_bias() {
         }
     }
 }
+
+/// A polar scene: the polar pipelines on the texture unit against an ideal lit as they are, max(0, N·L)^p at the
+/// scene's p = 4 (against the Cartesian ideal, N·L to the first power, their frames would be tens of LSB away);
+/// where λ plus the bias is below level 0, trilinear reads level 0 alone and its frame is bilinear's.
+#[test]
+fn a_polar_scene_measures_the_polar_pipelines_against_an_ideal_lit_as_they_are() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/torus_polar_trilinear.toml");
+    let spec = sim::scene_file::load(&path).unwrap();
+    let shading = minify::Shading::of(&spec);
+    assert_eq!(shading, minify::Shading::Polar { pw: 16, h: 1.0 });
+    let scene = &spec.scene;
+    let ideal = minify::ideal_shaded(scene, 2, shading);
+    let lines = minify::measure(scene, &ideal).unwrap();
+    assert_eq!(lines.iter().map(|l| l.pipeline).collect::<Vec<_>>(), ["polar_tex_bilinear", "polar_tex_trilinear"]);
+    let cartesian = minify::ideal_shaded(scene, 2, minify::Shading::Gloss(0));
+    let apart =
+        ideal.rgb.iter().zip(&cartesian.rgb).map(|(a, b)| (a[0] - b[0]).abs()).sum::<f64>() / ideal.rgb.len() as f64;
+    for l in &lines {
+        assert!(
+            l.all.mean() < 4.0 && 5.0 * l.all.mean() < apart,
+            "{}: {:.3}, the ideals {apart:.3} apart",
+            l.pipeline,
+            l.all.mean()
+        );
+    }
+    let level0: Vec<usize> = (0..ideal.at.len()).filter(|&k| ideal.lambda[k] + scene.lod_bias < -0.1).collect();
+    assert!(level0.len() > 1000, "{} pixels read level 0 alone", level0.len());
+    for k in level0 {
+        let at = ideal.at[k];
+        assert_eq!(lines[0].frame[at], lines[1].frame[at], "pixel {at}: λ {:.3}", ideal.lambda[k]);
+    }
+}
