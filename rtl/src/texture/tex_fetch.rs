@@ -206,14 +206,17 @@ crate::stream_block! {
         read_cap: LevelCap<L>,
         write_cap: LevelCap<L>,
         // stage 1: the level's side log2 (saturated to L), its base (U15) and whether the memory holds it, the
-        // coordinates modulo its side; the write's likewise
+        // coordinates modulo its side as the banks read them (the column bank column p reads, the row bank row q
+        // reads) and the parities of x0, x1, y0, y1; the write's likewise
         s1_m: DFF<Bits<4>>,
         s1_base: DFF<Bits<15>>,
         s1_held: DFF<Bit>,
         s1_wbase: DFF<Bits<15>>,
         s1_wheld: DFF<Bit>,
-        s1_x: [DFF<U8>; 2],
-        s1_y: [DFF<U8>; 2],
+        s1_cx: [DFF<U8>; 2],
+        s1_ry: [DFF<U8>; 2],
+        s1_px: [DFF<Bit>; 2],
+        s1_py: [DFF<Bit>; 2],
         s1_rd: DFF<Bit>,
         s1_we: DFF<Bit>,
         s1_wm: DFF<Bits<4>>,
@@ -260,8 +263,8 @@ crate::stream_block! {
         w_wm: Signal<Local, Bits<4>>,
         w_mask: Signal<Local, U8>,
         w_wmask: Signal<Local, U8>,
-        w_cx: [Signal<Local, U8>; 2],
-        w_ry: [Signal<Local, U8>; 2],
+        w_xm: [Signal<Local, U8>; 2],
+        w_ym: [Signal<Local, U8>; 2],
         w_c15: [Signal<Local, Bits<15>>; 2],
         w_r15: [Signal<Local, Bits<15>>; 2],
         w_rm: [Signal<Local, Bits<15>>; 2],
@@ -288,8 +291,10 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         );
         clock!(self, clock, valid);
         for n in 0..2 {
-            self.s1_x[n].clock.next = self.clock.val();
-            self.s1_y[n].clock.next = self.clock.val();
+            self.s1_cx[n].clock.next = self.clock.val();
+            self.s1_ry[n].clock.next = self.clock.val();
+            self.s1_px[n].clock.next = self.clock.val();
+            self.s1_py[n].clock.next = self.clock.val();
             self.s2_px[n].clock.next = self.clock.val();
             self.s2_py[n].clock.next = self.clock.val();
             self.s3_px[n].clock.next = self.clock.val();
@@ -329,10 +334,34 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.write_base.m.next = self.w_log2.val();
         self.s1_wbase.d.next = self.write_base.base.val(); // ≤ 5,462: U15
         self.s1_wheld.d.next = self.write_base.held.val();
-        self.s1_x[0].d.next = self.x0.val() & self.w_mask.val(); // modulo 2^m
-        self.s1_x[1].d.next = self.x1.val() & self.w_mask.val();
-        self.s1_y[0].d.next = self.y0.val() & self.w_mask.val();
-        self.s1_y[1].d.next = self.y1.val() & self.w_mask.val();
+        self.w_xm[0].next = self.x0.val() & self.w_mask.val(); // modulo 2^m
+        self.w_xm[1].next = self.x1.val() & self.w_mask.val();
+        self.w_ym[0].next = self.y0.val() & self.w_mask.val();
+        self.w_ym[1].next = self.y1.val() & self.w_mask.val();
+        // bank column p reads x0 if x0 has parity p, else x1; bank row q likewise. The choice is made on x0's own
+        // bit 0: where the mask keeps bit 0 (m ≥ 1) it is the parity of x0 modulo 2^m, and where it does not
+        // (m = 0) both columns are 0, so either order is right. Each bit one LUT4 (x0, x1, the mask's bit, x0's
+        // bit 0). With the choice in stage 2, on the stage-1 registers, its select fanned out to every bank's
+        // column: cart_tex_nearest_mip_hemi_oct_matte_colour's path ran from it to the colour fetch's s2_col
+        // (2.06 ns of logic, 3.51 ns of routing)
+        if self.x0.val().get_bit(0) {
+            self.s1_cx[0].d.next = self.w_xm[1].val();
+            self.s1_cx[1].d.next = self.w_xm[0].val();
+        } else {
+            self.s1_cx[0].d.next = self.w_xm[0].val();
+            self.s1_cx[1].d.next = self.w_xm[1].val();
+        }
+        if self.y0.val().get_bit(0) {
+            self.s1_ry[0].d.next = self.w_ym[1].val();
+            self.s1_ry[1].d.next = self.w_ym[0].val();
+        } else {
+            self.s1_ry[0].d.next = self.w_ym[0].val();
+            self.s1_ry[1].d.next = self.w_ym[1].val();
+        }
+        for n in 0..2 {
+            self.s1_px[n].d.next = self.w_xm[n].val().get_bit(0);
+            self.s1_py[n].d.next = self.w_ym[n].val().get_bit(0);
+        }
         self.s1_rd.d.next = !self.we.val().any();
         self.s1_we.d.next = self.we.val().any() & self.valid_in.val();
         self.s1_wm.d.next = self.w_wm.val();
@@ -340,27 +369,12 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
         self.s1_wy.d.next = self.wy.val() & self.w_wmask.val();
         self.s1_wdata.d.next = self.wdata.val();
 
-        // stage 2: bank column p reads x0 if x0 has parity p, else x1; bank row q likewise
-        if self.s1_x[0].q.val().get_bit(0) {
-            self.w_cx[0].next = self.s1_x[1].q.val();
-            self.w_cx[1].next = self.s1_x[0].q.val();
-        } else {
-            self.w_cx[0].next = self.s1_x[0].q.val();
-            self.w_cx[1].next = self.s1_x[1].q.val();
-        }
-        if self.s1_y[0].q.val().get_bit(0) {
-            self.w_ry[0].next = self.s1_y[1].q.val();
-            self.w_ry[1].next = self.s1_y[0].q.val();
-        } else {
-            self.w_ry[0].next = self.s1_y[0].q.val();
-            self.w_ry[1].next = self.s1_y[1].q.val();
-        }
-        // the word column x >> 1 and row y >> 1 (U7 in 15, a slice widened; written out: the loop index does not
+        // stage 2: the word column x >> 1 and row y >> 1 (U7 in 15, a slice widened; written out: the loop index does not
         // reach into a function's argument under #[hdl_gen])
-        self.w_c15[0].next = bit_cast::<15, 7>(self.w_cx[0].val().get_bits::<7>(1));
-        self.w_c15[1].next = bit_cast::<15, 7>(self.w_cx[1].val().get_bits::<7>(1));
-        self.w_r15[0].next = bit_cast::<15, 7>(self.w_ry[0].val().get_bits::<7>(1));
-        self.w_r15[1].next = bit_cast::<15, 7>(self.w_ry[1].val().get_bits::<7>(1));
+        self.w_c15[0].next = bit_cast::<15, 7>(self.s1_cx[0].q.val().get_bits::<7>(1));
+        self.w_c15[1].next = bit_cast::<15, 7>(self.s1_cx[1].q.val().get_bits::<7>(1));
+        self.w_r15[0].next = bit_cast::<15, 7>(self.s1_ry[0].q.val().get_bits::<7>(1));
+        self.w_r15[1].next = bit_cast::<15, 7>(self.s1_ry[1].q.val().get_bits::<7>(1));
         self.w_base.next = self.s1_base.q.val();
         for n in 0..2 {
             self.w_bc[n].next = self.w_base.val() + self.w_c15[n].val(); // ≤ 5,462 + 127: U15, exact
@@ -369,10 +383,10 @@ impl<const P: usize, const A: usize, const L: usize> Logic for TexFetch<P, A, L>
             self.w_rm[n].next = self.w_r15[n].val() << self.s1_m.q.val();
             self.w_row[n].next = self.w_rm[n].val() >> 1; // U14, exact
         }
-        self.s2_px[0].d.next = self.s1_x[0].q.val().get_bit(0);
-        self.s2_px[1].d.next = self.s1_x[1].q.val().get_bit(0);
-        self.s2_py[0].d.next = self.s1_y[0].q.val().get_bit(0);
-        self.s2_py[1].d.next = self.s1_y[1].q.val().get_bit(0);
+        for n in 0..2 {
+            self.s2_px[n].d.next = self.s1_px[n].q.val();
+            self.s2_py[n].d.next = self.s1_py[n].q.val();
+        }
         self.s2_rd.d.next = self.s1_rd.q.val() & self.s1_held.q.val(); // a level it does not hold reads as zeros
 
         // the write: bank (x mod 2) + 2·(y mod 2), at base + (y >> 1)·2^(m−1) + (x >> 1)
