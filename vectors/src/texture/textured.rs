@@ -191,7 +191,9 @@ impl Sweep {
 /// the loaded chain (its 1 × 1 level written back), for the map sides `sweep` names, both wraps and both ends of
 /// each axis, the positions at the seam and the clamp edge (the first and last texel's centres and ends, a step
 /// either side); with a MIP filter, derivatives that put λ below 0, at each level, half way and past the last
-/// level, zero and the largest.
+/// level, zero and the largest; a write into the level being read followed at once by a read of it, and a read
+/// followed at once by a write of its texel and the read again (the map rewritten under a read in flight); a polar
+/// host's R across its wrap at every level (`r_wrap_seams`).
 pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port], sweep: Sweep) -> Vec<Vec<i64>> {
     let at = At::of(ports, filter.mip());
     let hosts = (host.hard_cases)();
@@ -325,6 +327,13 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port], sweep: Sweep
             out.push(v.clone());
         }
     }
+    // the map rewritten while a read of it is still in the pipeline: texel (1, 2) of the side-4 map read at level
+    // 0, written at once, and read again; the first read gives the texel it had, the second the new one
+    let mut v = base.clone();
+    front::put_read(&mut v, &at, [256 + 128, 512 + 128], 2, [true, true], [256, 0, 0, 256]);
+    out.push(v.clone());
+    out.push(write(2, 1, 2, 0x1c_e3));
+    out.push(v);
     if is_polar(host) {
         out.extend(r_wrap_seams(filter, &at, &base).into_iter().flatten());
     }
