@@ -104,6 +104,8 @@ pub const WAIVED: &[Waived] = &[
     w("Blend", "w_t", Modular, "k + x_u·α modulo 2^16 = 255·d + 128 + (src − d)·α = src·α + d·(255 − α) + 128, \
         128 ..= 65,153"),
     w("Blend", "w_u", Bound, "t + (t >> 8) ≤ 65,153 + 254 = 65,407"),
+    w("Lod", "w_lxl", Split, "L_x's low 12 bits, compared alone: its top 13 bits are compared apart (w_lxh), and the halves joined in stage 4b"),
+    w("Lod", "w_lyl", Split, "as w_lxl, for L_y"),
     w("Lod", "w_grp", Split, "five bits of m, a slice at 5g (g = 0..4, the loop's index)"),
     w("Lod", "s5c_mc.d", Bound, "m << 5·(4 − g) where groups 4 .. g + 1 are zero, so m < 2^(5g + 5) and the shift loses no one"),
     w("Lod", "s5c_e.d", Modular, "16 − 5·(4 − g) − lp in 6-bit two's complement, lp ≤ 4 the leading one's place: −8 ..= 16 \

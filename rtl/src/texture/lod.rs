@@ -81,8 +81,12 @@ crate::stream_block! {
         // stage 3: L_x and L_y, Uq17.8
         s3_lx: DFF<Bits<25>>,
         s3_ly: DFF<Bits<25>>,
-        // stage 4: whether L_x is the larger, and both
-        s4_gt: DFF<Bit>,
+        // stage 4: the comparison of L_x and L_y in two halves (the top 13 bits: greater, equal; the low 12:
+        // greater), and both. As one 25-bit compare it was cart_tex_trilinear_colour's critical path (164.9 MHz:
+        // 2.69 ns of logic, 3.38 ns of routing); stage 4b joins the halves in the select of its choice
+        s4_gth: DFF<Bit>,
+        s4_eqh: DFF<Bit>,
+        s4_gtl: DFF<Bit>,
         s4_lx: DFF<Bits<25>>,
         s4_ly: DFF<Bits<25>>,
         // stage 4b: m = max(L_x, L_y) ≈ ρ²·2^8
@@ -130,6 +134,11 @@ crate::stream_block! {
         b_dly: Delay<Sq3_8, 11>, // the bias beside the stages up to the table's address
         valid: Delay<Bit, LATENCY>, // the valid flag, beside the stages
         w_mag: [Signal<Local, Bits<17>>; 4],
+        w_lxh: Signal<Local, Bits<13>>,
+        w_lyh: Signal<Local, Bits<13>>,
+        w_lxl: Signal<Local, Bits<12>>,
+        w_lyl: Signal<Local, Bits<12>>,
+        w_gt: Signal<Local, Bit>,
         w_sq: [Signal<Local, Bits<32>>; 4],
         w_grp: [Signal<Local, Bits<5>>; 5],
         w_lp6: Signal<Local, Bits<6>>,
@@ -152,9 +161,9 @@ impl Logic for Lod {
     #[hdl_gen]
     fn update(&mut self) {
         dff_setup!(
-            self, clock, s3_lx, s3_ly, s4_gt, s4_lx, s4_ly, s4b_m, s5_m, s5c_mc, s5c_fine, s5c_e, s5c_big, s6_addr,
-            s6_e, s6_e1, s6_big, s7_t, s7_eb, s7_ebh, s7_big, s7r_t, s7r_eb, s7r_ebh, s7r_big, s8_l, s8_lh, s8_big,
-            s9_level, s9_frac, s9_near
+            self, clock, s3_lx, s3_ly, s4_gth, s4_eqh, s4_gtl, s4_lx, s4_ly, s4b_m, s5_m, s5c_mc, s5c_fine, s5c_e,
+            s5c_big, s6_addr, s6_e, s6_e1, s6_big, s7_t, s7_eb, s7_ebh, s7_big, s7r_t, s7r_eb, s7r_ebh, s7r_big, s8_l,
+            s8_lh, s8_big, s9_level, s9_frac, s9_near
         );
         clock!(self, clock, n_dly, b_dly, valid);
         self.valid.d.next = self.valid_in.val();
@@ -202,12 +211,20 @@ impl Logic for Lod {
         // stage 3: L_x = q(u_x) + q(v_x), L_y = q(u_y) + q(v_y): U24 + U24 → U25, exact
         self.s3_lx.d.next = bit_cast::<25, 24>(self.s2b_q[0].q.val()) + bit_cast::<25, 24>(self.s2b_q[1].q.val());
         self.s3_ly.d.next = bit_cast::<25, 24>(self.s2b_q[2].q.val()) + bit_cast::<25, 24>(self.s2b_q[3].q.val());
-        // stage 4: which edge is the longer
-        self.s4_gt.d.next = self.s3_lx.q.val() > self.s3_ly.q.val();
+        // stage 4: which edge is the longer, half by half: L_x > L_y if its top 13 bits are greater, or equal and
+        // its low 12 greater (slices, each compared as a whole signal)
+        self.w_lxh.next = self.s3_lx.q.val().get_bits::<13>(12);
+        self.w_lyh.next = self.s3_ly.q.val().get_bits::<13>(12);
+        self.w_lxl.next = self.s3_lx.q.val().get_bits::<12>(0);
+        self.w_lyl.next = self.s3_ly.q.val().get_bits::<12>(0);
+        self.s4_gth.d.next = self.w_lxh.val() > self.w_lyh.val();
+        self.s4_eqh.d.next = self.w_lxh.val() == self.w_lyh.val();
+        self.s4_gtl.d.next = self.w_lxl.val() > self.w_lyl.val();
         self.s4_lx.d.next = self.s3_lx.q.val();
         self.s4_ly.d.next = self.s3_ly.q.val();
         // stage 4b: the larger, U25
-        if self.s4_gt.q.val() {
+        self.w_gt.next = self.s4_gth.q.val() | (self.s4_eqh.q.val() & self.s4_gtl.q.val()); // L_x > L_y
+        if self.w_gt.val() {
             self.s4b_m.d.next = self.s4_lx.q.val();
         } else {
             self.s4b_m.d.next = self.s4_ly.q.val();
