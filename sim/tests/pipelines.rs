@@ -96,10 +96,10 @@ fn expected(
         let served = WITH_COLOUR.contains(&(encoding, per_surface, filter, gloss)) && fetch != Some("host");
         return served.then(|| format!("cart_tex_{filter}{surface}{hemi}{matte}_colour"));
     }
-    // polar texels (the seed's scale) on the texture unit: asked for, or a filter only the unit has; the host-fed
-    // polar pipelines with fetch = "host" or nothing said
+    // polar texels (the seed's scale) on the texture unit unless fetch = "host" (the scenes' map, 16 texels, is one
+    // the unit holds); the host-fed polar pipelines with fetch = "host", and the Dreamcast scale's whatever is said
     let polar = matches!(encoding, "polar" | "polar_dc255");
-    if encoding == "polar" && (fetch == Some("unit") || (fetch.is_none() && filter == "trilinear")) {
+    if encoding == "polar" && fetch != Some("host") {
         return matches!(filter, "bilinear" | "trilinear").then(|| format!("polar_tex_{filter}"));
     }
     let host_polar = polar && fetch == Some("host");
