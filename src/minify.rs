@@ -1,9 +1,9 @@
 //! `bumprtl minify [SCENE.toml] --out DIR`: the texture unit's filters (nearest, the nearest texel of the nearest
 //! MIP level, bilinear, trilinear; for a polar scene the polar pipelines' bilinear and trilinear, lit as they are)
-//! on one scene, the demo's torus by default, against a supersampled f64 ideal (`sim::minify`): the colour error over every pixel and over the minified ones, as a table (DIR/minify.md, and
-//! printed), and as pictures: the ideal, and each filter's frame beside its error heat map on one scale
-//! (DIR/minify_<filter>.png); then the MIP filters over a sweep of LOD biases. The scene is read (or refused)
-//! before anything is written.
+//! on one scene, the demo's torus by default, against a supersampled f64 ideal (`sim::minify`): the colour error
+//! over every pixel and over the minified ones, as a table (DIR/minify.md, and printed), and as pictures: the
+//! ideal, and each filter's frame beside its error heat map on one scale (DIR/minify_<filter>.png); then the MIP
+//! filters over a sweep of LOD biases. The scene is read (or refused) before anything is written.
 
 use sim::minify::{self, Line, MINIFIED};
 use sim::render::{heat, write_png, BACKGROUND};

@@ -58,10 +58,7 @@ impl Shading {
     pub fn alpha(self, n: [f64; 3], l: [f64; 3]) -> f64 {
         match self {
             Shading::Gloss(conc) => gloss_shade(conc, n, l),
-            Shading::Polar { pw, h } => {
-                let d = (1.0 - h) + h * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]);
-                255.0 * d.clamp(0.0, 1.0).powf(pw as f64 / 4.0)
-            }
+            Shading::Polar { pw, h } => crate::pipeline::polar_ideal(pw, h, n, l),
         }
     }
 

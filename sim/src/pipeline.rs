@@ -591,12 +591,18 @@ impl Polar {
             (x[input::dst_r], x[input::dst_g], x[input::dst_b]) = (scene.dst[0], scene.dst[1], scene.dst[2]);
             p.inputs.push(x);
             let (nrm, ld) = (px.normal, px.light);
-            let d = (1.0 - self.h) + self.h * (nrm[0] * ld[0] + nrm[1] * ld[1] + nrm[2] * ld[2]);
-            let a = 255.0 * d.clamp(0.0, 1.0).powf(self.pw as f64 / 4.0);
+            let a = polar_ideal(self.pw, self.h, nrm, ld);
             p.ideal.push(Ideal { shade: a, rgb: scene.blend_ideal(a), normal: nrm, light: ld });
         }
         PolarSetup { prepared: p, light, surface_dir, straddles }
     }
+}
+
+/// The polar pipelines' ideal shade of normal n under light l: 255·max(0, (1 − h) + h·N·L)^p, p = pw / 4 (clamped
+/// to 1 above as the shade is).
+pub fn polar_ideal(pw: i64, h: f64, n: [f64; 3], l: [f64; 3]) -> f64 {
+    let d = (1.0 - h) + h * (n[0] * l[0] + n[1] * l[1] + n[2] * l[2]);
+    255.0 * d.clamp(0.0, 1.0).powf(pw as f64 / 4.0)
 }
 
 /// The polar pipelines' light and power in words: the surface's one light as encoded (at the quad's centre) and p.
