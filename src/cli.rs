@@ -224,6 +224,32 @@ enum Cmd {
         #[arg(long)]
         merge: bool,
     },
+    /// The width report's claims proved by a solver on the exported Verilog (yosys-smtbmc with z3, k-induction past
+    /// the latency): each step's exact value inside its declared format, each signal inside its proven range; a table
+    /// of proven, refuted (with the trace's inputs) and not tried (with why), and the wrap list's argued entries
+    Prove {
+        /// the unit (see `bumprtl vectors --help` for the names); with --all, every unit
+        #[arg(required_unless_present = "all")]
+        unit: Option<String>,
+        #[arg(long, conflicts_with = "unit")]
+        all: bool,
+        /// working folder (the harness, yosys's script, the SMT-LIB 2 and the traces, under DIR/<unit>/)
+        #[arg(long, default_value = "target/prove")]
+        dir: PathBuf,
+        /// also claim this signal's range one bit narrower than the interval proof's (by its VCD name, `uut.…`):
+        /// the solver should refute it
+        #[arg(long)]
+        narrow: Option<String>,
+        /// each solver run's time limit, seconds
+        #[arg(long, default_value_t = 600)]
+        limit: u64,
+        /// only the steps' exact values (no range claims): the wrap list's questions
+        #[arg(long)]
+        exact_only: bool,
+        /// also write the table as Markdown
+        #[arg(long)]
+        md: Option<PathBuf>,
+    },
     /// The hard cases the patents and the paper warn about, unit by unit: what they ask, what the rtl does
     /// (rust-hdl, held to the model), pass or fail, as a Markdown table; fails if any row fails
     Hardcases,
@@ -379,6 +405,10 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::Minify { scene, out, samples, lod_bias } => crate::minify::run(scene.as_deref(), &out, samples, lod_bias)?,
         Cmd::Hardcases => crate::unit_commands::hardcases()?,
+        Cmd::Prove { unit, all, dir, narrow, limit, exact_only, md } => {
+            let o = sim::prove::Options { narrow, limit: Some(std::time::Duration::from_secs(limit)), exact_only };
+            crate::prove::run(unit, all, &dir, &o, md.as_deref())?
+        }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())
         }

@@ -9,6 +9,7 @@ mod hardware;
 mod minify;
 mod output;
 mod palette_table;
+mod prove;
 mod quantize;
 mod render;
 mod report;

@@ -10,6 +10,7 @@ pub mod peer;
 pub mod pipeline;
 pub mod pipelines;
 pub mod prepared;
+pub mod prove;
 pub mod raster;
 pub mod render;
 pub mod rtl_paths;

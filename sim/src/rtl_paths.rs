@@ -31,6 +31,8 @@ pub trait RtlBlock: Sync {
     fn analyse(&self, m: &UnitModel) -> widths::Analysis;
     /// `inputs` through rust-hdl, every signal probed every clock; `tick` gets the vectors done.
     fn seen(&self, m: &UnitModel, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> widths::Ranges;
+    /// The exported Verilog with the width report's claims as assertions for a solver (`widths::formal`).
+    fn harness(&self, r: &widths::formal::Request) -> Result<widths::formal::Harness, String>;
 }
 
 /// A unit's block as every path runs it.
@@ -172,6 +174,9 @@ impl<U: StreamUnit + Send + 'static> RtlBlock for Rtl<U> {
     }
     fn seen(&self, m: &UnitModel, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> widths::Ranges {
         widths::seen_ticking::<U>(m, inputs, tick)
+    }
+    fn harness(&self, r: &widths::formal::Request) -> Result<widths::formal::Harness, String> {
+        widths::formal::harness(&U::build(), r)
     }
 }
 

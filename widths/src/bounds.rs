@@ -268,7 +268,7 @@ fn binary(a: V, op: &VerilogOp, b: V) -> V {
 }
 
 /// A literal as rust-hdl prints it: `12'h7ff`, `5'b10011`.
-fn literal(text: &str) -> Option<(i128, u32)> {
+pub(crate) fn literal(text: &str) -> Option<(i128, u32)> {
     let (bits, rest) = text.split_once('\'')?;
     let bits: u32 = bits.parse().ok()?;
     let v = match rest.as_bytes().first()? {
@@ -281,7 +281,7 @@ fn literal(text: &str) -> Option<(i128, u32)> {
 }
 
 /// A literal's value, if the expression is one.
-fn literal_value(e: &E) -> Option<i128> {
+pub(crate) fn literal_value(e: &E) -> Option<i128> {
     match e {
         E::Literal(l) => literal(&l.to_string()).map(|x| x.0),
         E::Paren(x) => literal_value(x),
@@ -290,7 +290,7 @@ fn literal_value(e: &E) -> Option<i128> {
 }
 
 /// What a module is, to the analysis.
-enum Code {
+pub(crate) enum Code {
     Comb(VerilogBlock),
     Dff,
     Rom(Vec<i128>, bool),
@@ -298,17 +298,17 @@ enum Code {
     Other,
 }
 
-struct Module {
-    path: String,
-    code: Code,
+pub(crate) struct Module {
+    pub(crate) path: String,
+    pub(crate) code: Code,
 }
 
 /// Walks the block tree: every module's code, every signal's width, the constants' values.
 #[derive(Default)]
-struct Collect {
+pub(crate) struct Collect {
     path: Vec<String>,
-    modules: Vec<Module>,
-    widths: HashMap<String, u32>,
+    pub(crate) modules: Vec<Module>,
+    pub(crate) widths: HashMap<String, u32>,
     consts: HashMap<String, V>,
 }
 
@@ -365,7 +365,7 @@ impl Probe for Collect {
 }
 
 /// An array index as the hdl writes it (`4*i+1`, `i - 1`): sums of products of numbers and loop variables.
-fn index_value(text: &str, loops: &[(String, i128)]) -> Option<i128> {
+pub(crate) fn index_value(text: &str, loops: &[(String, i128)]) -> Option<i128> {
     let spaced = text.replace('-', " - ").replace('+', " + ").replace('*', " * ");
     let (mut total, mut term, mut sign) = (0i128, 1i128, 1i128);
     let mut expect_value = true;
@@ -389,7 +389,7 @@ fn index_value(text: &str, loops: &[(String, i128)]) -> Option<i128> {
 
 /// A module's local signal name as the hdl writes it (`s1_nm[i]$d$next`, loop indices bound) → the probe's name
 /// under `path` (`uut.dot.s1_nm$0.d`).
-fn full_name(path: &str, local: &str, loops: &[(String, i128)]) -> String {
+pub(crate) fn full_name(path: &str, local: &str, loops: &[(String, i128)]) -> String {
     let local = local.strip_suffix("$next").unwrap_or(local);
     // array indices: `[0]`, `[i]`, `[i-1]`: sums and differences of loop variables and numbers
     let mut s = String::with_capacity(local.len());

@@ -11,6 +11,7 @@
 //! with the clock low and the slot settled (every register's d is then what the edge latches).
 
 pub mod bounds;
+pub mod formal;
 pub mod wraps;
 
 use rtl::prim::declared::{Declaration, Declared};
