@@ -97,6 +97,13 @@ enum Cmd {
         /// also write the table as CSV
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// also put each claim to the solver (as `bumprtl prove`, working under target/prove/<unit>/): a column
+        /// of proven, refuted or not tried, and the verdict under each wrap list entry
+        #[arg(long, conflicts_with = "budget")]
+        prove: bool,
+        /// with --prove: each solver run's time limit, seconds
+        #[arg(long, default_value_t = 600, requires = "prove")]
+        limit: u64,
         /// instead of the signals: sweep the unit's width parameters (normalise, sincos, bilinear, power), print
         /// error against cost with its Pareto set, and mark the cheapest setting whose max error is within this
         /// budget (Sq1.10 LSB of the worst component for normalise, 8-bit LSB for the others)
@@ -228,10 +235,11 @@ enum Cmd {
     /// the latency): each step's exact value inside its declared format, each signal inside its proven range; a table
     /// of proven, refuted (with the trace's inputs) and not tried (with why), and the wrap list's argued entries
     Prove {
-        /// the unit (see `bumprtl vectors --help` for the names); with --all, every unit
+        /// the units (their names as `bumprtl vectors` takes them)
         #[arg(required_unless_present = "all")]
-        unit: Option<String>,
-        #[arg(long, conflicts_with = "unit")]
+        units: Vec<String>,
+        /// every unit of the table, pipelines included (hours: each solver run up to --limit)
+        #[arg(long, conflicts_with = "units")]
         all: bool,
         /// working folder (the harness, yosys's script, the SMT-LIB 2 and the traces, under DIR/<unit>/)
         #[arg(long, default_value = "target/prove")]
@@ -365,7 +373,13 @@ pub fn main() -> Result<(), String> {
         Cmd::Widths { unit: name, budget: Some(b), target, dir, .. } => {
             crate::unit_commands::widths_budget(name, b, target, dir)?
         }
-        Cmd::Widths { unit: name, count, seed, csv, .. } => crate::unit_commands::widths(name, count, seed, csv)?,
+        Cmd::Widths { unit: name, count, seed, csv, prove, limit, .. } => {
+            let solver = prove.then(|| sim::prove::Options {
+                limit: Some(std::time::Duration::from_secs(limit)),
+                ..Default::default()
+            });
+            crate::unit_commands::widths(name, count, seed, csv, solver)?
+        }
         Cmd::Synth { unit: name, scene, target, dir, freq, seeds } => {
             crate::unit_commands::synth(name, scene, target, dir, freq, seeds)?
         }
@@ -405,9 +419,9 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::Minify { scene, out, samples, lod_bias } => crate::minify::run(scene.as_deref(), &out, samples, lod_bias)?,
         Cmd::Hardcases => crate::unit_commands::hardcases()?,
-        Cmd::Prove { unit, all, dir, narrow, limit, exact_only, md } => {
+        Cmd::Prove { units, all, dir, narrow, limit, exact_only, md } => {
             let o = sim::prove::Options { narrow, limit: Some(std::time::Duration::from_secs(limit)), exact_only };
-            crate::prove::run(unit, all, &dir, &o, md.as_deref())?
+            crate::prove::run(&units, all, &dir, &o, md.as_deref())?
         }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

@@ -27,7 +27,7 @@ fn table(p: &Proved) -> String {
     let mut rows: Vec<&sim::prove::Outcome> = p.outcomes.iter().collect();
     rows.sort_by_key(|o| (o.status == Status::Proven, o.listed.is_none(), o.prop.signal.clone()));
     for o in rows {
-        let listed = o.listed.map_or(String::new(), |k| format!("{} ({})", k.flag(), k.name()));
+        let listed = o.listed.map_or(String::new(), |w| format!("{} ({})", w.kind.flag(), w.kind.name()));
         let why = match &o.status {
             Status::Refuted(trace) => trace.clone(),
             Status::NotTried(why) => why.clone(),
@@ -41,7 +41,7 @@ fn table(p: &Proved) -> String {
             o.seconds
         ));
     }
-    let argued: Vec<_> = p.outcomes.iter().filter(|o| o.listed == Some(WrapKind::Bound)).collect();
+    let argued: Vec<_> = p.outcomes.iter().filter(|o| o.listed.map(|w| w.kind) == Some(WrapKind::Bound)).collect();
     t.push_str(&format!(
         "\nthe wrap list's argued (`a`) entries here: {}, {} proven by the solver, {} refuted, {} not tried\n",
         argued.len(),
@@ -58,7 +58,7 @@ fn table(p: &Proved) -> String {
     t
 }
 
-pub fn run(unit: Option<String>, all: bool, dir: &Path, o: &Options, md: Option<&Path>) -> Result<(), String> {
+pub fn run(names: &[String], all: bool, dir: &Path, o: &Options, md: Option<&Path>) -> Result<(), String> {
     if let Some(f) = md {
         crate::output::writable_file(f)?;
     }
@@ -66,9 +66,11 @@ pub fn run(unit: Option<String>, all: bool, dir: &Path, o: &Options, md: Option<
     let units: Vec<&'static sim::units::Unit> = if all {
         sim::units::UNITS.iter().collect()
     } else {
-        vec![sim::units::unit(unit.as_deref().unwrap_or_default())?]
+        names.iter().map(|n| sim::units::unit(n)).collect::<Result<_, _>>()?
     };
+    let several = units.len() > 1;
     let mut text = String::new();
+    let mut proved: Vec<Proved> = vec![];
     let mut summary =
         String::from("| unit | claims | proven | refuted | not tried | runs | s |\n|---|---|---|---|---|---|---|\n");
     for u in units {
@@ -88,13 +90,39 @@ pub fn run(unit: Option<String>, all: bool, dir: &Path, o: &Options, md: Option<
         ));
         text.push_str(&t);
         text.push('\n');
+        proved.push(p);
     }
-    if all {
-        println!("{summary}");
-        text.insert_str(0, &format!("{summary}\n"));
+    if several {
+        let entries = argued_entries(&proved);
+        println!("{summary}\n{entries}");
+        text.insert_str(0, &format!("{summary}\n{entries}\n"));
     }
     if let Some(f) = md {
         synth::export::write_atomic(f, text.as_bytes())?;
     }
     Ok(())
+}
+
+/// Every argued (`a`) entry of the wrap list and what the solver made of it in the units run: refuted where any
+/// unit refutes the step, proven where one proves it, else not tried or not reached (no unit run holds the block).
+fn argued_entries(proved: &[Proved]) -> String {
+    let mut t = String::from("| block | signal | solver | where |\n|---|---|---|---|\n");
+    let (mut n, mut counts) = (0, std::collections::BTreeMap::<&str, usize>::new());
+    for w in widths::wraps::WAIVED.iter().filter(|w| w.kind == WrapKind::Bound) {
+        let at: Vec<(&str, &sim::prove::Outcome)> = proved
+            .iter()
+            .flat_map(|p| p.outcomes.iter().map(move |o| (p.unit, o)))
+            .filter(|(_, o)| o.listed.is_some_and(|l| std::ptr::eq(l, w)))
+            .collect();
+        let pick = |word: &str| at.iter().find(|(_, o)| o.status.word() == word);
+        let (word, place) = match pick("refuted").or_else(|| pick("proven")).or_else(|| pick("not tried")) {
+            Some((u, o)) => (o.status.word(), u.to_string()),
+            None => ("not reached", String::new()),
+        };
+        n += 1;
+        *counts.entry(word).or_default() += 1;
+        t.push_str(&format!("| {} | {} | {word} | {place} |\n", w.block, w.signal));
+    }
+    let c: Vec<String> = counts.iter().map(|(k, v)| format!("{v} {k}")).collect();
+    format!("the wrap list's {n} argued entries: {}\n\n{t}", c.join(", "))
 }

@@ -121,12 +121,18 @@ pub fn widths_budget(name: String, b: f64, target: String, dir: PathBuf) -> Resu
 }
 
 /// Every signal of a unit's rtl block: its format and the range it takes.
-pub fn widths(name: String, count: usize, seed: u64, csv: Option<PathBuf>) -> Result<(), String> {
+pub fn widths(
+    name: String,
+    count: usize,
+    seed: u64,
+    csv: Option<PathBuf>,
+    solver: Option<sim::prove::Options>,
+) -> Result<(), String> {
     let unit = sim::units::unit(&name)?;
     if let Some(c) = &csv {
         crate::output::writable_file(c)?; // before the minutes of simulation
     }
-    crate::widths::run(unit, count, seed, csv.as_deref())?;
+    crate::widths::run(unit, count, seed, csv.as_deref(), solver.as_ref())?;
     Ok(())
 }
 

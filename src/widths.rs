@@ -23,6 +23,28 @@ pub struct Row {
     pub wrap: Option<(i128, i128)>,
     /// that step's entry in `widths::wraps` (deliberate, or argued in range), if it is listed
     pub listed: Option<&'static Waived>,
+    /// the solver's verdict on the signal's claims (its range, the exact value of each step that writes it), with
+    /// the refuting trace or why not tried; None where it was not asked or the signal has no claim
+    pub solver: Option<(&'static str, String)>,
+}
+
+/// The solver's verdict on one signal's claims: refuted if any is, proven if all are, else not tried.
+pub fn verdict(p: &sim::prove::Proved, signal: &str) -> Option<(&'static str, String)> {
+    use sim::prove::Status;
+    let mine: Vec<&sim::prove::Outcome> = p.outcomes.iter().filter(|o| o.prop.signal == signal).collect();
+    if mine.is_empty() {
+        return None;
+    }
+    let claims = |o: &sim::prove::Outcome| format!("{} {} .. {}", o.prop.kind.name(), o.prop.lo, o.prop.hi);
+    if let Some(o) = mine.iter().find(|o| matches!(o.status, Status::Refuted(_))) {
+        let Status::Refuted(trace) = &o.status else { unreachable!() };
+        return Some(("refuted", format!("{}: {trace}", claims(o))));
+    }
+    if let Some(o) = mine.iter().find(|o| matches!(o.status, Status::NotTried(_))) {
+        let Status::NotTried(why) = &o.status else { unreachable!() };
+        return Some(("not tried", format!("{}: {why}", claims(o))));
+    }
+    Some(("proven", mine.iter().map(|o| claims(o)).collect::<Vec<_>>().join("; ")))
 }
 
 impl Row {
@@ -97,6 +119,7 @@ pub fn measure(unit: &sim::units::Unit, count: usize, seed: u64) -> Result<Measu
                 }
             },
             name: s.name.clone(),
+            solver: None,
             q: fmt.q(),
             format: fmt.name,
             bits: fmt.bits,
@@ -110,10 +133,10 @@ pub fn measure(unit: &sim::units::Unit, count: usize, seed: u64) -> Result<Measu
 }
 
 pub fn csv(rows: &[Row]) -> String {
-    let mut t = String::from("signal,format,q,bits,signed,seen_min,seen_max,bits_needed,spare,unused_flag,proven_min,proven_max,proven_bits_needed,proven_spare,may_wrap,exact_min,exact_max,listed_as\n");
+    let mut t = String::from("signal,format,q,bits,signed,seen_min,seen_max,bits_needed,spare,unused_flag,proven_min,proven_max,proven_bits_needed,proven_spare,may_wrap,exact_min,exact_max,listed_as,solver\n");
     for r in rows {
         t.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
             r.name,
             r.format.replace(',', ";"),
             r.q,
@@ -131,17 +154,37 @@ pub fn csv(rows: &[Row]) -> String {
             r.wrap.is_some() as u8,
             r.wrap.map(|w| w.0.to_string()).unwrap_or_default(),
             r.wrap.map(|w| w.1.to_string()).unwrap_or_default(),
-            r.wrap.and(r.listed).map(|l| l.kind.name()).unwrap_or_default()
+            r.wrap.and(r.listed).map(|l| l.kind.name()).unwrap_or_default(),
+            r.solver.as_ref().map_or("", |s| s.0)
         ));
     }
     t
 }
 
-pub fn run(unit: &sim::units::Unit, count: usize, seed: u64, csv_out: Option<&std::path::Path>) -> Result<(), String> {
+pub fn run(
+    unit: &sim::units::Unit,
+    count: usize,
+    seed: u64,
+    csv_out: Option<&std::path::Path>,
+    solver: Option<&sim::prove::Options>,
+) -> Result<(), String> {
     let m = unit.model;
     let t = std::time::Instant::now();
-    let Measured { rows, vectors: n, what, clocks, mismatches } = measure(unit, count, seed)?;
+    let Measured { mut rows, vectors: n, what, clocks, mismatches } = measure(unit, count, seed)?;
     let secs = t.elapsed().as_secs_f64();
+    let proved = match solver {
+        Some(o) => {
+            eprintln!("the solver on {} …", m.name);
+            let dir = std::path::Path::new("target/prove").join(unit.rtl.name());
+            Some(sim::prove::prove(unit, &dir, o)?)
+        }
+        None => None,
+    };
+    if let Some(p) = &proved {
+        for r in rows.iter_mut() {
+            r.solver = verdict(p, &r.name);
+        }
+    }
     if let Some(p) = csv_out {
         synth::export::write_atomic(p, csv(&rows).as_bytes())?;
     }
@@ -172,7 +215,7 @@ pub fn run(unit: &sim::units::Unit, count: usize, seed: u64, csv_out: Option<&st
     );
     for r in &rows {
         println!(
-            "{:<w$} {:>10} {:>9} {:>5} {:>24} {:>5} {:>5} {:>28} {:>5} {:>5} {}{}",
+            "{:<w$} {:>10} {:>9} {:>5} {:>24} {:>5} {:>5} {:>28} {:>5} {:>5} {}{}{}",
             r.name,
             r.format,
             r.q,
@@ -184,8 +227,25 @@ pub fn run(unit: &sim::units::Unit, count: usize, seed: u64, csv_out: Option<&st
             r.proven_needed,
             r.proven_spare(),
             if r.unused_flag() { "!" } else { "" },
-            r.wrap_flag().map(String::from).unwrap_or_default()
+            r.wrap_flag().map(String::from).unwrap_or_default(),
+            r.solver.as_ref().map_or(String::new(), |s| format!(" {}", s.0))
         );
+    }
+    if let Some(p) = &proved {
+        println!(
+            "the solver (yosys-smtbmc, z3, depth {} past the latency): {} claims, {} proven, {} refuted, {} not tried, in {:.1} s; \
+             a row's verdict is its claims' (its range and each step that writes it)",
+            p.depth - unit.rtl.latency(),
+            p.outcomes.len(),
+            p.count("proven"),
+            p.count("refuted"),
+            p.count("not tried"),
+            p.seconds
+        );
+        for r in rows.iter().filter(|r| r.solver.as_ref().is_some_and(|s| s.0 != "proven")) {
+            let (word, detail) = r.solver.as_ref().unwrap();
+            println!("  {word} {}: {detail}", r.name);
+        }
     }
     let flagged = rows.iter().filter(|r| r.unused_flag()).count();
     let count = |c: char| rows.iter().filter(|r| r.wrap_flag() == Some(c)).count();
@@ -212,8 +272,9 @@ pub fn run(unit: &sim::units::Unit, count: usize, seed: u64, csv_out: Option<&st
             if r.signed { (-(1i128 << (r.bits - 1)), (1i128 << (r.bits - 1)) - 1) } else { (0, (1i128 << r.bits) - 1) };
         let flag = r.wrap_flag().unwrap_or('W');
         println!("  {flag} {}: computes {a} .. {b}, {} holds {lo} .. {hi}", r.name, r.q);
+        let solver = r.solver.as_ref().map_or(String::new(), |s| format!("; the solver: {}", s.0));
         match r.listed {
-            Some(l) if flag == 'a' => println!("      argued: {}; {evidence}", l.why),
+            Some(l) if flag == 'a' => println!("      argued: {}; {evidence}{solver}", l.why),
             Some(l) => println!("      {}: {}", l.kind.name(), l.why),
             None => println!("      not listed in widths::wraps: a risk until shown otherwise"),
         }

@@ -13,7 +13,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use widths::formal::{Kind, Prop, Request};
-use widths::wraps::Kind as WrapKind;
+use widths::wraps::{Kind as WrapKind, Waived};
 
 /// What the solver made of one claim.
 #[derive(Clone, Debug, PartialEq)]
@@ -39,7 +39,7 @@ impl Status {
 pub struct Outcome {
     pub prop: Prop,
     /// the wrap list's entry for the step, if it has one (`a`: argued in range)
-    pub listed: Option<WrapKind>,
+    pub listed: Option<&'static Waived>,
     pub status: Status,
     /// the solver run that decided it
     pub seconds: f64,
@@ -102,12 +102,11 @@ pub fn prove(unit: &Unit, dir: &Path, o: &Options) -> Result<Proved, String> {
     let name = rtl.name();
     let a = rtl.analyse(m);
     let sites = a.sites();
-    let listed = |signal: &str| -> Option<WrapKind> {
-        sites.iter().find(|s| s.name == signal).and_then(|s| s.listed).map(|w| w.kind)
-    };
+    let listed =
+        |signal: &str| -> Option<&'static Waived> { sites.iter().find(|s| s.name == signal).and_then(|s| s.listed) };
     let signed = |n: &str| a.formats.format(n).is_some_and(|f| f.signed);
     let skip = |_: &str, n: &str| -> Option<String> {
-        match listed(n) {
+        match listed(n).map(|w| w.kind) {
             Some(k @ (WrapKind::Split | WrapKind::Modular)) => Some(format!("wraps on purpose ({})", k.name())),
             _ => None,
         }

@@ -27,7 +27,7 @@ fn cart_decode_proves_all_but_the_step_whose_argument_is_about_its_reader() {
     assert_eq!(refuted.len(), 1, "{:?}", refuted.iter().map(|o| &o.prop.signal).collect::<Vec<_>>());
     let r = refuted[0];
     assert_eq!((r.prop.signal.as_str(), r.prop.kind), ("uut.twice_sum", Kind::Exact));
-    assert_eq!(r.listed, Some(WrapKind::Bound));
+    assert_eq!(r.listed.map(|w| w.kind), Some(WrapKind::Bound));
     let Status::Refuted(trace) = &r.status else { unreachable!() };
     assert!(trace.contains("texel_x=") && trace.contains("texel_z="), "{trace}");
     assert_eq!(p.count("not tried"), 0);
@@ -35,9 +35,9 @@ fn cart_decode_proves_all_but_the_step_whose_argument_is_about_its_reader() {
     // the argued steps the solver proves: s2_sum (a sum of two magnitudes below 128), s3_mx and s3_mz
     for s in ["uut.s2_sum.d", "uut.s3_mx.d", "uut.s3_mz.d"] {
         assert!(
-            p.outcomes
-                .iter()
-                .any(|o| o.prop.signal == s && o.listed == Some(WrapKind::Bound) && o.status == Status::Proven),
+            p.outcomes.iter().any(|o| o.prop.signal == s
+                && o.listed.map(|w| w.kind) == Some(WrapKind::Bound)
+                && o.status == Status::Proven),
             "{s}"
         );
     }
@@ -48,7 +48,7 @@ fn dot3_and_gloss_prove_every_claim_their_argued_steps_included() {
     for unit in ["dot3", "gloss"] {
         let p = run(unit, &Options::default());
         assert_eq!((p.count("refuted"), p.count("not tried")), (0, 0), "{unit}");
-        let argued = p.outcomes.iter().filter(|o| o.listed == Some(WrapKind::Bound)).count();
+        let argued = p.outcomes.iter().filter(|o| o.listed.map(|w| w.kind) == Some(WrapKind::Bound)).count();
         assert!(argued >= 2, "{unit}: {argued} argued steps");
         assert!(p.outcomes.iter().any(|o| o.prop.kind == Kind::Range), "{unit}");
         assert!(p.depth > sim::units::unit(unit).unwrap().rtl.latency(), "{unit}: depth {}", p.depth);
