@@ -236,7 +236,7 @@ enum Cmd {
     /// of proven, refuted (with the trace's inputs) and not tried (with why), and the wrap list's argued entries
     Prove {
         /// the units (their names as `bumprtl vectors` takes them)
-        #[arg(required_unless_present = "all")]
+        #[arg(required_unless_present_any = ["all", "equivalences"])]
         units: Vec<String>,
         /// every unit of the table, pipelines included (hours: each solver run up to --limit)
         #[arg(long, conflicts_with = "units")]
@@ -257,6 +257,10 @@ enum Cmd {
         /// also write the table as Markdown
         #[arg(long)]
         md: Option<PathBuf>,
+        /// also the equivalences the project claims, each as a miter of two pipelines: cart_pipeline_matte against
+        /// cart_pipeline at C = 0, cart_surface against cart_pipeline with three equal lights
+        #[arg(long)]
+        equivalences: bool,
     },
     /// The hard cases the patents and the paper warn about, unit by unit: what they ask, what the rtl does
     /// (rust-hdl, held to the model), pass or fail, as a Markdown table; fails if any row fails
@@ -419,9 +423,9 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::Minify { scene, out, samples, lod_bias } => crate::minify::run(scene.as_deref(), &out, samples, lod_bias)?,
         Cmd::Hardcases => crate::unit_commands::hardcases()?,
-        Cmd::Prove { units, all, dir, narrow, limit, exact_only, md } => {
+        Cmd::Prove { units, all, dir, narrow, limit, exact_only, md, equivalences } => {
             let o = sim::prove::Options { narrow, limit: Some(std::time::Duration::from_secs(limit)), exact_only };
-            crate::prove::run(&units, all, &dir, &o, md.as_deref())?
+            crate::prove::run(&units, all, equivalences, &dir, &o, md.as_deref())?
         }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

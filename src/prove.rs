@@ -58,7 +58,14 @@ fn table(p: &Proved) -> String {
     t
 }
 
-pub fn run(names: &[String], all: bool, dir: &Path, o: &Options, md: Option<&Path>) -> Result<(), String> {
+pub fn run(
+    names: &[String],
+    all: bool,
+    equivalences: bool,
+    dir: &Path,
+    o: &Options,
+    md: Option<&Path>,
+) -> Result<(), String> {
     if let Some(f) = md {
         crate::output::writable_file(f)?;
     }
@@ -71,12 +78,23 @@ pub fn run(names: &[String], all: bool, dir: &Path, o: &Options, md: Option<&Pat
     let several = units.len() > 1;
     let mut text = String::new();
     let mut proved: Vec<Proved> = vec![];
+    let mut failed: Vec<&str> = vec![];
     let mut summary =
         String::from("| unit | claims | proven | refuted | not tried | runs | s |\n|---|---|---|---|---|---|---|\n");
     for u in units {
         let name = u.rtl.name();
         eprintln!("prove {name} …");
-        let p = sim::prove::prove(u, &dir.join(name), o)?;
+        let p = match sim::prove::prove(u, &dir.join(name), o) {
+            Ok(p) => p,
+            Err(e) if several => {
+                // the other units still run; the command fails at the end
+                eprintln!("bumprtl: {e}");
+                summary.push_str(&format!("| {name} | error: {} | | | | | |\n", e.replace('|', "/")));
+                failed.push(name);
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
         let t = table(&p);
         println!("{t}");
         summary.push_str(&format!(
@@ -97,8 +115,32 @@ pub fn run(names: &[String], all: bool, dir: &Path, o: &Options, md: Option<&Pat
         println!("{summary}\n{entries}");
         text.insert_str(0, &format!("{summary}\n{entries}\n"));
     }
+    if equivalences {
+        let limit = o.limit.unwrap_or(std::time::Duration::from_secs(600));
+        let found = sim::prove::run_claimed(dir, limit, &|s| eprintln!("{s}"))?;
+        let mut t = String::from("| miter | solver | depth | runs | s | why / trace |\n|---|---|---|---|---|---|\n");
+        for e in &found {
+            let why = match &e.status {
+                Status::Refuted(x) | Status::NotTried(x) => x.clone(),
+                Status::Proven => String::new(),
+            };
+            t.push_str(&format!(
+                "| {} | {} | {} | {} | {:.1} | {why} |\n",
+                e.name,
+                e.status.word(),
+                e.depth,
+                e.runs,
+                e.seconds
+            ));
+        }
+        println!("{t}");
+        text.push_str(&t);
+    }
     if let Some(f) = md {
         synth::export::write_atomic(f, text.as_bytes())?;
+    }
+    if !failed.is_empty() {
+        return Err(format!("prove: no verdict for {} (each error above)", failed.join(", ")));
     }
     Ok(())
 }

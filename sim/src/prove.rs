@@ -151,76 +151,124 @@ pub fn prove(unit: &Unit, dir: &Path, o: &Options) -> Result<Proved, String> {
     })?;
     let depth = rtl.latency() + 2;
     let limit = o.limit.unwrap_or(Duration::from_secs(600));
-    let mut status: Vec<Option<(Status, f64)>> = vec![None; h.props.len()];
-    let mut lines: Vec<String> = h.text.lines().map(String::from).collect();
-    let by_line: HashMap<usize, usize> = h.props.iter().enumerate().map(|(i, p)| (p.line, i)).collect();
-    let (mut runs, start) = (0, Instant::now());
-    // bounded from the initial state, then induction; each failure set aside and the rest run again
-    for induction in [false, true] {
-        loop {
-            let open = status.iter().filter(|s| s.is_none()).count();
-            if open == 0 {
-                break;
-            }
-            runs += 1;
-            let t0 = Instant::now();
-            let r = run_once(dir, name, &lines, depth, induction, limit)?;
-            let secs = t0.elapsed().as_secs_f64();
-            match r {
-                Run::Passed => {
-                    if induction {
-                        for s in status.iter_mut().filter(|s| s.is_none()) {
-                            *s = Some((Status::Proven, secs));
-                        }
-                    }
-                    break;
-                }
-                Run::Failed(failed, trace) => {
-                    let mut any = false;
-                    for l in failed {
-                        let Some(&i) = by_line.get(&l) else { continue };
-                        if status[i].is_some() {
-                            continue;
-                        }
-                        any = true;
-                        status[i] = Some((
-                            if induction {
-                                Status::NotTried(format!(
-                                    "induction at depth {depth} fails (state that is not feed-forward: a memory or a counter)"
-                                ))
-                            } else {
-                                Status::Refuted(trace.clone())
-                            },
-                            secs,
-                        ));
-                        lines[l - 1] = format!("    // set aside: {}", lines[l - 1].trim());
-                    }
-                    if !any {
-                        return Err(format!(
-                            "prove {name}: the solver failed an assertion the harness does not list ({})",
-                            dir.display()
-                        ));
-                    }
-                }
-                Run::Timeout => {
-                    for s in status.iter_mut().filter(|s| s.is_none()) {
-                        *s = Some((Status::NotTried(format!("the solver ran past {} s", limit.as_secs())), secs));
-                    }
-                    break;
-                }
-            }
-        }
-    }
+    let base: Vec<String> = h.text.lines().map(String::from).collect();
+    let lines: Vec<usize> = h.props.iter().map(|p| p.line).collect();
+    let start = Instant::now();
+    let (status, runs) = ladder(dir, name, &base, &lines, depth, limit)?;
     let outcomes = h
         .props
         .into_iter()
         .zip(status)
         .map(|(p, s)| {
-            let (status, seconds) = s.unwrap_or((Status::NotTried("not reached".into()), 0.0));
+            let (status, seconds) = s;
             Outcome { listed: if p.kind == Kind::Exact { listed(&p.signal) } else { None }, prop: p, status, seconds }
         })
         .collect();
     Ok(Proved { unit: name, depth, outcomes, skipped: h.skipped, runs, seconds: start.elapsed().as_secs_f64() })
+}
+
+/// The claims at lines `props` of the harness `base` (top module `name`, written and run in `dir`), each decided:
+/// a ladder of depths up to `depth`, each a bounded check from the initial state (a failure there is a real trace:
+/// refuted) and then induction (a failure there is tried again deeper, and at `depth` is not proven).
+fn ladder(
+    dir: &Path,
+    name: &str,
+    base: &[String],
+    props: &[usize],
+    depth: usize,
+    limit: Duration,
+) -> Result<(Vec<(Status, f64)>, usize), String> {
+    let mut status: Vec<Option<(Status, f64)>> = vec![None; props.len()];
+    let by_line: HashMap<usize, usize> = props.iter().enumerate().map(|(i, &l)| (l, i)).collect();
+    let mut runs = 0;
+    // a ladder of depths: a claim about stage s needs the induction to reach back only to where its operands part,
+    // so most are proven at a small depth, cheaply; the proven ones are then assumed (they hold in every reachable
+    // state) and the rest tried deeper, up to the latency + 2, where the induction is complete for a feed-forward
+    // block
+    let mut rungs = vec![];
+    let mut k = 2;
+    while k < depth {
+        rungs.push(k);
+        k *= 2;
+    }
+    rungs.push(depth);
+    'ladder: for &k in &rungs {
+        let mut aside = vec![false; status.len()];
+        for induction in [false, true] {
+            loop {
+                if status.iter().zip(&aside).all(|(s, a)| s.is_some() || *a) {
+                    break;
+                }
+                let lines: Vec<String> = base
+                    .iter()
+                    .enumerate()
+                    .map(|(n, l)| match by_line.get(&(n + 1)) {
+                        Some(&i) => match (&status[i], aside[i]) {
+                            (Some((Status::Proven, _)), _) => l.replacen("assert(", "assume(", 1),
+                            (None, false) => l.clone(),
+                            _ => format!("    // set aside: {}", l.trim()),
+                        },
+                        None => l.clone(),
+                    })
+                    .collect();
+                runs += 1;
+                let t0 = Instant::now();
+                let r = run_once(dir, name, &lines, k, induction, limit)?;
+                let secs = t0.elapsed().as_secs_f64();
+                match r {
+                    Run::Passed => {
+                        if induction {
+                            for (s, a) in status.iter_mut().zip(&aside) {
+                                if s.is_none() && !a {
+                                    *s = Some((Status::Proven, secs));
+                                }
+                            }
+                        }
+                        break;
+                    }
+                    Run::Failed(failed, trace) => {
+                        let mut any = false;
+                        for l in failed {
+                            let Some(&i) = by_line.get(&l) else { continue };
+                            if status[i].is_some() || aside[i] {
+                                continue;
+                            }
+                            any = true;
+                            if !induction {
+                                status[i] = Some((Status::Refuted(trace.clone()), secs));
+                            } else if k < depth {
+                                aside[i] = true; // tried again deeper
+                            } else {
+                                status[i] = Some((
+                                    Status::NotTried(format!(
+                                        "induction at depth {depth} fails (state that is not feed-forward: a memory or a counter)"
+                                    )),
+                                    secs,
+                                ));
+                            }
+                        }
+                        if !any {
+                            return Err(format!(
+                                "prove {name}: the solver failed an assertion the harness does not list ({})",
+                                dir.display()
+                            ));
+                        }
+                    }
+                    Run::Timeout => {
+                        for s in status.iter_mut().filter(|s| s.is_none()) {
+                            *s = Some((
+                                Status::NotTried(format!("the solver ran past {} s at depth {k}", limit.as_secs())),
+                                secs,
+                            ));
+                        }
+                        break 'ladder;
+                    }
+                }
+            }
+        }
+    }
+    let status = status.into_iter().map(|s| s.unwrap_or((Status::NotTried("not reached".into()), 0.0))).collect();
+    Ok((status, runs))
 }
 
 enum Run {
@@ -267,15 +315,22 @@ fn run_once(
         return Ok(Run::Passed);
     }
     let file = format!("{top}_formal.v:");
+    // `Assert failed in top: f.v:l0.c0-l1.c1|f.v:…`: the spans of the instances down to the assertion (flattened),
+    // each `l0.c0-l1.c1`; an assertion inside a block is spanned from the end of the statement before it, so its
+    // own line is a span's end line. Every end line is returned; the caller keeps the ones that are claims.
     let failed: Vec<usize> = log
         .lines()
         .filter(|l| l.contains("Assert failed in"))
-        .filter_map(|l| l.split_once(&file))
-        .filter_map(|(_, r)| {
-            // `l0.c0-l1.c1`: an assertion inside a block is spanned from the end of the statement before it
-            let span = r.split_whitespace().next()?;
-            let end = span.rsplit_once('-').map_or(span, |x| x.1);
-            end.split('.').next()?.parse().ok()
+        .flat_map(|l| {
+            let spans = l.split_whitespace().find(|w| w.contains(&file)).unwrap_or("");
+            spans
+                .split('|')
+                .filter_map(|s| {
+                    let span = s.split_once(&file)?.1;
+                    let end = span.rsplit_once('-').map_or(span, |x| x.1);
+                    end.split('.').next()?.parse().ok()
+                })
+                .collect::<Vec<usize>>()
         })
         .collect();
     if failed.is_empty() {
@@ -347,4 +402,210 @@ fn inputs_of(vcd: &PathBuf, top: &str) -> Option<String> {
         .map(|(k, v)| format!("{k}: {}", v.iter().map(|(n, x)| format!("{n}={x}")).collect::<Vec<_>>().join(" ")))
         .collect();
     Some(steps.join("; "))
+}
+
+/// A top module's ports as its export declares them: (name, bits, is an input), clock included.
+fn ports(verilog: &str, top: &str) -> Result<Vec<(String, u32, bool)>, String> {
+    let head = format!("module {top}(");
+    let at = verilog.find(&head).ok_or_else(|| format!("the export has no module {top}"))?;
+    let mut out = vec![];
+    for l in verilog[at..].lines().skip(1) {
+        let l = l.trim();
+        if l.starts_with("// Stub") || l.starts_with("endmodule") {
+            break;
+        }
+        let (input, rest) = if let Some(r) = l.strip_prefix("input wire") {
+            (true, r)
+        } else if let Some(r) = l.strip_prefix("output reg").or_else(|| l.strip_prefix("output wire")) {
+            (false, r)
+        } else {
+            continue;
+        };
+        let rest = rest.trim().trim_end_matches(';');
+        let (bits, name) = match rest.strip_prefix('[') {
+            Some(r) => {
+                let (range, name) = r.split_once(']').ok_or_else(|| format!("{top}: a port as `{l}`"))?;
+                let hi: u32 =
+                    range.split(':').next().unwrap_or("").trim().parse().map_err(|_| format!("{top}: `{l}`"))?;
+                (hi + 1, name.trim())
+            }
+            None => (1, rest.trim()),
+        };
+        out.push((name.to_string(), bits, input));
+    }
+    Ok(out)
+}
+
+/// Two units claimed to compute the same outputs: `a`'s inputs in `fix` held at a value; `b`'s inputs named in
+/// `bind` fed by `a`'s input of the name given there (or, where `a` has none, by a free input of that name), the
+/// rest of `b`'s inputs by `a`'s of the same name or, without one, free (`b_<port>`); the unit with the shorter
+/// latency has its outputs delayed to the other's. The claim: the valid flags
+/// agree on every clock, and where they are high every output of the same name does.
+pub struct Miter<'a> {
+    pub a: &'a Unit,
+    pub b: &'a Unit,
+    pub fix: &'a [(&'a str, i64)],
+    pub bind: &'a [(&'a str, &'a str)],
+}
+
+/// The solver's verdict on a miter.
+pub struct Equivalence {
+    pub name: String,
+    pub status: Status,
+    pub depth: usize,
+    pub runs: usize,
+    pub seconds: f64,
+}
+
+/// The miter of `m`, its claims decided as `prove` decides a unit's (bounded check, then induction up to the longer
+/// latency + 2).
+pub fn equivalence(m: &Miter, dir: &Path, limit: Duration) -> Result<Equivalence, String> {
+    let missing = missing_tools();
+    if !missing.is_empty() {
+        return Err(format!("prove: {} not on the PATH (the test command installs them)", missing.join(", ")));
+    }
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let (na, nb) = (m.a.rtl.name(), m.b.rtl.name());
+    let (va, vb) = (m.a.rtl.verilog(), m.b.rtl.verilog());
+    let (pa, pb) = (ports(&va, na)?, ports(&vb, nb)?);
+    let (la, lb) = (m.a.rtl.latency(), m.b.rtl.latency());
+    let top = format!("miter_{na}_{nb}");
+    let range = |u: &Unit, p: &str| u.model.inputs.iter().find(|i| i.name == p).map(|i| i.range());
+    // the miter's inputs: a's (but the fixed ones), then b's free ones
+    let mut free: Vec<(String, u32, (i64, i64))> = vec![];
+    for (n, bits, input) in &pa {
+        if *input && n != "clock" && !m.fix.iter().any(|f| f.0 == n) {
+            free.push((n.clone(), *bits, range(m.a, n).unwrap_or((0, (1i64 << bits.min(&62)) - 1))));
+        }
+    }
+    // one unit against itself (fed differently) is one set of modules, instanced twice
+    let mut text = if na == nb { format!("{va}\n") } else { format!("{va}\n{vb}\n") };
+    let mut conn_b = vec![];
+    for (n, bits, input) in &pb {
+        if !*input || n == "clock" {
+            continue;
+        }
+        let a_has = |s: &str| pa.iter().any(|p| p.0 == s && p.2);
+        let src = match m.bind.iter().find(|b| b.0 == n) {
+            Some((_, s)) if a_has(s) => s.to_string(),
+            Some((_, s)) => s.to_string(), // a free input of its own, named there
+            None if a_has(n) => n.clone(),
+            None => format!("b_{n}"),
+        };
+        if !a_has(&src) && !free.iter().any(|f| f.0 == src) {
+            let r = range(m.b, n).unwrap_or((0, (1i64 << bits.min(&62)) - 1));
+            free.push((src.clone(), *bits, r));
+        }
+        if let Some((_, v)) = m.fix.iter().find(|f| f.0 == src) {
+            conn_b.push(format!(".{n}({v})"));
+        } else {
+            conn_b.push(format!(".{n}({src})"));
+        }
+    }
+    let decl = |n: &str, bits: u32| if bits == 1 { n.to_string() } else { format!("[{}:0] {n}", bits - 1) };
+    let names: Vec<&str> = free.iter().map(|f| f.0.as_str()).collect();
+    text.push_str(&format!("module {top}(clock, {});\n    input wire clock;\n", names.join(", ")));
+    for (n, bits, _) in &free {
+        text.push_str(&format!("    input wire {};\n", decl(n, *bits)));
+    }
+    let outs: Vec<(String, u32)> =
+        pa.iter().filter(|p| !p.2 && pb.iter().any(|q| q.0 == p.0 && !q.2)).map(|p| (p.0.clone(), p.1)).collect();
+    let mut conn_a = vec![".clock(clock)".to_string()];
+    for (n, _, input) in &pa {
+        if *input && n != "clock" {
+            match m.fix.iter().find(|f| f.0 == n) {
+                Some((_, v)) => conn_a.push(format!(".{n}({v})")),
+                None => conn_a.push(format!(".{n}({n})")),
+            }
+        }
+    }
+    conn_b.insert(0, ".clock(clock)".to_string());
+    for (n, bits) in &outs {
+        text.push_str(&format!(
+            "    wire {};\n    wire {};\n",
+            decl(&format!("a_{n}"), *bits),
+            decl(&format!("b_{n}"), *bits)
+        ));
+        conn_a.push(format!(".{n}(a_{n})"));
+        conn_b.push(format!(".{n}(b_{n})"));
+    }
+    text.push_str(&format!("    {na} ua({});\n    {nb} ub({});\n", conn_a.join(", "), conn_b.join(", ")));
+    // the earlier unit's outputs through a line of registers (initial zero) to the later one's clock
+    let (early, d) = if la < lb { ("a", lb - la) } else { ("b", la - lb) };
+    for (n, bits) in &outs {
+        let mut prev = format!("{early}_{n}");
+        for k in 1..=d {
+            let r = format!("{early}_{n}_d{k}");
+            text.push_str(&format!("    reg {} = 0;\n    always @(posedge clock) {r} <= {prev};\n", decl(&r, *bits)));
+            prev = r;
+        }
+    }
+    let at =
+        |side: &str, n: &str| if side == early && d > 0 { format!("{side}_{n}_d{d}") } else { format!("{side}_{n}") };
+    let mut k = 0;
+    let mut lines: Vec<String> = vec![];
+    for (n, _) in &outs {
+        k += 1;
+        let claim = if n == "valid_out" {
+            format!("{} == {}", at("a", n), at("b", n))
+        } else {
+            format!("!{} || {} == {}", at("b", "valid_out"), at("a", n), at("b", n))
+        };
+        lines.push(format!("    always @(*) assert({claim}); // bumprtl prop {k}"));
+    }
+    for (n, bits, (lo, hi)) in &free {
+        let w = bits + 2;
+        let v = if *lo < 0 {
+            let top = if *bits == 1 { n.clone() } else { format!("{n}[{}]", bits - 1) };
+            format!("$signed({{{{2{{{top}}}}}, {n}}})")
+        } else {
+            format!("$signed({{2'd0, {n}}})")
+        };
+        let l = |x: i64| if x < 0 { format!("(-{w}'sd{})", -(x as i128)) } else { format!("{w}'sd{x}") };
+        lines.push(format!("    always @(*) assume({v} >= {} && {v} <= {});", l(*lo), l(*hi)));
+    }
+    text.push_str(&lines.join("\n"));
+    text.push_str("\nendmodule\n");
+    let base: Vec<String> = text.lines().map(String::from).collect();
+    let props: Vec<usize> =
+        base.iter().enumerate().filter(|(_, l)| l.contains("// bumprtl prop ")).map(|(i, _)| i + 1).collect();
+    let depth = la.max(lb) + 2;
+    let start = Instant::now();
+    let (status, runs) = ladder(dir, &top, &base, &props, depth, limit)?;
+    // the miter's verdict: refuted if any output is, proven if all are
+    let verdict = status
+        .iter()
+        .map(|s| s.0.clone())
+        .find(|s| matches!(s, Status::Refuted(_)))
+        .or_else(|| status.iter().map(|s| s.0.clone()).find(|s| matches!(s, Status::NotTried(_))))
+        .unwrap_or(Status::Proven);
+    Ok(Equivalence { name: top, status: verdict, depth, runs, seconds: start.elapsed().as_secs_f64() })
+}
+
+/// The equivalences the project claims (and tests on random vectors), each as a miter decided in `dir/<miter>/`:
+/// the matte pipeline is the glossy one at C = 0, and the one-light-per-surface pipeline is the per-vertex one with
+/// three equal lights (any weights).
+pub fn run_claimed(dir: &Path, limit: Duration, say: &dyn Fn(&str)) -> Result<Vec<Equivalence>, String> {
+    let u = |n: &str| crate::units::unit(n);
+    let equal_lights: Vec<(&str, &str)> = vec![
+        ("l0_x", "l_x"),
+        ("l0_y", "l_y"),
+        ("l0_z", "l_z"),
+        ("l1_x", "l_x"),
+        ("l1_y", "l_y"),
+        ("l1_z", "l_z"),
+        ("l2_x", "l_x"),
+        ("l2_y", "l_y"),
+        ("l2_z", "l_z"),
+    ];
+    let miters = [
+        Miter { a: u("cart_pipeline")?, b: u("cart_pipeline_matte")?, fix: &[("conc", 0)], bind: &[] },
+        Miter { a: u("cart_surface")?, b: u("cart_pipeline")?, fix: &[], bind: &equal_lights },
+    ];
+    let mut out = vec![];
+    for m in &miters {
+        say(&format!("miter {} = {} …", m.a.rtl.name(), m.b.rtl.name()));
+        out.push(equivalence(m, &dir.join(format!("miter_{}_{}", m.a.rtl.name(), m.b.rtl.name())), limit)?);
+    }
+    Ok(out)
 }

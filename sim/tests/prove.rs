@@ -79,3 +79,25 @@ fn narrower_takes_one_bit_off_either_reading() {
     assert_eq!(sim::prove::narrower(-255, 255, true), (-128, 127));
     assert_eq!(sim::prove::narrower(-1, 100, true), (-1, 63));
 }
+
+/// The miter finds a difference where there is one (gloss with its concentration held at 0 against gloss with it
+/// free) and none where there is none (gloss against itself, fed the same inputs).
+#[test]
+fn a_miter_refutes_a_false_equivalence_and_proves_a_true_one() {
+    use sim::prove::{equivalence, Miter};
+    use std::time::Duration;
+    let gloss = sim::units::unit("gloss").unwrap();
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("prove-miter-{}", std::process::id()));
+    let same =
+        equivalence(&Miter { a: gloss, b: gloss, fix: &[], bind: &[] }, &dir.join("same"), Duration::from_secs(300));
+    let held = equivalence(
+        &Miter { a: gloss, b: gloss, fix: &[("conc", 0)], bind: &[("conc", "b_conc")] },
+        &dir.join("held"),
+        Duration::from_secs(300),
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(same.unwrap().status, Status::Proven);
+    let held = held.unwrap();
+    let Status::Refuted(trace) = &held.status else { panic!("{:?}", held.status) };
+    assert!(trace.contains("b_conc="), "{trace}");
+}
