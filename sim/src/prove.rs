@@ -607,5 +607,112 @@ pub fn run_claimed(dir: &Path, limit: Duration, say: &dyn Fn(&str)) -> Result<Ve
         say(&format!("miter {} = {} …", m.a.rtl.name(), m.b.rtl.name()));
         out.push(equivalence(m, &dir.join(format!("miter_{}_{}", m.a.rtl.name(), m.b.rtl.name())), limit)?);
     }
+    // the sub-blocks where the two pipelines of each pair part: gloss at C = 0 passes N·L through (the matte
+    // pipeline has no gloss); the light interpolator with three equal lights passes the light through (the surface
+    // pipeline holds its one light, already of unit length, where the per-vertex one normalises the interpolated
+    // light: that normaliser's part is not among these)
+    say("gloss at C = 0 …");
+    out.push(echo(u("gloss")?, &[("conc", 0)], &[], &[("p", "x", 0)], &dir.join("echo_gloss"), limit)?);
+    say("light_iter with three equal lights …");
+    let same: Vec<(&str, &str)> = vec![
+        ("l1_x", "l0_x"),
+        ("l1_y", "l0_y"),
+        ("l1_z", "l0_z"),
+        ("l2_x", "l0_x"),
+        ("l2_y", "l0_y"),
+        ("l2_z", "l0_z"),
+    ];
+    // the interpolated light is Sq7.2, the vertex lights whole numbers (S8): 4 · l
+    let pairs = [("light_x", "l0_x", 2), ("light_y", "l0_y", 2), ("light_z", "l0_z", 2)];
+    out.push(echo(u("light_iter")?, &[], &same, &pairs, &dir.join("echo_light_iter"), limit)?);
     Ok(out)
+}
+
+/// A unit claimed to pass inputs through unchanged when some of its inputs are held (gloss at C = 0; the light
+/// interpolator with three equal lights): `fix` holds inputs at a value, `same` ties inputs to another input, and
+/// each (output, input, k) of `pairs` is claimed equal, where the output is valid, to that input `latency` clocks
+/// before, times 2^k (its bits shifted up k places). The sub-block form of a claimed equivalence whose whole miter the solver cannot finish.
+pub fn echo(
+    u: &Unit,
+    fix: &[(&str, i64)],
+    same: &[(&str, &str)],
+    pairs: &[(&str, &str, u32)],
+    dir: &Path,
+    limit: Duration,
+) -> Result<Equivalence, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let name = u.rtl.name();
+    let v = u.rtl.verilog();
+    let p = ports(&v, name)?;
+    let l = u.rtl.latency();
+    let top = format!("echo_{name}");
+    let free: Vec<&(String, u32, bool)> = p
+        .iter()
+        .filter(|(n, _, input)| {
+            *input && n != "clock" && !fix.iter().any(|f| f.0 == n) && !same.iter().any(|s| s.0 == n)
+        })
+        .collect();
+    let decl = |n: &str, bits: u32| if bits == 1 { n.to_string() } else { format!("[{}:0] {n}", bits - 1) };
+    let mut text = format!(
+        "{v}\nmodule {top}(clock, {});\n    input wire clock;\n",
+        free.iter().map(|f| f.0.as_str()).collect::<Vec<_>>().join(", ")
+    );
+    let mut conn = vec![".clock(clock)".to_string()];
+    for (n, bits, input) in &p {
+        if n == "clock" {
+            continue;
+        }
+        if !*input {
+            text.push_str(&format!("    wire {};\n", decl(&format!("o_{n}"), *bits)));
+            conn.push(format!(".{n}(o_{n})"));
+        } else if let Some((_, x)) = fix.iter().find(|f| f.0 == n) {
+            conn.push(format!(".{n}({x})"));
+        } else if let Some((_, s)) = same.iter().find(|s| s.0 == n) {
+            conn.push(format!(".{n}({s})"));
+        } else {
+            text.push_str(&format!("    input wire {};\n", decl(n, *bits)));
+            conn.push(format!(".{n}({n})"));
+        }
+    }
+    text.push_str(&format!("    {name} ua({});\n", conn.join(", ")));
+    let mut lines = vec![];
+    for (k, (out, inp, shift)) in pairs.iter().enumerate() {
+        let bits = p.iter().find(|x| &x.0 == inp).map(|x| x.1).ok_or_else(|| format!("{name} has no input {inp}"))?;
+        let mut prev = inp.to_string();
+        for d in 1..=l {
+            let r = format!("{inp}_d{d}");
+            text.push_str(&format!("    reg {} = 0;\n    always @(posedge clock) {r} <= {prev};\n", decl(&r, bits)));
+            prev = r;
+        }
+        let scaled = if *shift == 0 { prev } else { format!("{{{prev}, {shift}'d0}}") };
+        lines.push(format!("    always @(*) assert(!o_valid_out || o_{out} == {scaled}); // bumprtl prop {}", k + 1));
+    }
+    for (n, bits, _) in &free {
+        if let Some((lo, hi)) = u.model.inputs.iter().find(|i| i.name == n).map(|i| i.range()) {
+            let w = bits + 2;
+            let v = if lo < 0 {
+                let t = if *bits == 1 { n.clone() } else { format!("{n}[{}]", bits - 1) };
+                format!("$signed({{{{2{{{t}}}}}, {n}}})")
+            } else {
+                format!("$signed({{2'd0, {n}}})")
+            };
+            let c = |x: i64| if x < 0 { format!("(-{w}'sd{})", -(x as i128)) } else { format!("{w}'sd{x}") };
+            lines.push(format!("    always @(*) assume({v} >= {} && {v} <= {});", c(lo), c(hi)));
+        }
+    }
+    text.push_str(&lines.join("\n"));
+    text.push_str("\nendmodule\n");
+    let base: Vec<String> = text.lines().map(String::from).collect();
+    let props: Vec<usize> =
+        base.iter().enumerate().filter(|(_, l)| l.contains("// bumprtl prop ")).map(|(i, _)| i + 1).collect();
+    let depth = l + 2;
+    let start = Instant::now();
+    let (status, runs) = ladder(dir, &top, &base, &props, depth, limit)?;
+    let verdict = status
+        .iter()
+        .map(|s| s.0.clone())
+        .find(|s| matches!(s, Status::Refuted(_)))
+        .or_else(|| status.iter().map(|s| s.0.clone()).find(|s| matches!(s, Status::NotTried(_))))
+        .unwrap_or(Status::Proven);
+    Ok(Equivalence { name: top, status: verdict, depth, runs, seconds: start.elapsed().as_secs_f64() })
 }

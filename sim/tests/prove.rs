@@ -101,3 +101,26 @@ fn a_miter_refutes_a_false_equivalence_and_proves_a_true_one() {
     let Status::Refuted(trace) = &held.status else { panic!("{:?}", held.status) };
     assert!(trace.contains("b_conc="), "{trace}");
 }
+
+/// The sub-blocks where the claimed equivalences' pipelines part, proven where the whole miters are too large:
+/// gloss at C = 0 passes N·L through unchanged, and the light interpolator with three equal lights passes the
+/// light through (as Sq7.2, four times the S8 vertex light).
+#[test]
+fn gloss_at_c_0_and_light_iter_with_equal_lights_pass_their_input_through() {
+    use sim::prove::echo;
+    use std::time::Duration;
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("prove-echo-{}", std::process::id()));
+    let u = |n| sim::units::unit(n).unwrap();
+    let gloss = echo(u("gloss"), &[("conc", 0)], &[], &[("p", "x", 0)], &dir.join("gloss"), Duration::from_secs(300));
+    let same =
+        [("l1_x", "l0_x"), ("l1_y", "l0_y"), ("l1_z", "l0_z"), ("l2_x", "l0_x"), ("l2_y", "l0_y"), ("l2_z", "l0_z")];
+    let pairs = [("light_x", "l0_x", 2), ("light_y", "l0_y", 2), ("light_z", "l0_z", 2)];
+    let light = echo(u("light_iter"), &[], &same, &pairs, &dir.join("light"), Duration::from_secs(300));
+    // and the same claim without the scale is false: the trace shows it
+    let unscaled = [("light_x", "l0_x", 0)];
+    let wrong = echo(u("light_iter"), &[], &same, &unscaled, &dir.join("wrong"), Duration::from_secs(300));
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(gloss.unwrap().status, Status::Proven);
+    assert_eq!(light.unwrap().status, Status::Proven);
+    assert!(matches!(wrong.unwrap().status, Status::Refuted(_)));
+}
