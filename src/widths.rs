@@ -259,6 +259,19 @@ pub fn run(
         count('w'),
         count('a')
     );
+    if proved.is_some() {
+        // the goal: no argued entry the solver has not proven
+        let argued: Vec<&Row> = rows.iter().filter(|r| r.wrap_flag() == Some('a')).collect();
+        let word = |w: &str| argued.iter().filter(|r| r.solver.as_ref().is_some_and(|s| s.0 == w)).count();
+        println!(
+            "argued (a) steps: {} proven by the solver, {} refuted, {} not tried, {} without a claim; {} left unproven",
+            word("proven"),
+            word("refuted"),
+            word("not tried"),
+            argued.iter().filter(|r| r.solver.is_none()).count(),
+            argued.len() - word("proven")
+        );
+    }
     let evidence = if stateless_all {
         format!("every input applied, rtl = model on all {n}")
     } else if mismatches == 0 {

@@ -75,7 +75,7 @@ fn bad_command_lines_are_one_line_each() {
         (&["demoo"][..], "a similar subcommand exists: 'demo'"),
         (&["vectors"][..], "<UNIT>"),
         (&["wave", "gloss", "--frobnicate"][..], "--frobnicate"),
-        (&["prove"][..], "<UNIT>"),
+        (&["prove"][..], "<UNITS>"),
     ] {
         let (code, out, err) = bumprtl(args);
         assert_eq!(code, 2, "{args:?}: {err}");

@@ -442,9 +442,10 @@ impl Walk<'_> {
         let signed = (self.signed)(n);
         let (lo, hi) =
             if signed { (-(1i128 << (bits - 1)), (1i128 << (bits - 1)) - 1) } else { (0, (1i128 << bits) - 1) };
-        // a copy of a signal (or a constant) that its target holds whatever it is
+        // a copy of a signal that its target holds whatever it is, or a literal: a bit pattern (`32'h200` is
+        // −512 to an S10 target), which claims nothing where the target is as wide
         let copy_fits = match value {
-            E::Literal(_) => literal_value(value).is_some_and(|v| lo <= v && v <= hi),
+            E::Literal(_) => literal_value(value).is_some_and(|v| (0..1i128 << bits).contains(&v)),
             E::Signal(s) if self.loop_value(value).is_none() => {
                 let src = self.probe(s);
                 match self.widths.get(&src) {
