@@ -5,8 +5,9 @@ use sim::prove::{Options, Proved, Status};
 use std::path::Path;
 use widths::wraps::Kind as WrapKind;
 
-fn claim(o: &sim::prove::Outcome) -> String {
-    format!("{} {} .. {}", o.prop.kind.name(), o.prop.lo, o.prop.hi)
+pub(crate) fn claim(o: &sim::prove::Outcome) -> String {
+    let when = o.prop.stage.map_or(String::new(), |d| format!(" where stage {d} holds a pixel"));
+    format!("{} {} .. {}{when}", o.prop.kind.name(), o.prop.lo, o.prop.hi)
 }
 
 /// One unit's table: every claim not proven first, then the proven ones counted by kind.
@@ -154,7 +155,7 @@ fn argued_entries(proved: &[Proved]) -> String {
         let at: Vec<(&str, &sim::prove::Outcome)> = proved
             .iter()
             .flat_map(|p| p.outcomes.iter().map(move |o| (p.unit, o)))
-            .filter(|(_, o)| o.listed.is_some_and(|l| std::ptr::eq(l, w)))
+            .filter(|(_, o)| o.listed.is_some_and(|l| (l.block, l.signal) == (w.block, w.signal)))
             .collect();
         let pick = |word: &str| at.iter().find(|(_, o)| o.status.word() == word);
         let (word, place) = match pick("refuted").or_else(|| pick("proven")).or_else(|| pick("not tried")) {

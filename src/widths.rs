@@ -15,6 +15,8 @@ pub struct Row {
     pub signed: bool,
     pub min: i64,
     pub max: i64,
+    /// the seen range is over every clock (a valid flag, or no single stage), not only those holding a vector
+    pub every: bool,
     pub needed: usize,
     /// the proven range in the same reading (every input sequence), the bits it needs
     pub proven: (i128, i128),
@@ -35,7 +37,7 @@ pub fn verdict(p: &sim::prove::Proved, signal: &str) -> Option<(&'static str, St
     if mine.is_empty() {
         return None;
     }
-    let claims = |o: &sim::prove::Outcome| format!("{} {} .. {}", o.prop.kind.name(), o.prop.lo, o.prop.hi);
+    let claims = crate::prove::claim;
     if let Some(o) = mine.iter().find(|o| matches!(o.status, Status::Refuted(_))) {
         let Status::Refuted(trace) = &o.status else { unreachable!() };
         return Some(("refuted", format!("{}: {trace}", claims(o))));
@@ -126,6 +128,7 @@ pub fn measure(unit: &sim::units::Unit, count: usize, seed: u64) -> Result<Measu
             signed: fmt.signed,
             min,
             max,
+            every: s.every,
         });
     }
     let mismatches = mismatches(m, &inputs, &ranges.outputs);
@@ -133,10 +136,10 @@ pub fn measure(unit: &sim::units::Unit, count: usize, seed: u64) -> Result<Measu
 }
 
 pub fn csv(rows: &[Row]) -> String {
-    let mut t = String::from("signal,format,q,bits,signed,seen_min,seen_max,bits_needed,spare,unused_flag,proven_min,proven_max,proven_bits_needed,proven_spare,may_wrap,exact_min,exact_max,listed_as,solver\n");
+    let mut t = String::from("signal,format,q,bits,signed,seen_min,seen_max,bits_needed,spare,unused_flag,proven_min,proven_max,proven_bits_needed,proven_spare,may_wrap,exact_min,exact_max,listed_as,solver,seen_every_clock\n");
     for r in rows {
         t.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
             r.name,
             r.format.replace(',', ";"),
             r.q,
@@ -155,7 +158,8 @@ pub fn csv(rows: &[Row]) -> String {
             r.wrap.map(|w| w.0.to_string()).unwrap_or_default(),
             r.wrap.map(|w| w.1.to_string()).unwrap_or_default(),
             r.wrap.and(r.listed).map(|l| l.kind.name()).unwrap_or_default(),
-            r.solver.as_ref().map_or("", |s| s.0)
+            r.solver.as_ref().map_or("", |s| s.0),
+            r.every as u8
         ));
     }
     t
@@ -197,14 +201,17 @@ pub fn run(
     if stateless_all {
         // a unit without state, every input applied: each signal took every value it can take
         println!(
-            "proven by exhaustion: every input applied to a unit without state, so the seen ranges are the exact ones"
+            "proven by exhaustion: every input applied to a unit without state, so the seen ranges are the exact ones \
+             over data"
         );
     }
     println!("rtl against the model on the same vectors: {mismatches} of {n} differ");
     println!(
-        "seen: the range over those vectors in simulation; proven: over every input sequence (interval analysis of"
+        "seen: the range over those vectors in simulation, on the clocks where the signal's stage holds one (the unit's"
     );
-    println!("the block's hdl); needs / spare: bits that range needs, and the declared bits it leaves at the top;");
+    println!("valid in that many clocks before; ~ on every clock: a valid flag, or a signal with no single stage);");
+    println!("proven: over every input sequence and reachable state, idle clocks too (interval analysis of the block's hdl);");
+    println!("needs / spare: bits that range needs, and the declared bits it leaves at the top;");
     println!("! two or more bits never used by the data seen; where the step writing a signal computes, with each operand read");
     println!("in its declared format, more than the declared range holds: W a risk (not listed), w a wrap on purpose (a split or");
     println!("modular arithmetic), a in range for a reason intervals do not carry (argued): each listed below with its reason");
@@ -220,7 +227,7 @@ pub fn run(
             r.format,
             r.q,
             r.bits,
-            format!("{} .. {}", r.min, r.max),
+            format!("{} .. {}{}", r.min, r.max, if r.every { "~" } else { " " }),
             r.needed,
             r.spare(),
             format!("{} .. {}", r.proven.0, r.proven.1),

@@ -151,6 +151,7 @@ pub fn prove(unit: &Unit, dir: &Path, o: &Options) -> Result<Proved, String> {
         signed: &signed,
         ranges: &ranges,
         skip: &skip,
+        gate: &|_: &str, n: &str| listed(n).is_some_and(|w| w.kind == WrapKind::Bound),
     })?;
     let depth = rtl.latency() + 2;
     let limit = o.limit.unwrap_or(Duration::from_secs(600));

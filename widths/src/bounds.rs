@@ -309,7 +309,7 @@ pub(crate) struct Collect {
     path: Vec<String>,
     pub(crate) modules: Vec<Module>,
     pub(crate) widths: HashMap<String, u32>,
-    consts: HashMap<String, V>,
+    pub(crate) consts: HashMap<String, V>,
 }
 
 impl Probe for Collect {

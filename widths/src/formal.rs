@@ -16,6 +16,7 @@
 //! range.
 
 use crate::bounds::{full_name, index_value, literal, literal_value, Code, Collect};
+use crate::stages::{stages, Stage};
 use rust_hdl::core::ast::{
     VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogOp, VerilogOpUnary, VerilogStatement as S,
 };
@@ -52,6 +53,9 @@ pub struct Prop {
     pub hi: i128,
     /// its line in the harness's text (1-based), as the solver names a failed assertion
     pub line: usize,
+    /// claimed only on the clocks where this stage holds a pixel (`stages`): the unit's `valid_in` that many clocks
+    /// before; none: on every clock, idle ones too
+    pub stage: Option<u32>,
 }
 
 /// The exported Verilog with the assertions in it.
@@ -76,6 +80,9 @@ pub struct Request<'a> {
     pub ranges: &'a [(String, i128, i128)],
     /// the exact steps not to assert, and why: (block path, signal) → a reason (a step that wraps on purpose)
     pub skip: &'a dyn Fn(&str, &str) -> Option<String>,
+    /// the exact steps to claim only where their stage holds a pixel (block path, signal): an argued step whose
+    /// argument is about data, which a register's reset zero or a bubble need not keep
+    pub gate: &'a dyn Fn(&str, &str) -> bool,
 }
 
 /// The widest word a step's exact value is computed in; a step that needs more is not tried.
@@ -418,7 +425,15 @@ impl Walk<'_> {
                 self.line(format!("bp{k}_x = {text};"));
                 self.line(format!("bw_{id} = {k};"));
                 self.steps.push((k, id.clone(), w));
-                self.props.push(Prop { signal: n, block: self.path.into(), kind: Kind::Exact, lo, hi, line: 0 });
+                self.props.push(Prop {
+                    signal: n,
+                    block: self.path.into(),
+                    kind: Kind::Exact,
+                    lo,
+                    hi,
+                    line: 0,
+                    stage: None,
+                });
                 if self.unsafe_depth > 0 {
                     self.tainted.insert(id);
                 }
@@ -560,6 +575,11 @@ fn module_name(top: &str, path: &str) -> String {
 pub fn harness(block: &dyn Block, r: &Request) -> Result<Harness, String> {
     let mut c = Collect::default();
     block.accept("uut", &mut c);
+    let ports: Vec<&str> = r.inputs.iter().map(|i| i.0).collect();
+    let stage = stages(block, &ports);
+    // the modules with a claim gated by its stage, and the deepest stage gated
+    let mut gated: HashSet<String> = HashSet::new();
+    let mut deepest = 0;
     let mut per_module: HashMap<String, Vec<String>> = HashMap::new();
     let mut props: Vec<Prop> = vec![];
     let mut skipped = vec![];
@@ -605,14 +625,22 @@ pub fn harness(block: &dyn Block, r: &Request) -> Result<Harness, String> {
         text.push("    end".into());
         text.push("    always @(*) begin".into());
         let first = w.first;
-        for (i, p) in w.props.into_iter().enumerate() {
+        for (i, mut p) in w.props.into_iter().enumerate() {
             let (k, id, width) = &w.steps[i];
             if w.tainted.contains(id) {
                 skipped.push((p.signal, "a branch above it tests a signal its block writes later".into()));
                 continue;
             }
+            if (r.gate)(&md.path, &p.signal) {
+                if let Some(Stage::At(d)) = stage.get(&p.signal) {
+                    p.stage = Some(*d);
+                    deepest = deepest.max(*d);
+                    gated.insert(md.path.clone());
+                }
+            }
+            let when = p.stage.map_or(String::new(), |d| format!("!fv_valid[{d}] || "));
             text.push(format!(
-                "        assert(bw_{id} != {k} || (bp{k}_x >= {} && bp{k}_x <= {})); // bumprtl prop {}",
+                "        assert({when}bw_{id} != {k} || (bp{k}_x >= {} && bp{k}_x <= {})); // bumprtl prop {}",
                 lit(p.lo, *width),
                 lit(p.hi, *width),
                 props.len() + 1
@@ -639,7 +667,15 @@ pub fn harness(block: &dyn Block, r: &Request) -> Result<Harness, String> {
             lit(*hi, w),
             props.len() + 1
         ));
-        props.push(Prop { signal: n.clone(), block: path.into(), kind: Kind::Range, lo: *lo, hi: *hi, line: 0 });
+        props.push(Prop {
+            signal: n.clone(),
+            block: path.into(),
+            kind: Kind::Range,
+            lo: *lo,
+            hi: *hi,
+            line: 0,
+            stage: None,
+        });
     }
     // the inputs inside their ranges
     let mut assumes = vec![];
@@ -654,8 +690,43 @@ pub fn harness(block: &dyn Block, r: &Request) -> Result<Harness, String> {
         ));
     }
     per_module.entry("uut".into()).or_default().extend(assumes);
-    // into the text, before each module's `endmodule`
     let mut text = r.verilog.to_string();
+    if !gated.is_empty() {
+        // which clocks hold a pixel at each stage: bit d of `fv_valid` is `valid_in` d clocks before, made in the top
+        // module and passed down as a port to every module with a gated claim and those between it and the top
+        let d = deepest.max(1);
+        per_module.entry("uut".into()).or_default().extend([
+            format!("    reg [{d}:1] fv_hist = 0;"),
+            format!("    wire [{d}:0] fv_valid = {{fv_hist, valid_in}};"),
+            format!("    always @(posedge clock) fv_hist <= fv_valid[{}:0];", d - 1),
+        ]);
+        let mut down: Vec<String> = vec![];
+        for g in &gated {
+            let mut at = g.as_str();
+            while at != "uut" {
+                down.push(at.to_string());
+                at = at.rsplit_once('.').map_or("uut", |x| x.0);
+            }
+        }
+        down.sort();
+        down.dedup();
+        for path in &down {
+            let name = module_name(r.top, path);
+            let head = format!("module {name}(");
+            let at = text.find(&head).ok_or(format!("the export has no module {name} for {path}"))?;
+            let eol = at + text[at..].find('\n').ok_or(format!("module {name}: no header line"))?;
+            text.insert_str(
+                eol + 1,
+                &format!("    input wire [{d}:0] fv_valid; // the formal harness's stage flags\n"),
+            );
+            text.insert_str(at + head.len(), "fv_valid,");
+            let inst = format!("\n    {name} ");
+            let at = text.find(&inst).ok_or(format!("no instance of {name}"))?;
+            let open = at + text[at..].find("(\n").ok_or(format!("{name}: no port list"))?;
+            text.insert_str(open + 1, "\n        .fv_valid(fv_valid),");
+        }
+    }
+    // into the text, before each module's `endmodule`
     let mut paths: Vec<&String> = per_module.keys().collect();
     paths.sort();
     for path in paths {

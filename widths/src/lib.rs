@@ -12,6 +12,7 @@
 
 pub mod bounds;
 pub mod formal;
+pub mod stages;
 pub mod wraps;
 
 use rtl::prim::declared::{Declaration, Declared};
@@ -334,9 +335,17 @@ pub struct Seen {
     pub umax: u64,
     pub smin: i64,
     pub smax: i64,
+    /// the clocks the range is over: those where the signal's stage held a pixel, or every clock where `every`
+    pub clocks: u64,
+    /// read on every clock: a valid flag, or a signal with no single stage (`stages`)
+    pub every: bool,
+    /// its stage, where it has one
+    pub stage: Option<u32>,
 }
 
-/// Every signal's range over a run (the signals in the probe's order, which is the block's field order).
+/// Every signal's range over a run (the signals in the probe's order, which is the block's field order), each read
+/// on the clocks where it holds data: a signal at stage d (`stages`) where `valid_in` was high d clocks before, so
+/// neither the registers' zeros before the first pixel nor what a bubble leaves behind count.
 #[derive(Default)]
 pub struct Ranges {
     pub signals: Vec<Seen>,
@@ -346,6 +355,11 @@ pub struct Ranges {
     pub outputs: Vec<Vec<u64>>,
     path: Vec<String>,
     next: usize,
+    /// each signal's stage, by name, and then by its place in the probe's order (none: read every clock)
+    stages: HashMap<String, stages::Stage>,
+    gates: Vec<Option<usize>>,
+    /// `valid_in` on each clock so far
+    valid: Vec<bool>,
 }
 
 /// The path is only read on the first clock, when the signals are named: later clocks keep no names.
@@ -372,19 +386,47 @@ impl Probe for Ranges {
         let bits = a.bits();
         let s = if bits < 64 && bits > 0 && v >> (bits - 1) & 1 == 1 { v as i64 - (1i64 << bits) } else { v as i64 };
         if self.clocks == 0 {
-            // the first clock: the signals in visiting order, named as the VCD names them
+            // the first clock: the signals in visiting order, named as the VCD names them, each with its stage
+            // (the valid flags themselves are read on every clock: they say which clocks hold data)
             let full = format!("{}.{name}", self.path.join("."));
-            self.signals.push(Seen { name: full, bits, umin: v, umax: v, smin: s, smax: s });
-        } else {
-            let r = &mut self.signals[self.next];
-            (r.umin, r.umax, r.smin, r.smax) = (r.umin.min(v), r.umax.max(v), r.smin.min(s), r.smax.max(s));
+            let flag = full.split('.').skip(1).any(|seg| seg.starts_with("valid"));
+            let stage = match self.stages.get(&full) {
+                Some(stages::Stage::At(d)) => Some(*d),
+                _ => None,
+            };
+            let gate = stage.filter(|_| !flag).map(|d| d as usize);
+            self.gates.push(gate);
+            let every = gate.is_none();
+            let empty = Seen {
+                name: full,
+                bits,
+                umin: u64::MAX,
+                umax: 0,
+                smin: i64::MAX,
+                smax: i64::MIN,
+                clocks: 0,
+                every,
+                stage,
+            };
+            self.signals.push(empty);
         }
+        let k = self.next;
         self.next += 1;
+        let now = self.clocks as usize;
+        if let Some(d) = self.gates[k] {
+            if d > now || !self.valid[now - d] {
+                return;
+            }
+        }
+        let r = &mut self.signals[k];
+        (r.umin, r.umax, r.smin, r.smax) = (r.umin.min(v), r.umax.max(v), r.smin.min(s), r.smax.max(s));
+        r.clocks += 1;
     }
 }
 
 /// The unit's vectors through its rust-hdl block, every signal probed every clock (the flush included: the last
-/// vectors are still in the pipeline then, bubbles with zero inputs behind them).
+/// vectors are still in the pipeline then, bubbles with zero inputs behind them) and counted where its stage holds
+/// a vector.
 pub fn seen<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>]) -> Ranges {
     seen_ticking::<U>(m, inputs, &|_| {})
 }
@@ -393,6 +435,8 @@ pub fn seen<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>]) -> Ranges {
 pub fn seen_ticking<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>], tick: &dyn Fn(usize)) -> Ranges {
     let mut r = Runner::<U>::new();
     let mut ranges = Ranges::default();
+    let ports: Vec<&str> = U::INPUTS.iter().map(|p| p.0).collect();
+    ranges.stages = stages::stages(&U::build(), &ports);
     let zeros = vec![0u64; U::INPUTS.len()];
     let slots = rtl::stream::paced::<U>(inputs.iter().map(|v| vectors::unit::to_patterns(v, m.inputs)))
         .chain((0..U::LATENCY + 1).map(|_| None));
@@ -401,12 +445,17 @@ pub fn seen_ticking<U: StreamUnit>(m: &UnitModel, inputs: &[Vec<i64>], tick: &dy
             tick((k / U::INTERVAL).min(inputs.len()));
         }
         ranges.next = 0;
+        ranges.valid.push(s.is_some());
         let out = match &s {
             Some(v) => r.step_probed(true, v, Some(&mut ranges)),
             None => r.step_probed(false, &zeros, Some(&mut ranges)),
         };
         ranges.outputs.extend(out);
         ranges.clocks += 1;
+    }
+    // a signal whose stage never held data (none here: every vector is flushed through) reads as zero
+    for r in ranges.signals.iter_mut().filter(|r| r.clocks == 0) {
+        (r.umin, r.umax, r.smin, r.smax) = (0, 0, 0, 0);
     }
     ranges
 }
@@ -457,7 +506,7 @@ pub fn analyse<U: StreamUnit>(m: &UnitModel) -> Analysis {
 pub fn audit(ranges: &Ranges, a: &Analysis) -> Vec<String> {
     let mut bad = vec![];
     for s in &ranges.signals {
-        if s.name.ends_with("clock") {
+        if s.name.ends_with("clock") || s.clocks == 0 {
             continue;
         }
         let Some(fmt) = a.formats.format(&s.name) else {

@@ -345,7 +345,9 @@ pub const WAIVED: &[Waived] = &[
         the sum ≤ 254; intervals do not carry the T = 255 test into T − 127"),
     w("CartDecode", "s3_mx.d", Bound, "127 + (ax − az) ∈ 0..254 and 2·ax ≤ 254, for ax, az ≤ 127 (as s2_sum)"),
     w("CartDecode", "s3_mz.d", Bound, "as s3_mx"),
-    w("CartDecode", "twice_sum", Bound, "2·sum is read only where the sum is below 128 (bit 7 clear): ≤ 254"),
+    w("CartDecode", "twice_sum", Split, "the low 8 bits of 2·sum, read only where the sum is below 128 (bit 7 clear, \
+        2·sum ≤ 254); where the sum is 128 or more it wraps and the guard takes the other branch (a solver refuted \
+        this step's bound at sum = 128, when it was listed as argued)"),
     w("CartDecodeHemiOct", "s3_y.d", Bound, "|x| + |z| = max(|2U − 255|, |2V − 255|) ≤ 255 for every texel (x = U + V − 255, \
         z = U − V), so 255 − |x| − |z| ≥ 0"),
     w("LightLane", "w_hi", Split, "the top 5 bits of the S14, a test only"),
