@@ -261,6 +261,11 @@ enum Cmd {
         /// cart_pipeline at C = 0, cart_surface against cart_pipeline with three equal lights
         #[arg(long)]
         equivalences: bool,
+        /// instead of the width claims, the rules of each unit's AXI4-Stream wrapper as exported (no valid waits on
+        /// a ready, tdata stable until taken, nothing offered or taken in reset, no beat lost, duplicated, reordered
+        /// or changed, a k-clock variant's pace), against the bare unit as the reference
+        #[arg(long)]
+        axis: bool,
     },
     /// The hard cases the patents and the paper warn about, unit by unit: what they ask, what the rtl does
     /// (rust-hdl, held to the model), pass or fail, as a Markdown table; fails if any row fails
@@ -423,9 +428,13 @@ pub fn main() -> Result<(), String> {
         }
         Cmd::Minify { scene, out, samples, lod_bias } => crate::minify::run(scene.as_deref(), &out, samples, lod_bias)?,
         Cmd::Hardcases => crate::unit_commands::hardcases()?,
-        Cmd::Prove { units, all, dir, narrow, limit, exact_only, md, equivalences } => {
+        Cmd::Prove { units, all, dir, narrow, limit, exact_only, md, equivalences, axis } => {
             let o = sim::prove::Options { narrow, limit: Some(std::time::Duration::from_secs(limit)), exact_only };
-            crate::prove::run(&units, all, equivalences, &dir, &o, md.as_deref())?
+            if axis {
+                crate::prove::axis(&units, all, &dir, &o, md.as_deref())?
+            } else {
+                crate::prove::run(&units, all, equivalences, &dir, &o, md.as_deref())?
+            }
         }
         Cmd::Demo { out, .. } if out.as_os_str() == "-" => {
             return Err("--out -: the demo writes a folder of pictures, waveforms and Verilog; name a folder".into())

@@ -59,6 +59,57 @@ fn table(p: &Proved) -> String {
     t
 }
 
+/// `prove --axis`: each unit's wrapper's rules, a table a unit.
+pub fn axis(names: &[String], all: bool, dir: &Path, o: &Options, md: Option<&Path>) -> Result<(), String> {
+    if let Some(f) = md {
+        crate::output::writable_file(f)?;
+    }
+    crate::output::writable_folder(dir)?;
+    let units = pick(names, all)?;
+    let limit = o.limit.unwrap_or(std::time::Duration::from_secs(600));
+    let mut text = String::from("| unit | rule | solver | s | trace |\n|---|---|---|---|---|\n");
+    let mut failed = vec![];
+    for u in units {
+        let name = u.rtl.name();
+        eprintln!("prove the AXI4-Stream rules of {name} …");
+        let p = match sim::axis_rules::prove(u, &dir.join(format!("{name}_axis")), 0, None, limit) {
+            Ok(p) => p,
+            Err(e) => {
+                eprintln!("bumprtl: {e}");
+                text.push_str(&format!("| {name} | | error: {} | | |\n", e.replace('|', "/")));
+                failed.push(name);
+                continue;
+            }
+        };
+        for r in &p.rules {
+            let (word, trace) = match &r.status {
+                Status::Proven if r.unbounded => ("proven (every trace)".to_string(), String::new()),
+                Status::Proven => (format!("proven to {} clocks from reset", p.depth), String::new()),
+                Status::Refuted(t) => ("refuted".into(), t.clone()),
+                Status::NotTried(w) => ("not tried".into(), w.clone()),
+            };
+            text.push_str(&format!("| {name} | {} | {word} | {:.1} | {trace} |\n", r.name, r.seconds));
+        }
+        text.push_str(&format!("| {name} | (all, {} clocks) | | {:.1} | |\n", p.depth, p.seconds));
+    }
+    println!("{text}");
+    if let Some(f) = md {
+        synth::export::write_atomic(f, text.as_bytes())?;
+    }
+    if !failed.is_empty() {
+        return Err(format!("prove --axis: no verdict for {} (each error above)", failed.join(", ")));
+    }
+    Ok(())
+}
+
+fn pick(names: &[String], all: bool) -> Result<Vec<&'static sim::units::Unit>, String> {
+    if all {
+        Ok(sim::units::UNITS.iter().collect())
+    } else {
+        names.iter().map(|n| sim::units::unit(n)).collect()
+    }
+}
+
 pub fn run(
     names: &[String],
     all: bool,
@@ -71,11 +122,7 @@ pub fn run(
         crate::output::writable_file(f)?;
     }
     crate::output::writable_folder(dir)?;
-    let units: Vec<&'static sim::units::Unit> = if all {
-        sim::units::UNITS.iter().collect()
-    } else {
-        names.iter().map(|n| sim::units::unit(n)).collect::<Result<_, _>>()?
-    };
+    let units = pick(names, all)?;
     let several = units.len() > 1;
     let mut text = String::new();
     let mut proved: Vec<Proved> = vec![];

@@ -2,6 +2,7 @@
 //! simulation of the rtl and the Verilator build of its exported Verilog; PNG images, error heat maps and VCDs.
 
 pub mod accuracy;
+pub mod axis_rules;
 pub mod fst;
 pub mod gtkw;
 pub mod heightmap;

@@ -275,14 +275,14 @@ fn ladder(
     Ok((status, runs))
 }
 
-enum Run {
+pub(crate) enum Run {
     Passed,
     /// the failed assertions' lines in the harness, and the trace's inputs
     Failed(Vec<usize>, String),
     Timeout,
 }
 
-fn run_once(
+pub(crate) fn run_once(
     dir: &Path,
     top: &str,
     lines: &[String],
@@ -409,7 +409,7 @@ fn inputs_of(vcd: &PathBuf, top: &str) -> Option<String> {
 }
 
 /// A top module's ports as its export declares them: (name, bits, is an input), clock included.
-fn ports(verilog: &str, top: &str) -> Result<Vec<(String, u32, bool)>, String> {
+pub(crate) fn ports(verilog: &str, top: &str) -> Result<Vec<(String, u32, bool)>, String> {
     let head = format!("module {top}(");
     let at = verilog.find(&head).ok_or_else(|| format!("the export has no module {top}"))?;
     let mut out = vec![];

@@ -121,3 +121,29 @@ fn gloss_at_c_0_and_light_iter_with_equal_lights_pass_their_input_through() {
     assert_eq!(light.unwrap().status, Status::Proven);
     assert!(matches!(wrong.unwrap().status, Status::Refuted(_)));
 }
+
+/// cart_decode's AXI4-Stream wrapper keeps its rules, against the bare unit, over every trace of 16 clocks from
+/// reset (the flush after a reset, then beats through the unit and out); "none lost" over 20 (its quiet clocks, the
+/// latency, the FIFO and two, come after a beat taken). And the check can fail: "none lost" after only the unit's
+/// latency in quiet clocks is refuted, since a beat takes one clock more to leave (which also shows the traces
+/// are long enough for beats to come out). The default depth, 20 for every rule, is `prove --axis`'s.
+#[test]
+fn the_axis_wrapper_keeps_its_rules_and_a_drain_too_short_is_refuted() {
+    use sim::axis_rules::{prove_rules, RULES};
+    use std::time::Duration;
+    let u = sim::units::unit("cart_decode").unwrap();
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("prove-axis-{}", std::process::id()));
+    let limit = Duration::from_secs(300);
+    let rest: Vec<&str> = RULES.iter().copied().filter(|r| *r != "none lost").collect();
+    let good = prove_rules(u, &dir.join("good"), 16, None, limit, &rest).unwrap();
+    let lost = prove_rules(u, &dir.join("lost"), 0, None, limit, &["none lost"]).unwrap();
+    let short = prove_rules(u, &dir.join("short"), 0, Some(u.rtl.latency()), limit, &["none lost"]).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(good.rules.len(), RULES.len());
+    for r in good.rules.iter().chain(&lost.rules) {
+        assert_eq!(r.status, Status::Proven, "{}", r.name);
+    }
+    assert_eq!(lost.depth, 2 * u.rtl.latency() + u.axis.fifo().0 + 6);
+    let r = short.rules.iter().find(|r| r.name == "none lost").unwrap();
+    assert!(matches!(r.status, Status::Refuted(_)), "{:?}", r.status);
+}

@@ -69,12 +69,15 @@ pub fn run_limited_any(
     limit: std::time::Duration,
 ) -> Result<(Output, bool), String> {
     use std::io::Read;
-    use std::os::unix::process::ExitStatusExt;
+    use std::os::unix::process::{CommandExt, ExitStatusExt};
     use std::process::Stdio;
     let prog = prog.as_ref();
+    // in a process group of its own, so that at the limit its children go with it (yosys-smtbmc's solver, which
+    // would otherwise run on, orphaned, holding its memory)
     let mut child = Command::new(prog)
         .args(args)
         .current_dir(dir)
+        .process_group(0)
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -98,7 +101,9 @@ pub fn run_limited_any(
             Ok(None) if start.elapsed() < limit => std::thread::sleep(std::time::Duration::from_millis(50)),
             // at the limit, or when the child cannot be watched: stopped, and waited for
             polled => {
-                killed = child.kill().is_ok();
+                let group = format!("-{}", child.id());
+                let _ = Command::new("kill").args(["-KILL", "--", &group]).status();
+                killed = child.kill().is_ok() || polled.is_ok();
                 let status = child.wait();
                 break polled.and(status);
             }
