@@ -263,8 +263,8 @@ enum Cmd {
         equivalences: bool,
         /// instead of the width claims, the rules of each unit's AXI4-Stream wrapper as exported (no valid waits on
         /// a ready, tdata stable until taken, nothing offered or taken in reset, no beat lost, duplicated, reordered
-        /// or changed, a k-clock variant's pace), against the bare unit as the reference
-        #[arg(long)]
+        /// or changed), against the bare unit as the reference; a map unit's structural rule only
+        #[arg(long, conflicts_with_all = ["equivalences", "narrow", "exact_only"])]
         axis: bool,
     },
     /// The hard cases the patents and the paper warn about, unit by unit: what they ask, what the rtl does

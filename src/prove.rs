@@ -83,7 +83,7 @@ pub fn axis(names: &[String], all: bool, dir: &Path, o: &Options, md: Option<&Pa
         };
         for r in &p.rules {
             let (word, trace) = match &r.status {
-                Status::Proven if r.unbounded => ("proven (every trace)".to_string(), String::new()),
+                Status::Proven if r.unbounded() => ("proven (every trace)".to_string(), String::new()),
                 Status::Proven => (format!("proven to {} clocks from reset", p.depth), String::new()),
                 Status::Refuted(t) => ("refuted".into(), t.clone()),
                 Status::NotTried(w) => ("not tried".into(), w.clone()),

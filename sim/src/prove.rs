@@ -506,7 +506,6 @@ pub fn equivalence(m: &Miter, dir: &Path, limit: Duration) -> Result<Equivalence
             conn_b.push(format!(".{n}({src})"));
         }
     }
-    let decl = |n: &str, bits: u32| if bits == 1 { n.to_string() } else { format!("[{}:0] {n}", bits - 1) };
     let names: Vec<&str> = free.iter().map(|f| f.0.as_str()).collect();
     text.push_str(&format!("module {top}(clock, {});\n    input wire clock;\n", names.join(", ")));
     for (n, bits, _) in &free {
@@ -558,25 +557,21 @@ pub fn equivalence(m: &Miter, dir: &Path, limit: Duration) -> Result<Equivalence
         lines.push(format!("    always @(*) assert({claim}); // bumprtl prop {k}"));
     }
     for (n, bits, (lo, hi)) in &free {
-        let w = bits + 2;
-        let v = if *lo < 0 {
-            let top = if *bits == 1 { n.clone() } else { format!("{n}[{}]", bits - 1) };
-            format!("$signed({{{{2{{{top}}}}}, {n}}})")
-        } else {
-            format!("$signed({{2'd0, {n}}})")
-        };
-        let l = |x: i64| if x < 0 { format!("(-{w}'sd{})", -(x as i128)) } else { format!("{w}'sd{x}") };
-        lines.push(format!("    always @(*) assume({v} >= {} && {v} <= {});", l(*lo), l(*hi)));
+        lines.push(assume_range(n, *bits, *lo, *hi));
     }
     text.push_str(&lines.join("\n"));
     text.push_str("\nendmodule\n");
+    decide(dir, top, &text, la.max(lb) + 2, limit)
+}
+
+/// A harness's verdict: its `// bumprtl prop` claims decided by `ladder` up to `depth`; refuted if any claim is, not
+/// tried if any is, else proven.
+fn decide(dir: &Path, top: String, text: &str, depth: usize, limit: Duration) -> Result<Equivalence, String> {
     let base: Vec<String> = text.lines().map(String::from).collect();
     let props: Vec<usize> =
         base.iter().enumerate().filter(|(_, l)| l.contains("// bumprtl prop ")).map(|(i, _)| i + 1).collect();
-    let depth = la.max(lb) + 2;
     let start = Instant::now();
     let (status, runs) = ladder(dir, &top, &base, &props, depth, limit)?;
-    // the miter's verdict: refuted if any output is, proven if all are
     let verdict = status
         .iter()
         .map(|s| s.0.clone())
@@ -584,6 +579,29 @@ pub fn equivalence(m: &Miter, dir: &Path, limit: Duration) -> Result<Equivalence
         .or_else(|| status.iter().map(|s| s.0.clone()).find(|s| matches!(s, Status::NotTried(_))))
         .unwrap_or(Status::Proven);
     Ok(Equivalence { name: top, status: verdict, depth, runs, seconds: start.elapsed().as_secs_f64() })
+}
+
+/// A Verilog declaration's range and name: `n` alone for one bit, `[bits-1:0] n` otherwise.
+fn decl(n: &str, bits: u32) -> String {
+    if bits == 1 {
+        n.to_string()
+    } else {
+        format!("[{}:0] {n}", bits - 1)
+    }
+}
+
+/// The assumption that the free input `n` (`bits` wide, two's complement where `lo` < 0) lies in `lo ..= hi`,
+/// compared two bits wider so neither end wraps.
+fn assume_range(n: &str, bits: u32, lo: i64, hi: i64) -> String {
+    let w = bits + 2;
+    let v = if lo < 0 {
+        let top = if bits == 1 { n.to_string() } else { format!("{n}[{}]", bits - 1) };
+        format!("$signed({{{{2{{{top}}}}}, {n}}})")
+    } else {
+        format!("$signed({{2'd0, {n}}})")
+    };
+    let l = |x: i64| if x < 0 { format!("(-{w}'sd{})", -(x as i128)) } else { format!("{w}'sd{x}") };
+    format!("    always @(*) assume({v} >= {} && {v} <= {});", l(lo), l(hi))
 }
 
 /// The equivalences the project claims (and tests on random vectors), each as a miter decided in `dir/<miter>/`:
@@ -656,7 +674,6 @@ pub fn echo(
             *input && n != "clock" && !fix.iter().any(|f| f.0 == n) && !same.iter().any(|s| s.0 == n)
         })
         .collect();
-    let decl = |n: &str, bits: u32| if bits == 1 { n.to_string() } else { format!("[{}:0] {n}", bits - 1) };
     let mut text = format!(
         "{v}\nmodule {top}(clock, {});\n    input wire clock;\n",
         free.iter().map(|f| f.0.as_str()).collect::<Vec<_>>().join(", ")
@@ -693,30 +710,10 @@ pub fn echo(
     }
     for (n, bits, _) in &free {
         if let Some((lo, hi)) = u.model.inputs.iter().find(|i| i.name == n).map(|i| i.range()) {
-            let w = bits + 2;
-            let v = if lo < 0 {
-                let t = if *bits == 1 { n.clone() } else { format!("{n}[{}]", bits - 1) };
-                format!("$signed({{{{2{{{t}}}}}, {n}}})")
-            } else {
-                format!("$signed({{2'd0, {n}}})")
-            };
-            let c = |x: i64| if x < 0 { format!("(-{w}'sd{})", -(x as i128)) } else { format!("{w}'sd{x}") };
-            lines.push(format!("    always @(*) assume({v} >= {} && {v} <= {});", c(lo), c(hi)));
+            lines.push(assume_range(n, *bits, lo, hi));
         }
     }
     text.push_str(&lines.join("\n"));
     text.push_str("\nendmodule\n");
-    let base: Vec<String> = text.lines().map(String::from).collect();
-    let props: Vec<usize> =
-        base.iter().enumerate().filter(|(_, l)| l.contains("// bumprtl prop ")).map(|(i, _)| i + 1).collect();
-    let depth = l + 2;
-    let start = Instant::now();
-    let (status, runs) = ladder(dir, &top, &base, &props, depth, limit)?;
-    let verdict = status
-        .iter()
-        .map(|s| s.0.clone())
-        .find(|s| matches!(s, Status::Refuted(_)))
-        .or_else(|| status.iter().map(|s| s.0.clone()).find(|s| matches!(s, Status::NotTried(_))))
-        .unwrap_or(Status::Proven);
-    Ok(Equivalence { name: top, status: verdict, depth, runs, seconds: start.elapsed().as_secs_f64() })
+    decide(dir, top, &text, l + 2, limit)
 }

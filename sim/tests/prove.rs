@@ -147,3 +147,30 @@ fn the_axis_wrapper_keeps_its_rules_and_a_drain_too_short_is_refuted() {
     let r = short.rules.iter().find(|r| r.name == "none lost").unwrap();
     assert!(matches!(r.status, Status::Refuted(_)), "{:?}", r.status);
 }
+
+/// A unit with a map write port (height_fetch) has its structural rule proven on its wrapper's netlist and every
+/// rule that needs the bare unit as a reference not tried, with the reason, rather than an error.
+#[test]
+fn a_map_units_wrapper_proves_its_structural_rule_and_says_why_the_rest_are_not_tried() {
+    use sim::axis_rules::{prove, RULES, STRUCTURAL};
+    use std::time::Duration;
+    let u = sim::units::unit("height_fetch").unwrap();
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("prove-axis-map-{}", std::process::id()));
+    let p = prove(u, &dir, 0, None, Duration::from_secs(300)).unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(p.rules.len(), RULES.len() + 1);
+    for r in &p.rules {
+        if r.name == STRUCTURAL {
+            assert_eq!(r.status, Status::Proven);
+            assert!(r.unbounded());
+        } else {
+            assert!(
+                matches!(&r.status, Status::NotTried(w) if w.contains("map write port")),
+                "{}: {:?}",
+                r.name,
+                r.status
+            );
+            assert!(!r.unbounded());
+        }
+    }
+}
