@@ -12,7 +12,7 @@
 //! grows: the least fixed point, which holds every value any input sequence within the ports' ranges can produce.
 
 use rust_hdl::core::ast::{
-    Verilog, VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogOp, VerilogOpUnary,
+    Verilog, VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogLoop, VerilogOp, VerilogOpUnary,
     VerilogStatement as S,
 };
 use rust_hdl::core::atom::{Atom, AtomKind};
@@ -267,6 +267,30 @@ fn binary(a: V, op: &VerilogOp, b: V) -> V {
     }
 }
 
+/// A walk over a module's statements, each `for` loop unrolled by its literal bounds with the index's value in
+/// `loops` while its body is walked (what `full_name` and `index_value` read): the interval evaluation, the solver's
+/// harness and the stages each implement `step` and share the rest.
+pub(crate) trait Walker {
+    /// one statement
+    fn step(&mut self, s: &S);
+    /// the loop indices' values, outermost first
+    fn loops(&mut self) -> &mut Vec<(String, i128)>;
+    fn block(&mut self, b: &VerilogBlock) {
+        for s in b {
+            self.step(s);
+        }
+    }
+    fn unroll(&mut self, l: &VerilogLoop) {
+        let from = literal(&l.from.to_string()).map_or(0, |x| x.0);
+        let to = literal(&l.to.to_string()).map_or(0, |x| x.0);
+        for k in from..to {
+            self.loops().push((l.index.clone(), k));
+            self.block(&l.block);
+            self.loops().pop();
+        }
+    }
+}
+
 /// A literal as rust-hdl prints it: `12'h7ff`, `5'b10011`.
 pub(crate) fn literal(text: &str) -> Option<(i128, u32)> {
     let (bits, rest) = text.split_once('\'')?;
@@ -477,6 +501,15 @@ struct Eval<'s, 'a> {
     cur: HashMap<String, Write>,
     /// the signals whose values so far this evaluation has read
     reads: std::cell::RefCell<Vec<String>>,
+}
+
+impl Walker for Eval<'_, '_> {
+    fn step(&mut self, s: &S) {
+        self.stmt(s)
+    }
+    fn loops(&mut self) -> &mut Vec<(String, i128)> {
+        &mut self.loops
+    }
 }
 
 impl Eval<'_, '_> {
@@ -708,12 +741,6 @@ impl Eval<'_, '_> {
         }
     }
 
-    fn block(&mut self, b: &VerilogBlock) {
-        for s in b {
-            self.stmt(s);
-        }
-    }
-
     fn branch(
         &mut self,
         refine: Option<(String, V)>,
@@ -805,17 +832,7 @@ impl Eval<'_, '_> {
                     mt.cases.iter().map(|c| self.branch(None, &|e| e.block(&c.block), &base)).collect();
                 self.merge(&base, outs);
             }
-            S::Loop(l) => {
-                let (from, to) = (
-                    literal(&l.from.to_string()).map(|x| x.0).unwrap_or(0),
-                    literal(&l.to.to_string()).map(|x| x.0).unwrap_or(0),
-                );
-                for k in from..to {
-                    self.loops.push((l.index.clone(), k));
-                    self.block(&l.block);
-                    self.loops.pop();
-                }
-            }
+            S::Loop(l) => self.unroll(l),
             S::Macro(b) => self.block(b),
             S::Comment(_) | S::Link(_) => {}
         }

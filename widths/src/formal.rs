@@ -15,10 +15,10 @@
 //! block writes again later (in program order) is not tried. The top module assumes each input port inside its
 //! range.
 
-use crate::bounds::{full_name, index_value, literal, literal_value, Code, Collect};
+use crate::bounds::{full_name, index_value, literal, literal_value, Code, Collect, Walker};
 use crate::stages::{stages, Stage};
 use rust_hdl::core::ast::{
-    VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogOp, VerilogOpUnary, VerilogStatement as S,
+    VerilogBlockOrConditional, VerilogExpression as E, VerilogOp, VerilogOpUnary, VerilogStatement as S,
 };
 use rust_hdl::core::block::Block;
 use std::collections::{HashMap, HashSet};
@@ -241,6 +241,15 @@ struct Walk<'a> {
     first: usize,
 }
 
+impl Walker for Walk<'_> {
+    fn step(&mut self, s: &S) {
+        self.stmt(s)
+    }
+    fn loops(&mut self) -> &mut Vec<(String, i128)> {
+        &mut self.loops
+    }
+}
+
 impl Walk<'_> {
     fn line(&mut self, s: String) {
         if self.printing {
@@ -392,12 +401,6 @@ impl Walk<'_> {
         r.iter().any(|s| self.last.get(s).is_some_and(|&p| p > self.pos))
     }
 
-    fn block(&mut self, b: &VerilogBlock) {
-        for s in b {
-            self.stmt(s);
-        }
-    }
-
     fn write(&mut self, id: &str) {
         self.pos += 1;
         if !self.printing {
@@ -545,17 +548,7 @@ impl Walk<'_> {
                 self.line("endcase".into());
                 self.unsafe_depth -= late as usize;
             }
-            S::Loop(l) => {
-                let (from, to) = (
-                    literal(&l.from.to_string()).map(|x| x.0).unwrap_or(0),
-                    literal(&l.to.to_string()).map(|x| x.0).unwrap_or(0),
-                );
-                for k in from..to {
-                    self.loops.push((l.index.clone(), k));
-                    self.block(&l.block);
-                    self.loops.pop();
-                }
-            }
+            S::Loop(l) => self.unroll(l),
             S::Macro(b) => self.block(b),
             S::Comment(_) | S::Link(_) => {}
         }

@@ -10,8 +10,8 @@
 //! (a loop through a register, a k-clock variant's held operand, a stage that mixes two) is `Mixed`, and a signal
 //! no input reaches (a constant, a free-running counter) has no stage: both are read on every clock.
 
-use crate::bounds::{full_name, literal, Code, Collect};
-use rust_hdl::core::ast::{VerilogBlock, VerilogBlockOrConditional, VerilogExpression as E, VerilogStatement as S};
+use crate::bounds::{full_name, Code, Collect, Walker};
+use rust_hdl::core::ast::{VerilogBlockOrConditional, VerilogExpression as E, VerilogStatement as S};
 use rust_hdl::core::block::Block;
 use std::collections::HashMap;
 
@@ -81,12 +81,16 @@ struct Walk<'a> {
     cur: HashMap<String, Vec<String>>,
 }
 
-impl Walk<'_> {
-    fn block(&mut self, b: &VerilogBlock) {
-        for s in b {
-            self.stmt(s);
-        }
+impl Walker for Walk<'_> {
+    fn step(&mut self, s: &S) {
+        self.stmt(s)
     }
+    fn loops(&mut self) -> &mut Vec<(String, i128)> {
+        &mut self.loops
+    }
+}
+
+impl Walk<'_> {
     fn write(&mut self, target: &E, values: &[&E]) {
         let E::Signal(t) = target else { return };
         let mut sources = self.tests.clone();
@@ -135,22 +139,10 @@ impl Walk<'_> {
                 self.sides(&c.test, vec![&|w: &mut Self| w.block(&c.then), &other]);
             }
             S::Match(m) => {
-                let cases: Vec<Box<dyn Fn(&mut Self)>> = m
-                    .cases
-                    .iter()
-                    .map(|c| Box::new(move |w: &mut Self| w.block(&c.block)) as Box<dyn Fn(&mut Self)>)
-                    .collect();
-                self.sides(&m.test, cases.iter().map(|b| b.as_ref()).collect());
+                let cases: Vec<_> = m.cases.iter().map(|c| move |w: &mut Self| w.block(&c.block)).collect();
+                self.sides(&m.test, cases.iter().map(|f| f as &dyn Fn(&mut Self)).collect());
             }
-            S::Loop(l) => {
-                let from = literal(&l.from.to_string()).map_or(0, |x| x.0);
-                let to = literal(&l.to.to_string()).map_or(0, |x| x.0);
-                for k in from..to {
-                    self.loops.push((l.index.clone(), k));
-                    self.block(&l.block);
-                    self.loops.pop();
-                }
-            }
+            S::Loop(l) => self.unroll(l),
             S::Macro(b) => self.block(b),
             S::Comment(_) | S::Link(_) => {}
         }
