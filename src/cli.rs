@@ -270,7 +270,10 @@ enum Cmd {
     /// The hard cases the patents and the paper warn about, unit by unit: what they ask, what the rtl does
     /// (rust-hdl, held to the model), pass or fail, as a Markdown table; fails if any row fails
     Hardcases,
-    /// The main job: the default scene through ideal, model, rust-hdl and Verilator; PNGs, VCD, Verilog, table
+    /// The main job: the default scene (a torus) and every pipeline on a quad through the f64 ideal, the model,
+    /// rust-hdl and Verilator; the torus's pipeline placed on the ECP5 and every pipeline's cells, beside the rendering;
+    /// OUT/index.html shows it all (pictures in OUT/img, waveforms in OUT/wave, Verilog in OUT/verilog), OUT/summary.md
+    /// has the tables
     Demo {
         #[arg(long, default_value = "out/demo")]
         out: PathBuf,
@@ -280,7 +283,8 @@ enum Cmd {
         /// angle scale of the polar path: US 6,819,319's (256 = 90°/360°) or the Dreamcast toolchains' (255)
         #[arg(long, value_enum, default_value_t = PolarScale::Seed)]
         polar_scale: PolarScale,
-        /// skip yosys and nextpnr (the hardware-cost rows; minutes on the first run, cached after)
+        /// skip yosys and nextpnr (the hardware-cost rows; two minutes beside the rendering on the first run, cached
+        /// after)
         #[arg(long)]
         no_synth: bool,
         /// your own height map (PNG, 8- or 16-bit grey; colour is read as luma), in place of the procedural one

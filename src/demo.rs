@@ -2,10 +2,14 @@
 //! with the seed's texels and with hemi-octahedral ones) and polar (first embodiment, FIG. 3), each on the texture
 //! unit where its memory holds the map, US 2004/0207631's height map, Tarini et al.'s palette at s_N = 256 and
 //! 4,096 — each through four paths (f64 ideal, bit-exact model, rust-hdl, Verilator), with pictures, waveforms, the
-//! Verilog, US 6,819,319's polar shortcomings shown, and one table of speed, hardware cost and error. The pipelines
-//! do the work (`sim::pipeline`); this file is the command's flow and its printing.
+//! Verilog and its testbenches, US 6,819,319's polar shortcomings shown, and tables of speed, hardware cost and
+//! error, all on one page (`crate::page`: `index.html`, `summary.md`) and a one-screen summary on the terminal. The
+//! synthesis runs beside the rendering at a lower priority (`crate::hardware::Pool`). The pipelines do the work
+//! (`sim::pipeline`); this file is the command's flow and its printing.
 
-use indicatif::{ProgressBar, ProgressStyle};
+use crate::hardware::Cost;
+use crate::page::{Block, Figure, Page, Section, Table};
+use crate::progress::Step;
 use sim::pipeline::{Height, Palette, Pipeline, Polar};
 use sim::prepared::Prepared;
 use sim::render::{self, Image};
@@ -13,17 +17,9 @@ use sim::scene::Scene;
 use sim::shortcomings::Shortcomings;
 use std::path::Path;
 use std::time::Instant;
+use synth::fpga::{Family, ECP5_45F};
 use vectors::polar_encode::Scale;
 use vectors::stats::ErrorStats;
-
-fn bar(len: u64, what: &str) -> ProgressBar {
-    let b = ProgressBar::new(len);
-    b.set_style(
-        ProgressStyle::with_template("{msg:<30} [{bar:40}] {pos}/{len} px {eta}").unwrap().progress_chars("=> "),
-    );
-    b.set_message(what.to_string());
-    b
-}
 
 /// One pipeline on the scene: its set-up, the three bit-exact paths (rust-hdl's only when asked for, Verilator's
 /// only where it is installed) and its errors against the ideal.
@@ -48,44 +44,79 @@ struct Run<'a> {
 
 /// The bit-exact model against software as a graphics programmer writes it, on the quad's `cart_pipeline` pixels:
 /// each way's speed beside its error against the scene's ideal.
-fn peer_table(scene: &Scene) {
-    let ways = sim::peer::compare(scene, SPLIT);
-    println!(
-        "the bit-exact model beside float software on the quad ({} cart_pipeline pixels, the same input vectors)",
-        ways[0].image.outs.len()
+fn peer_table(scene: &Scene) -> Table {
+    let ways = crate::progress::step(
+        "the model beside float software",
+        |w: &Vec<_>| format!("{} ways", w.len()),
+        || sim::peer::compare(scene, SPLIT),
     );
-    println!("{:<40} {:>12} {:>17} {:>17}", "way", "pixels/s", "shade mean / max", "colour mean / max");
+    let mut t = Table::new(
+        &format!(
+            "The bit-exact model beside float software on the quad ({} cart_pipeline pixels, the same input vectors)",
+            ways[0].image.outs.len()
+        ),
+        &["way", "pixels/s", "shade mean", "shade max", "colour mean", "colour max"],
+    );
     for w in &ways {
         let (s, c) = (&w.errors.shade, &w.errors.colour);
-        println!(
-            "{:<40} {:>12.0} {:>8.3} / {:>6.2} {:>8.3} / {:>6.2}",
-            w.what,
-            w.image.pixels_per_second(),
-            s.mean(),
-            s.max,
-            c.mean(),
-            c.max
-        );
+        t.rows.push(vec![
+            w.what.to_string(),
+            format!("{:.0}", w.image.pixels_per_second()),
+            format!("{:.3}", s.mean()),
+            format!("{:.2}", s.max),
+            format!("{:.3}", c.mean()),
+            format!("{:.2}", c.max),
+        ]);
     }
     let (peer, lanes, model) = (&ways[1].image, &ways[2].image, &ways[3].image);
-    println!(
-        "  the model takes {:.1}× the f32 peer's time on one thread from the same vectors, {:.1}× from its lanes",
+    t.note = Some(format!(
+        "The model takes {:.1}× the f32 peer's time on one thread from the same vectors, {:.1}× from its lanes.",
         model.seconds / peer.seconds.max(1e-9),
         model.seconds / lanes.seconds.max(1e-9)
-    );
+    ));
+    t
+}
+
+/// rust-hdl's simulation of the runs `which` picks, two at a time (it is one thread each, and the longest path of the
+/// demo's rendering), each held to its model.
+fn rust_hdl_runs(runs: &mut [Run], which: &[bool]) {
+    // taken from the end: the longest (the texture unit's pipelines, first in the demo's order) first
+    let mut picked: Vec<&mut Run> = runs.iter_mut().zip(which).filter(|x| *x.1).map(|x| x.0).collect();
+    picked.reverse();
+    let total: u64 = picked.iter().map(|r| r.prep.inputs.len() as u64).sum();
+    let step = Step::new(&format!("rust-hdl, {} pipelines two at a time", picked.len()), Some(total));
+    let done = std::sync::atomic::AtomicU64::new(0);
+    let queue = std::sync::Mutex::new(picked);
+    std::thread::scope(|s| {
+        for _ in 0..SPLIT {
+            s.spawn(|| loop {
+                let Some(r) = queue.lock().unwrap_or_else(|e| e.into_inner()).pop() else { break };
+                let (m, rtl) = (r.pipe.model(), r.pipe.rtl());
+                let t = Instant::now();
+                // the bar counts both threads' vectors: each adds what it ran since its last tick
+                let prev = std::cell::Cell::new(0u64);
+                let hdl = rtl.rust_hdl(m, &r.prep, &|k| {
+                    let d = (k as u64).saturating_sub(prev.replace(k as u64));
+                    step.tick(done.fetch_add(d, std::sync::atomic::Ordering::Relaxed) + d);
+                });
+                if !crate::progress::drawn() {
+                    let n = r.prep.inputs.len();
+                    eprintln!("{}: rust-hdl: {n} vectors, {:.1} s", m.name, t.elapsed().as_secs_f64());
+                }
+                r.mism_hdl = hdl.mismatches(&r.model);
+                r.hdl = Some(hdl);
+            });
+        }
+    });
+    step.done(&format!("{total} vectors"));
 }
 
 /// The threads the model's and Verilator's split frames run on, beside their one-thread runs.
 const SPLIT: usize = 2;
 
-fn run_pipeline<'a>(
-    pipe: &'a dyn Pipeline,
-    scene: &Scene,
-    out: &Path,
-    rust_hdl: bool,
-    verilator: bool,
-) -> Result<Run<'a>, String> {
+fn run_pipeline<'a>(pipe: &'a dyn Pipeline, scene: &Scene, out: &Path, verilator: bool) -> Result<Run<'a>, String> {
     let (m, rtl) = (pipe.model(), pipe.rtl());
+    let step = Step::new(&format!("{}: the ideal and the model", m.name), None);
     let t = Instant::now();
     let prep = pipe.prepare(scene);
     let ideal_s = t.elapsed().as_secs_f64();
@@ -93,25 +124,17 @@ fn run_pipeline<'a>(
     let model = render::fastest(|| render::model(m, &prep));
     let split = render::fastest(|| render::model_on(m, &prep, SPLIT));
     let mism_split = split.mismatches(&model);
-    let hdl = rust_hdl.then(|| {
-        let b = bar(prep.inputs.len() as u64, &format!("rust-hdl: {}", m.name));
-        let hdl = rtl.rust_hdl(m, &prep, &|k| b.set_position(k as u64));
-        b.finish_and_clear();
-        hdl
-    });
+    step.done(&format!("{} px, {} runs each way", prep.ideal.len(), render::RUNS));
     let vl = if verilator {
-        let b = ProgressBar::new_spinner();
-        b.set_message(format!("Verilator: building and running {}", m.name));
-        b.enable_steady_tick(std::time::Duration::from_millis(200));
-        let vl = rtl.verilator(m, &prep, &out.join("verilator").join(m.name), SPLIT);
-        b.finish_and_clear();
-        Some(vl?)
+        let step = Step::new(&format!("{}: Verilator, built and run", m.name), None);
+        let vl = rtl.verilator(m, &prep, &out.join("verilator").join(m.name), SPLIT)?;
+        step.done(&format!("{} px, {} runs each way", prep.ideal.len(), render::RUNS));
+        Some(vl)
     } else {
         None
     };
     // both Verilator runs, the one-thread and the split one, against the model
     let mism_vl = vl.as_ref().map(|r| r.image.mismatches(&model) + r.single.mismatches(&model)).unwrap_or(0);
-    let mism_hdl = hdl.as_ref().map(|h| h.mismatches(&model)).unwrap_or(0);
     let sim::pipeline::Errors { shade, colour, normal, surface } = sim::pipeline::errors(pipe, scene, &prep, &model);
     Ok(Run {
         pipe,
@@ -119,10 +142,10 @@ fn run_pipeline<'a>(
         ideal_s,
         model,
         split,
-        hdl,
+        hdl: None,
         vl,
         mism_split,
-        mism_hdl,
+        mism_hdl: 0,
         mism_vl,
         shade,
         colour,
@@ -158,9 +181,13 @@ pub fn run(
     crate::output::writable_folder(out)?;
     // the paths that need external tools run where the tools are; the demo says what it skipped and why
     let no_vl = synth::tools::missing(&["verilator", "make", "g++"]);
-    let no_pnr = if synth { synth::tools::toolchain().missing() } else { vec![] };
+    let no_yosys: Vec<String> = if synth {
+        synth::tools::toolchain().missing().into_iter().filter(|p| p.contains("yosys")).collect()
+    } else {
+        vec![]
+    };
     let no_ecp5 = synth::tools::nextpnr_ecp5().is_none().then(synth::tools::nextpnr_ecp5_missing);
-    let synth = synth && no_pnr.is_empty();
+    let synth = synth && no_yosys.is_empty();
 
     // every pipeline, and whether rust-hdl renders it here (the hemi-oct variant's rust-hdl run is left to the
     // tests: the model and Verilator are the two fast paths)
@@ -199,11 +226,44 @@ pub fn run(
     ];
     // the demo's own scene first: the torus through the pipeline its file names (the model and Verilator)
     let torus_pipe = torus_spec.build();
-    let on_torus = run_pipeline(torus_pipe.as_ref(), &torus, out, false, no_vl.is_empty())?;
-    let runs = pipes
-        .iter()
-        .map(|&(p, hdl)| run_pipeline(p, &scene, out, hdl, no_vl.is_empty()))
-        .collect::<Result<Vec<Run>, String>>()?;
+    // the hardware cost, synthesised beside the rendering (at a lower priority, so the speeds it reports are the
+    // rendering's own) and cached: the scene's own pipeline placed on the ECP5-45F (the part that holds every
+    // pipeline of the demo), and every pipeline's cells there from yosys alone, for the comparison; every part and
+    // placement is `report`'s
+    let hdir = out.join("synth");
+    let place = no_ecp5.is_none();
+    let mut jobs: Vec<(String, crate::hardware::Job<'static>)> = vec![];
+    for (i, p) in std::iter::once(torus_pipe.as_ref()).chain(pipes.iter().map(|p| p.0)).enumerate() {
+        let (rtl, name, hd) = (sim::units::unit(p.model().name)?.rtl, p.model().name, hdir.clone());
+        let job: crate::hardware::Job<'static> = if i == 0 && place {
+            Box::new(move |say| rtl.measure(&hd, &[ECP5_45F], crate::hardware::DEMO_SEEDS, say).map(Cost::Placed))
+        } else {
+            Box::new(move |say| {
+                say(format!("yosys: {name} on the ECP5"));
+                rtl.synth_unit(&hd.join(name).join("cells"), Family::Ecp5).map(Cost::Cells)
+            })
+        };
+        jobs.push((name.to_string(), job));
+    }
+    let pool = synth.then(|| crate::hardware::Pool::start(jobs));
+    let rendered = run_pipeline(torus_pipe.as_ref(), &torus, out, no_vl.is_empty()).and_then(|t| {
+        let mut runs = pipes
+            .iter()
+            .map(|&(p, _)| run_pipeline(p, &scene, out, no_vl.is_empty()))
+            .collect::<Result<Vec<Run>, String>>()?;
+        rust_hdl_runs(&mut runs, &pipes.map(|p| p.1));
+        Ok((t, runs))
+    });
+    let (on_torus, runs) = match rendered {
+        Ok(r) => r,
+        Err(e) => {
+            if let Some(p) = pool {
+                p.cancel();
+                let _ = p.join();
+            }
+            return Err(e);
+        }
+    };
     let polar_setup = polar.set_up(&scene);
     let sc = Shortcomings::measure(
         &scene,
@@ -213,36 +273,84 @@ pub fn run(
         (cart.as_ref(), &runs[0].prep, &runs[0].model),
     );
 
-    // pictures: per pipeline, then the shortcomings
+    // pictures: per pipeline, then the shortcomings; each kind of file in its own folder
+    let (img, wave, vdir) = (out.join("img"), out.join("wave"), out.join("verilog"));
+    for d in [&img, &wave, &vdir] {
+        std::fs::create_dir_all(d).map_err(|e| format!("cannot create {}: {e}", d.display()))?;
+    }
     let to8 = |x: f64| x.round().clamp(0.0, 255.0) as u8;
-    let png = |name: &str, f: &dyn Fn(usize) -> [u8; 3]| render::write_png(&out.join(name), size, f);
-    let mut written = vec![];
-    for (r, name) in std::iter::once((&on_torus, "torus")).chain(runs.iter().map(|r| (r, r.pipe.model().name))) {
+    let png = |name: &str, f: &dyn Fn(usize) -> [u8; 3]| render::write_png(&img.join(name), size, f);
+    let mut page = Page {
+        title: "bumprtl: bump-mapping hardware from two patents and a paper, checked bit for bit".into(),
+        intro: vec![],
+        sections: vec![],
+    };
+    let pictures = Step::new("pictures", None);
+    let mut n_png = 0;
+    for (r, name, sc_) in
+        std::iter::once((&on_torus, "torus", &torus)).chain(runs.iter().map(|r| (r, r.pipe.model().name, &scene)))
+    {
         // pixel k of the run at its place in the frame; places the surface does not cover are background
         let by = r.prep.by_place();
-        let mut each = |what: &str, f: &dyn Fn(usize) -> [u8; 3]| -> Result<(), String> {
-            written.push(format!("{name}_{what}.png"));
-            png(&format!("{name}_{what}.png"), &|at| by[at].map_or(render::BACKGROUND, f))
+        let mut figs = vec![];
+        let mut each = |what: &str, caption: String, f: &dyn Fn(usize) -> [u8; 3]| -> Result<(), String> {
+            let file = format!("{name}_{what}.png");
+            png(&file, &|at| by[at].map_or(render::BACKGROUND, f))?;
+            figs.push(Figure { src: format!("img/{file}"), caption, bar: None });
+            Ok(())
         };
-        each("ideal", &|k| r.prep.ideal[k].rgb.map(to8))?;
-        each("model", &|k| r.pipe.colour(&r.model.outs[k]))?;
+        each("ideal", "the f64 ideal".into(), &|k| r.prep.ideal[k].rgb.map(to8))?;
+        each("model", "the bit-exact model".into(), &|k| r.pipe.colour(&r.model.outs[k]))?;
         if let Some(hdl) = &r.hdl {
-            each("rust_hdl", &|k| r.pipe.colour(&hdl.outs[k]))?;
+            let c = format!("rust-hdl's simulator ({} pixels differ from the model)", r.mism_hdl);
+            each("rust_hdl", c, &|k| r.pipe.colour(&hdl.outs[k]))?;
         }
         if let Some(vl) = &r.vl {
-            each("verilator", &|k| r.pipe.colour(&vl.image.outs[k]))?;
+            let c = format!("Verilator on the exported Verilog ({} pixels differ)", vl.image.mismatches(&r.model));
+            each("verilator", c, &|k| r.pipe.colour(&vl.image.outs[k]))?;
         }
-        each("shade", &|k| [to8(r.pipe.shade(&r.model.outs[k])); 3])?;
-        let hmax = r.colour.max.max(1.0);
-        each("error_heat", &|k| {
-            render::heat(render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb), hmax)
+        each("shade", format!("the shade alone ({})", r.pipe.shade_name()), &|k| {
+            [to8(r.pipe.shade(&r.model.outs[k])); 3]
         })?;
+        let hmax = r.colour.max.max(1.0);
+        let file = format!("{name}_error_heat.png");
+        render::write_heat_png(
+            &img.join(&file),
+            size,
+            |at| by[at].map(|k| render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb)),
+            hmax,
+            "LSB",
+        )?;
+        figs.push(Figure {
+            src: format!("img/{file}"),
+            caption: "the model's colour error against the ideal, worst channel".into(),
+            bar: Some((hmax, "LSB")),
+        });
+        n_png += figs.len();
+        let m = r.pipe.model().name;
+        let title = if name == "torus" {
+            format!("The demo's torus: {m}")
+        } else {
+            format!("{} on the quad: {m}", r.pipe.label())
+        };
+        page.sections.push(Section {
+            title,
+            blocks: vec![
+                Block::Text(capitalised(&r.pipe.describe(sc_))),
+                Block::Text(format!("Its units, in order: {}.", r.pipe.units().join(" → "))),
+                Block::Figures(figs),
+            ],
+        });
     }
     let pol = &runs[2];
     let smax = sc.surface.max.max(1.0);
-    png("polar_surface_light_error_heat.png", &|k| {
-        render::heat((pol.pipe.shade(&pol.model.outs[k]) - sc.surface_ideal[k]).abs(), smax)
-    })?;
+    render::write_heat_png(
+        &img.join("polar_surface_light_error_heat.png"),
+        size,
+        |at| pol.prep.by_place()[at].map(|k| (pol.pipe.shade(&pol.model.outs[k]) - sc.surface_ideal[k]).abs()),
+        smax,
+        "LSB",
+    )?;
     // (b): where the four texels' R straddle the 255 → 0 wrap, over the polar shade
     png("polar_wrap_pixels.png", &|k| {
         if polar_setup.straddles[k] {
@@ -265,166 +373,271 @@ pub fn run(
     png("colour_reference.png", &|k| colour.reference[k])?;
     png("colour_bilinear.png", &|k| colour.bilinear[k])?;
     png("colour_bspline.png", &|k| colour.bspline[k])?;
+    pictures.done(&format!("{} PNG", n_png + 10));
 
-    // waveforms of the first pixels, and the Verilog
-    let vdir = out.join("verilog");
+    // waveforms of the first pixels with their GTKWave save files, and the Verilog with a self-checking testbench of
+    // those pixels' vectors (the model's outputs expected) and the AXI4-Stream wrapper with its own
+    let exports = Step::new("waveforms and Verilog", None);
+    let mut wave_links = vec![];
+    let mut verilog_links = vec![];
     for r in std::iter::once(&on_torus).chain(&runs) {
-        r.pipe.rtl().write_vcd(
-            r.pipe.model(),
-            &r.pipe.waveform(&r.prep),
-            &out.join(format!("{}.vcd", r.pipe.model().name)),
-        )?;
-        r.pipe.rtl().export(&vdir)?;
+        let (m, rtl) = (r.pipe.model(), r.pipe.rtl());
+        let vectors = r.pipe.waveform(&r.prep);
+        rtl.write_vcd(m, &vectors, &wave.join(format!("{}.vcd", m.name)))?;
+        wave_links.push((format!("{}.vcd", m.name), format!("wave/{}.vcd", m.name)));
+        wave_links.push((format!("{}.gtkw (GTKWave)", m.name), format!("wave/{}.gtkw", m.name)));
+        let ins: Vec<Vec<u64>> = vectors.iter().map(|v| vectors::unit::to_patterns(v, m.inputs)).collect();
+        let outs: Vec<Vec<u64>> = m.run(&vectors).iter().map(|v| vectors::unit::to_patterns(v, m.outputs)).collect();
+        let source = format!("bumprtl demo, the first {} vectors of {}'s frame", vectors.len(), m.name);
+        let unit = sim::units::unit(m.name)?;
+        let mut files = rtl.selfcheck(&vdir, &ins, &outs, &source)?;
+        files.extend(unit.axis.selfcheck(&vdir, ins.len(), &source)?);
+        for f in files {
+            let file = f.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            if file.ends_with(".v") {
+                verilog_links.push((file.clone(), format!("verilog/{file}")));
+            }
+        }
     }
+    exports.done(&format!("{} VCD, {} Verilog files", wave_links.len() / 2, verilog_links.len()));
 
-    // hardware cost, cached beside the output: each pipeline on the UP5K and the ECP5-45F, on two threads
-    let hw = if synth {
-        let hdir = out.join("synth");
-        let parts: Vec<synth::fpga::Part> = crate::hardware::DEMO_PARTS
-            .iter()
-            .copied()
-            .filter(|p| p.family == synth::fpga::Family::Ice40 || no_ecp5.is_none())
-            .collect();
-        let (hd, ps) = (&hdir, &parts);
-        let jobs: Vec<crate::hardware::Job> = std::iter::once(&on_torus)
-            .chain(&runs)
-            .map(|r| -> crate::hardware::Job {
-                let rtl = r.pipe.rtl();
-                Box::new(move |say| rtl.measure(hd, ps, crate::hardware::DEMO_SEEDS, say))
-            })
-            .collect();
-        Some(crate::hardware::run_jobs(jobs)?)
-    } else {
-        None
-    };
-
+    let hw = pool.map(|p| p.join()).transpose()?;
     let source = match height_map {
         Some(p) => {
             format!("{} ({}x{}, white {:.2} texels above black)", p.display(), scene.tex, scene.tex, scene.relief)
         }
-        None => format!("procedural {t}x{t} height map", t = scene.tex),
+        None => format!("a procedural {t}x{t} height map", t = scene.tex),
     };
     let covered = on_torus.prep.ideal.len();
-    println!("scene: {size}x{size}, a torus ({covered} pixels), {source} repeated 6 × 2 round it, the point light's direction");
-    println!(
-        "  at each triangle's corners interpolated per pixel: {} ({})",
-        on_torus.pipe.model().name,
-        on_torus.pipe.describe(&torus)
+    page.intro = vec![
+        format!(
+            "Every pipeline below is a synthesizable rust-hdl design. Each frame was computed four ways: in f64 (the \
+             ideal), by the bit-exact software model, by rust-hdl's simulator and by Verilator on the exported \
+             Verilog; the last three must agree on every pixel, and the error heat maps measure the model against \
+             the ideal. Frames are {size} × {size}."
+        ),
+        format!(
+            "The torus ({covered} pixels) wears {source} repeated 6 × 2 round it, lit by a point light whose \
+             direction is interpolated per pixel from the triangles' corners; the quad shows every pipeline on the \
+             same map under four vertex lights towards a point light."
+        ),
+    ];
+    let mut skipped = vec![];
+    if !no_vl.is_empty() {
+        skipped.push(format!(
+            "Verilator path skipped: {} not installed (`bash demo.sh` installs the tools)",
+            no_vl.join(", ")
+        ));
+    }
+    if !no_yosys.is_empty() {
+        skipped.push(format!(
+            "synthesis figures skipped: {} not installed (`bash demo.sh` installs the tools)",
+            no_yosys.join(", ")
+        ));
+    } else if let (true, Some(e)) = (synth, &no_ecp5) {
+        skipped.push(format!("the placement on the ECP5 skipped (cells from yosys only): {e}"));
+    }
+
+    // the tables: speed, error, hardware, the model beside float software, the shortcomings and the variants
+    let all: Vec<&Run> = std::iter::once(&on_torus).chain(&runs).collect();
+    let pps = |i: &Image| format!("{:.0}", i.pixels_per_second());
+    let mut speed = Table::new(
+        "Throughput, pixels a second (pixels that differ from the model in brackets)",
+        &[
+            "pipeline",
+            "unit",
+            "bits per texel",
+            "f64 ideal (set-up included)",
+            &render::on_threads("bit-exact model", 1),
+            &render::on_threads("bit-exact model", SPLIT),
+            "rust-hdl (loop-driven)",
+            "Verilator, 1 thread",
+            &format!("Verilator, {SPLIT} threads"),
+            "Verilator bare loop, cycles/s",
+            "1 thread against the bare loop",
+        ],
     );
-    let e = &on_torus;
-    let vl =
-        e.vl.as_ref()
-            .map(|v| format!(", Verilator {:.0} px/s ({} mismatches)", v.image.pixels_per_second(), e.mism_vl))
-            .unwrap_or_default();
-    println!(
-        "  model {:.0} px/s{vl}; colour error {:.3} / {:.3} 8-bit LSB mean / max, normal {} ° mean / max",
-        e.model.pixels_per_second(),
-        e.colour.mean(),
-        e.colour.max,
-        e.normal.as_ref().map(|n| format!("{:.3} / {:.3}", n.mean(), n.max)).unwrap_or("-".into())
-    );
-    println!("every pipeline on the quad: {size}x{size}, {source}, 4 vertex lights towards a point light");
-    for r in &runs {
-        println!("  {} ({}): {}", r.pipe.label(), r.pipe.model().name, r.pipe.describe(&scene));
-        println!("    units: {}", r.pipe.units().join(" → "));
+    for (i, r) in all.iter().enumerate() {
+        let n = r.prep.ideal.len();
+        let vl = |f: &dyn Fn(&render::VerilatorRun) -> String| r.vl.as_ref().map(f).unwrap_or("skipped".into());
+        speed.rows.push(vec![
+            if i == 0 { "torus".into() } else { r.pipe.label().to_string() },
+            r.pipe.model().name.to_string(),
+            r.pipe.bits_per_texel().to_string(),
+            format!("{:.0}", n as f64 / r.ideal_s),
+            pps(&r.model),
+            format!("{} ({})", pps(&r.split), r.mism_split),
+            r.hdl.as_ref().map(|h| format!("{} ({})", pps(h), r.mism_hdl)).unwrap_or("in the tests".into()),
+            vl(&|v| format!("{} ({})", pps(&v.single), v.single.mismatches(&r.model))),
+            vl(&|v| format!("{} ({})", pps(&v.image), v.image.mismatches(&r.model))),
+            vl(&|v| format!("{:.0}", v.bare_cycles_per_second)),
+            vl(&|v| {
+                format!("{:.2}", (v.single.size * v.single.size) as f64 / v.single.seconds / v.bare_cycles_per_second)
+            }),
+        ]);
     }
-    println!();
-    let n = size * size;
-    let line = |label: &str, f: &dyn Fn(&Run) -> String| {
-        let cells: String = runs.iter().map(|r| format!(" {:>14}", f(r))).collect();
-        println!("{label:<34}{cells}");
+    let mut errors =
+        Table::new("Error of the bit-exact models against the scene's ideal", &["what", "mean", "max", "max at"]);
+    let row = |t: &mut Table, name: String, s: &ErrorStats| {
+        t.rows.push(match s.count {
+            0 => vec![name, "none".into(), "none".into(), String::new()],
+            _ => vec![name, format!("{:.3}", s.mean()), format!("{:.3}", s.max), s.argmax.clone()],
+        })
     };
-    line("pixels/s (mismatches vs model)", &|r| r.pipe.label().to_string());
-    let pps = |i: &Image, m: usize| format!("{:.0} ({m})", i.pixels_per_second());
-    line("bits per texel of the bump source", &|r| format!("{}", r.pipe.bits_per_texel()));
-    line("f64 ideal (scene set-up included)", &|r| format!("{:.0}", n as f64 / r.ideal_s));
-    line(&render::on_threads("bit-exact model", 1), &|r| pps(&r.model, 0));
-    line(&render::on_threads("bit-exact model", SPLIT), &|r| pps(&r.split, r.mism_split));
-    line("rust-hdl (loop-driven)", &|r| r.hdl.as_ref().map(|h| pps(h, r.mism_hdl)).unwrap_or("in the tests".into()));
-    if let Some(c) = &runs[0].vl {
-        line(&render::on_threads("Verilator, whole frame", 1), &|r| {
-            r.vl.as_ref().map(|v| pps(&v.single, r.mism_vl)).unwrap_or_default()
-        });
-        line(&render::on_threads("Verilator, whole frame", c.threads), &|r| {
-            r.vl.as_ref().map(|v| pps(&v.image, r.mism_vl)).unwrap_or_default()
-        });
-        line("Verilator bare loop (cycles/s)", &|r| {
-            r.vl.as_ref().map(|v| format!("{:.0}", v.bare_cycles_per_second)).unwrap_or_default()
-        });
-        line("  1 thread against the bare loop", &|r| {
-            r.vl.as_ref()
-                .map(|v| {
-                    format!(
-                        "{:.2}",
-                        (v.single.size * v.single.size) as f64 / v.single.seconds / v.bare_cycles_per_second
-                    )
-                })
-                .unwrap_or_default()
-        });
-    } else {
-        println!("Verilator path skipped: {} not installed (`bash .ci/run` installs the tools)", no_vl.join(", "));
-    }
-    println!();
-    if !no_pnr.is_empty() {
-        println!(
-            "UP5K and ECP5 figures skipped: {} not installed (`bash .ci/run` installs the tools)\n",
-            no_pnr.join(", ")
-        );
-    } else if let Some(e) = &no_ecp5 {
-        println!("ECP5 figures skipped: {e}\n");
-    }
-    if let Some(hw) = &hw {
-        // the torus's pipeline first, then the quad's
-        let names: Vec<&str> = std::iter::once(&on_torus).chain(&runs).map(|r| r.pipe.label()).collect();
-        hardware_table(&names, hw);
-    }
-    println!("{:<52} {:>9} {:>9}   max at", "error of the bit-exact models vs the scene's ideal", "mean", "max");
-    let row = |name: &str, s: &ErrorStats| match s.count {
-        0 => println!("{name:<52} {:>9} {:>9}", "none", "none"),
-        _ => println!("{name:<52} {:>9.3} {:>9.3}   {}", s.mean(), s.max, s.argmax),
-    };
-    for r in &runs {
-        row(&format!("{} shade, 8-bit LSB ({})", r.pipe.label(), r.pipe.shade_name()), &r.shade);
-        row(&format!("{} blended colour, 8-bit LSB", r.pipe.label()), &r.colour);
+    for (i, r) in all.iter().enumerate() {
+        let l = if i == 0 { "torus".to_string() } else { r.pipe.label().to_string() };
+        row(&mut errors, format!("{l} shade, 8-bit LSB ({})", r.pipe.shade_name()), &r.shade);
+        row(&mut errors, format!("{l} blended colour, 8-bit LSB"), &r.colour);
         if let Some(nrm) = &r.normal {
-            row(&format!("{} normal angle, degrees", r.pipe.label()), nrm);
+            row(&mut errors, format!("{l} normal angle, degrees"), nrm);
         }
         if let Some(s) = &r.surface {
-            row(&format!("{} shade vs the ideal under its one light", r.pipe.label()), s);
+            row(&mut errors, format!("{l} shade vs the ideal under its one light"), s);
         }
     }
-    row("polar shade vs an ideal lit by the surface's light", &sc.surface);
-    row("polar shade vs equation 3 + powf on its own codes", &sc.own);
-    println!();
-    peer_table(&scene);
-    println!();
-    println!("US 6,819,319's polar shortcomings");
-    row(&format!("(b) polar, {} px filtered across R's wrap", sc.wrap.count), &sc.wrap);
-    row("    the other pixels (both vs the surface light)", &sc.rest);
-    row("    Cartesian shade on the wrap pixels", &sc.wrap_cartesian);
-    row(&format!("(a) light {:.1}° below the horizon: Cartesian N·L", sc.low_below_deg), &sc.low_cartesian);
-    row(&format!("    polar N·L, the light moved onto it: {}", sc.low_moved), &sc.low_polar);
-    println!();
+    let peer = peer_table(&scene);
+    let mut short =
+        Table::new("US 6,819,319's polar shortcomings, shade in 8-bit LSB", &["what", "mean", "max", "max at"]);
+    row(&mut short, "polar shade vs an ideal lit by the surface's light".into(), &sc.surface);
+    row(&mut short, "polar shade vs equation 3 + powf on its own codes".into(), &sc.own);
+    row(&mut short, format!("(b) polar, {} px filtered across R's wrap", sc.wrap.count), &sc.wrap);
+    row(&mut short, "    the other pixels (both vs the surface light)".into(), &sc.rest);
+    row(&mut short, "    Cartesian shade on the wrap pixels".into(), &sc.wrap_cartesian);
+    row(&mut short, format!("(a) light {:.1}° below the horizon: Cartesian N·L", sc.low_below_deg), &sc.low_cartesian);
+    row(&mut short, format!("    polar N·L, the light moved onto it: {}", sc.low_moved), &sc.low_polar);
     let n8 = sim::variants::FIG8_TEXELS;
-    println!("US 2004/0207631's variants (bit-exact models; {n8}x{n8} maps magnified to {size}x{size})");
-    println!(
-        "FIG. 8a/8b, largest jump across a texel edge (methods in reals): N·L derivative Blinn {:.4}, B-spline {:.4}; cross tangent derivative Blinn {:.4}, B-spline {:.4}",
-        fig8.jumps.blinn.0, fig8.jumps.bspline.0, fig8.jumps.blinn.1, fig8.jumps.bspline.1
+    let mut variants = Table::new(
+        &format!("US 2004/0207631's variants (bit-exact models; {n8}x{n8} maps magnified to {size}x{size})"),
+        &["what", "mean", "max", "max at"],
     );
-    row("bilinear colour vs the f64 picture, 8-bit LSB", &colour.bilinear_vs_reference);
-    row("B-spline colour (¶87) vs the f64 picture, 8-bit LSB", &colour.bspline_vs_reference);
-    row("bilinear colour vs its method in reals", &colour.bilinear_vs_own);
-    row("B-spline colour vs its method in reals", &colour.bspline_vs_own);
+    row(&mut variants, "bilinear colour vs the f64 picture, 8-bit LSB".into(), &colour.bilinear_vs_reference);
+    row(&mut variants, "B-spline colour (¶87) vs the f64 picture, 8-bit LSB".into(), &colour.bspline_vs_reference);
+    row(&mut variants, "bilinear colour vs its method in reals".into(), &colour.bilinear_vs_own);
+    row(&mut variants, "B-spline colour vs its method in reals".into(), &colour.bspline_vs_own);
+    variants.note = Some(format!(
+        "FIG. 8a/8b, largest jump across a texel edge (methods in reals): N·L derivative Blinn {:.4}, B-spline {:.4}; \
+         cross tangent derivative Blinn {:.4}, B-spline {:.4}",
+        fig8.jumps.blinn.0, fig8.jumps.bspline.0, fig8.jumps.blinn.1, fig8.jumps.bspline.1
+    ));
+    let fig = |file: &str, caption: &str| Figure { src: format!("img/{file}"), caption: caption.into(), bar: None };
+    page.sections
+        .insert(0, Section { title: "At a glance".into(), blocks: vec![Block::Table(glance(&all, hw.as_deref()))] });
+    page.sections.push(Section { title: "Speed".into(), blocks: vec![Block::Table(speed), Block::Table(peer)] });
+    page.sections.push(Section { title: "Error".into(), blocks: vec![Block::Table(errors)] });
+    if let Some(hw) = &hw {
+        let names: Vec<&str> =
+            all.iter().enumerate().map(|(i, r)| if i == 0 { "torus" } else { r.pipe.label() }).collect();
+        let units: Vec<&str> = all.iter().map(|r| r.pipe.model().name).collect();
+        page.sections.push(Section { title: "Hardware".into(), blocks: hardware_tables(&names, &units, hw) });
+    }
+    page.sections.push(Section {
+        title: "US 6,819,319's polar shortcomings".into(),
+        blocks: vec![
+            Block::Figures(vec![
+                Figure {
+                    src: "img/polar_surface_light_error_heat.png".into(),
+                    caption: "the polar shade against an ideal lit by the surface's one light: where the polar \
+                              form's own approximation shows"
+                        .into(),
+                    bar: Some((smax, "LSB")),
+                },
+                fig(
+                    "polar_wrap_pixels.png",
+                    "(b) magenta: the pixels whose four texels' R straddle the 255 → 0 wrap, \
+                     which bilinear filtering of R gets wrong",
+                ),
+                fig("below_horizon_ideal.png", "(a) the light below the horizon: the ideal shade"),
+                fig("below_horizon_cartesian.png", "(a) the Cartesian pipeline's shade: it follows the ideal"),
+                fig("below_horizon_polar.png", "(a) the polar pipeline's shade: the light moved onto the horizon"),
+            ]),
+            Block::Table(short),
+        ],
+    });
+    page.sections.push(Section {
+        title: "US 2004/0207631's variants".into(),
+        blocks: vec![
+            Block::Figures(vec![
+                fig("fig8a_blinn.png", "FIG. 8a, Blinn's normals: look for the creases along texel edges"),
+                fig("fig8b_bspline.png", "FIG. 8b, the B-spline normals: the same map without the creases"),
+                fig("colour_reference.png", "a colour map in f64: the reference"),
+                fig("colour_bilinear.png", "bilinear colour: look for the diamonds at texel corners"),
+                fig("colour_bspline.png", "B-spline colour (¶87): smoother, a little blurred"),
+            ]),
+            Block::Table(variants),
+        ],
+    });
+    let mut files = vec![Block::Text(
+        "The first pixels of each frame as a waveform (with a GTKWave save file: valid flags, ports, then each \
+         block's registers stage by stage), and each pipeline's Verilog with a self-checking testbench of those \
+         pixels' vectors, bare and behind its AXI4-Stream wrapper."
+            .into(),
+    )];
+    files.push(Block::Links(wave_links));
+    files.push(Block::Links(verilog_links));
+    page.sections.push(Section { title: "Waveforms and Verilog".into(), blocks: files });
+    if !skipped.is_empty() {
+        page.sections.push(Section {
+            title: "Skipped".into(),
+            blocks: skipped.iter().map(|s| Block::Text(s.clone())).collect(),
+        });
+    }
+    let (index, md) = page.write(out)?;
+
+    // the terminal's summary: one screen, the rest on the page
+    for l in wrap(&format!("bumprtl demo: {size}x{size} frames of {source}; every path held to the model"), 100) {
+        println!("{l}");
+    }
+    let e = &on_torus;
+    println!("torus ({covered} px) through {}:", e.pipe.model().name);
+    for l in wrap(&e.pipe.units().join(" → "), 96) {
+        println!("  {l}");
+    }
+    let vl = e.vl.as_ref().map(|v| format!(", Verilator {}/s", si(v.image.pixels_per_second()))).unwrap_or_default();
+    println!(
+        "  model {}/s{vl}; colour error {:.3} / {:.3} LSB mean / max",
+        si(e.model.pixels_per_second()),
+        e.colour.mean(),
+        e.colour.max
+    );
     println!();
-    println!("wrote {}: {};", out.display(), written.join(", "));
-    println!("      polar_surface_light_error_heat, polar_wrap_pixels, below_horizon_{{ideal,cartesian,polar}} .png;");
-    println!("      fig8a_blinn, fig8b_bspline, colour_{{reference,bilinear,bspline}} .png;");
-    let vcds: Vec<String> =
-        std::iter::once(&on_torus).chain(&runs).map(|r| format!("{}.vcd", r.pipe.model().name)).collect();
-    println!("      {}; verilog/{}", vcds.join(", "), if synth { "; synth/" } else { "" });
+    let w = all.iter().map(|r| r.pipe.model().name.len()).max().unwrap_or(8);
+    let head = format!(
+        "{:<w$} {:>10} {:>10} {:>6} {:>15}",
+        "pipeline", "model px/s", "Verilator", "differ", "colour mean/max"
+    );
+    match hw {
+        Some(_) => println!("{head} {:>6} {:>4} {:>4}", "LUT4", "DSP", "BRAM"),
+        None => println!("{head}"),
+    }
+    for (i, r) in all.iter().enumerate() {
+        let line = format!(
+            "{:<w$} {:>10} {:>10} {:>6} {:>15}",
+            r.pipe.model().name,
+            si(r.model.pixels_per_second()),
+            r.vl.as_ref().map(|v| si(v.image.pixels_per_second())).unwrap_or("skipped".into()),
+            r.mism_split + r.mism_hdl + r.mism_vl,
+            format!("{:.2} / {:.2}", r.colour.mean(), r.colour.max)
+        );
+        match hw.as_ref().and_then(|h| cells_of(&h[i])) {
+            Some(c) => println!("{line} {:>6} {:>4} {:>4}", c.lut4, c.dsp, c.bram),
+            None => println!("{line}"),
+        }
+    }
+    if let Some(h) = &hw {
+        println!("(cells: yosys synth_ecp5 alone, each pipeline on the ECP5)");
+        if let Some(r) = placed_of(&h[0]) {
+            println!("{} placed on the {}: {}", on_torus.pipe.model().name, ECP5_45F.name, fmax_text(r));
+        }
+    }
+    println!();
+    for s in &skipped {
+        println!("{s}");
+    }
+    println!("every table: {}", md.display());
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
-    let bad: Vec<String> = std::iter::once(&on_torus)
-        .chain(&runs)
+    println!("the page: {}", index.display());
+    let bad: Vec<String> = all
+        .iter()
         .filter(|r| r.mism_split + r.mism_hdl + r.mism_vl != 0)
         .map(|r| {
             let (name, split) = (r.pipe.model().name, r.mism_split);
@@ -437,67 +650,155 @@ pub fn run(
     Ok(())
 }
 
-/// Hardware cost, one column per pipeline, one block of rows per part.
-fn hardware_table(names: &[&str], hw: &[Vec<(synth::fpga::Part, synth::fpga::Fit)>]) {
-    use synth::fpga::Fit;
-    let Some(first) = hw.first() else { return };
-    let row = |label: &str, f: &dyn Fn(&Fit, &synth::fpga::Part) -> String, k: usize| {
-        let cells: String = hw.iter().map(|h| format!(" {:>22}", f(&h[k].1, &h[k].0))).collect();
-        println!("{label:<34}{cells}");
-    };
-    for (k, (part, _)) in first.iter().enumerate() {
-        let header: String = names.iter().map(|n| format!(" {n:>22}")).collect();
-        println!(
-            "{:<34}{header}",
-            format!(
-                "{} ({})",
-                part.name,
-                if part.family == synth::fpga::Family::Ice40 { "yosys -dsp" } else { "yosys synth_ecp5" }
-            )
-        );
-        let placed = |f: &Fit, g: &dyn Fn(&synth::fpga::SynthReport) -> String| match f {
-            Fit::Placed(r) => g(r),
-            Fit::DoesNotFit(_) => "-".to_string(),
-        };
-        let pct = |n: u64, of: u64| format!("{n} ({:.0}%)", 100.0 * n as f64 / of as f64);
-        row("LUT4 / FF", &|f, _| placed(f, &|r| format!("{} / {}", r.cells.lut4, r.cells.ff)), k);
-        row(
-            &format!("DSP of {} / BRAM of {}", part.dsp, part.bram),
-            &|f, p| placed(f, &|r| format!("{} / {}", pct(r.cells.dsp, p.dsp), r.cells.bram)),
-            k,
-        );
-        row(
-            &format!("logic cells of {} (placed)", part.lut4),
-            &|f, p| placed(f, &|r| r.lc.map(|x| pct(x, p.lut4)).unwrap_or("-".into())),
-            k,
-        );
-        row(
-            "fmax, 1 pixel/clock (placements)",
-            &|f, _| match f {
-                Fit::Placed(r) => match (&r.place_error, r.fmax_mhz) {
-                    (Some(_), _) => r.unplaced_text(),
-                    (None, Some(x)) => format!("{x:.1} MHz ({})", r.placed_of()),
-                    _ => "-".into(),
-                },
-                Fit::DoesNotFit(_) => "does not fit".into(),
-            },
-            k,
-        );
-        row("latency (clocks)", &|f, _| placed(f, &|r| r.latency.to_string()), k);
-        for (n, h) in names.iter().zip(hw) {
-            match &h[k].1 {
-                Fit::DoesNotFit(why) => println!("  {n} does not fit the {}: {why}", part.title),
-                Fit::Placed(r) => {
-                    if let Some(e) = &r.place_error {
-                        println!("  {n} does not place on the {}: {e}", part.title);
-                    }
-                }
+/// A synthesis job's cells: yosys's alone, or the placed run's.
+fn cells_of(c: &Cost) -> Option<synth::fpga::Cells> {
+    match c {
+        Cost::Cells(c) => Some(*c),
+        Cost::Placed(p) => p.first().and_then(|(_, f)| match f {
+            synth::fpga::Fit::Placed(r) => Some(r.cells),
+            synth::fpga::Fit::DoesNotFit(_) => None,
+        }),
+    }
+}
+
+/// A placed job's report.
+fn placed_of(c: &Cost) -> Option<&synth::fpga::SynthReport> {
+    match c {
+        Cost::Placed(p) => p.first().and_then(|(_, f)| match f {
+            synth::fpga::Fit::Placed(r) => Some(r),
+            synth::fpga::Fit::DoesNotFit(_) => None,
+        }),
+        Cost::Cells(_) => None,
+    }
+}
+
+/// A placement's fmax with its count of placements, or why there is none.
+fn fmax_text(r: &synth::fpga::SynthReport) -> String {
+    match (&r.place_error, r.fmax_mhz) {
+        (Some(_), _) => r.unplaced_text(),
+        (None, Some(x)) => format!("fmax {x:.1} MHz ({}), latency {} clocks", r.placed_of(), r.latency),
+        _ => "no fmax".into(),
+    }
+}
+
+/// Each pipeline in one row: what it is, its units, its speed through the model and Verilator, the pixels where a
+/// path differs from the model, its colour error, and its cells on the ECP5.
+fn glance(all: &[&Run], hw: Option<&[Cost]>) -> Table {
+    let mut header =
+        vec!["pipeline", "units", "model px/s", "Verilator px/s", "pixels that differ", "colour error, LSB mean / max"];
+    if hw.is_some() {
+        header.extend(["LUT4, ECP5", "DSP", "BRAM"]);
+    }
+    let mut t = Table::new("Every pipeline of the demo: the torus's first, then the quad's", &header);
+    for (i, r) in all.iter().enumerate() {
+        let mut row = vec![
+            format!("{}{}", if i == 0 { "torus: " } else { "" }, r.pipe.label()),
+            r.pipe.units().join(" → "),
+            si(r.model.pixels_per_second()),
+            r.vl.as_ref().map(|v| si(v.image.pixels_per_second())).unwrap_or("skipped".into()),
+            (r.mism_split + r.mism_hdl + r.mism_vl).to_string(),
+            format!("{:.2} / {:.2}", r.colour.mean(), r.colour.max),
+        ];
+        if let Some(h) = hw {
+            match cells_of(&h[i]) {
+                Some(c) => row.extend([c.lut4, c.dsp, c.bram].map(|x| x.to_string())),
+                None => row.extend(["-", "-", "-"].map(String::from)),
             }
         }
-        println!();
+        t.rows.push(row);
     }
-    println!(
-        "fmax: the median of the placements in brackets; the demo places nextpnr seed 1 where the cache holds none \
-         and reuses any of seeds 1 … 5 it holds (`bumprtl synth` and `report` place all five)"
+    let mut note = String::from(
+        "Pixels that differ: the model split across threads, rust-hdl and Verilator, each against the model on one \
+         thread; the demo fails if any is not 0.",
     );
+    if hw.is_some() {
+        note.push_str(" Cells: yosys synth_ecp5 on each pipeline alone (the Hardware section places the torus's).");
+    }
+    t.note = Some(note);
+    t
+}
+
+/// `text` with its first letter a capital.
+fn capitalised(text: &str) -> String {
+    let mut c = text.chars();
+    c.next().map(|f| f.to_uppercase().chain(c).collect()).unwrap_or_default()
+}
+
+/// `text` cut into lines of at most `width` characters, at spaces.
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = vec![];
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(l) if l.chars().count() + 1 + word.chars().count() <= width => {
+                l.push(' ');
+                l.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
+/// A rate with an SI prefix: 1234567 → "1.23 M".
+fn si(x: f64) -> String {
+    match x {
+        x if x >= 1e9 => format!("{:.2} G", x / 1e9),
+        x if x >= 1e6 => format!("{:.2} M", x / 1e6),
+        x if x >= 1e3 => format!("{:.1} k", x / 1e3),
+        x => format!("{x:.0}"),
+    }
+}
+
+/// Hardware cost on the ECP5: every pipeline's cells from yosys alone, then the scene's own pipeline placed.
+fn hardware_tables(names: &[&str], units: &[&str], hw: &[Cost]) -> Vec<Block> {
+    let p = ECP5_45F;
+    let mut cells = Table::new(
+        &format!("{}: each pipeline alone, yosys synth_ecp5 (no placement)", p.title),
+        &["pipeline", "unit", "LUT4", "FF", &format!("DSP of {}", p.dsp), &format!("BRAM of {}", p.bram), "carry"],
+    );
+    let pct = |n: u64, of: u64| format!("{n} ({:.0}%)", 100.0 * n as f64 / of as f64);
+    for ((n, u), h) in names.iter().zip(units).zip(hw) {
+        let mut row = vec![n.to_string(), u.to_string()];
+        match cells_of(h) {
+            Some(c) => row.extend([
+                c.lut4.to_string(),
+                c.ff.to_string(),
+                pct(c.dsp, p.dsp),
+                pct(c.bram, p.bram),
+                c.carry.to_string(),
+            ]),
+            None => row.extend(["-"; 5].map(String::from)),
+        }
+        cells.rows.push(row);
+    }
+    cells.note = Some(
+        "Every part (the iCE40 UP5K among them), every placement and the error each choice buys: `bumprtl report`; \
+         one unit or a scene's pipeline on the part it fits: `bumprtl synth`."
+            .into(),
+    );
+    let mut blocks = vec![Block::Table(cells)];
+    if let Some(r) = placed_of(&hw[0]) {
+        let mut t = Table::new(
+            &format!("{}: the torus's pipeline, {}, placed by nextpnr-ecp5 in a serial I/O wrapper", p.title, units[0]),
+            &["logic cells (placed)", "fmax, 1 pixel a clock", "placements", "latency, clocks", "critical path"],
+        );
+        t.rows.push(vec![
+            r.lc.map(|x| pct(x, p.lut4)).unwrap_or("-".into()),
+            match (&r.place_error, r.fmax_mhz) {
+                (Some(_), _) => r.unplaced_text(),
+                (None, Some(x)) => format!("{x:.1} MHz"),
+                _ => "-".into(),
+            },
+            r.placed_of(),
+            r.latency.to_string(),
+            r.critical.clone().unwrap_or_default(),
+        ]);
+        t.note = Some(
+            "fmax: the median of the placements; the demo places nextpnr seed 1 where the cache holds none and reuses \
+             any of seeds 1 … 5 it holds (`bumprtl synth` and `report` place all five)."
+                .into(),
+        );
+        blocks.push(Block::Table(t));
+    }
+    blocks
 }

@@ -1,43 +1,75 @@
-//! The demo's hardware-cost figures: each pipeline on the iCE40 UP5K and on the ECP5-45F, cached beside the
-//! demo's output (the first run places every pipeline; later runs read the figures while the Verilog is unchanged).
+//! The demo's hardware-cost figures, run beside its rendering: the scene's own pipeline placed on the ECP5-45F, every
+//! pipeline's cells from yosys alone there; cached (the first run synthesises, later runs read the figures while the
+//! Verilog is unchanged).
 
 use indicatif::{MultiProgress, ProgressBar};
-use synth::fpga::{Fit, Part, ECP5_45F, UP5K};
-
-/// The parts the demo reports, smallest first.
-pub const DEMO_PARTS: [Part; 2] = [UP5K, ECP5_45F];
+use synth::fpga::{Fit, Part};
 
 /// The demo's placements: one, at seed 1, on a cold cache (its first run must stay short), and the median of every
 /// other of seeds 1 … 5 the cache holds (`synth` and `report` place all five).
 pub const DEMO_SEEDS: synth::fpga::Seeds = synth::fpga::Seeds { n: 5, least: 1 };
 
-/// A job for one of the demo's synthesis threads.
-pub type Job<'a> = Box<dyn FnOnce(&dyn Fn(String)) -> Result<Vec<(Part, Fit)>, String> + Send + 'a>;
+/// What one of the demo's synthesis jobs gives: a pipeline placed on parts, or its cells from yosys alone.
+pub enum Cost {
+    Placed(Vec<(Part, Fit)>),
+    Cells(synth::fpga::Cells),
+}
 
-/// Run the jobs on two threads (the machine's two cores), each with its own progress line; results in job order.
-/// The jobs are taken from one queue in order, each by whichever thread is free: give the longest first.
-pub fn run_jobs(jobs: Vec<Job<'_>>) -> Result<Vec<Vec<(Part, Fit)>>, String> {
-    let multi = MultiProgress::new();
-    let n = jobs.len();
-    let queue = std::sync::Mutex::new(jobs.into_iter().enumerate().collect::<std::collections::VecDeque<_>>());
-    let mut results: Vec<Option<Result<Vec<(Part, Fit)>, String>>> = (0..n).map(|_| None).collect();
-    std::thread::scope(|s| {
-        let handles: Vec<_> = (0..2)
+/// A job for one of the demo's synthesis threads.
+pub type Job<'a> = Box<dyn FnOnce(&dyn Fn(String)) -> Result<Cost, String> + Send + 'a>;
+
+/// Synthesis jobs run beside other work, on two threads (the machine's two cores) at the lowest priority (nice 19,
+/// which the tools they start inherit): the work beside them, whose speed the demo reports, keeps its cores, and the
+/// synthesis takes what it leaves. The jobs are taken from one queue in order, each by whichever thread is free:
+/// give the longest first. Each thread shows a progress line on a terminal, and a line a job otherwise.
+pub struct Pool {
+    queue: std::sync::Arc<std::sync::Mutex<std::collections::VecDeque<(usize, (String, Job<'static>))>>>,
+    threads: Vec<std::thread::JoinHandle<Vec<(usize, Result<Cost, String>)>>>,
+    n: usize,
+}
+
+impl Pool {
+    /// The jobs, named, taken by two threads.
+    pub fn start(jobs: Vec<(String, Job<'static>)>) -> Pool {
+        let n = jobs.len();
+        let queue = std::sync::Arc::new(std::sync::Mutex::new(jobs.into_iter().enumerate().collect()));
+        let multi = MultiProgress::new();
+        let threads = (0..2)
             .map(|_| {
                 let bar = multi.add(ProgressBar::new_spinner());
                 bar.enable_steady_tick(std::time::Duration::from_millis(200));
-                let queue = &queue;
+                let queue: std::sync::Arc<std::sync::Mutex<std::collections::VecDeque<_>>> =
+                    std::sync::Arc::clone(&queue);
                 // a job builds its block on this thread's stack (rust-hdl's `Default`): room for the largest
-                let thread = std::thread::Builder::new().stack_size(16 << 20);
-                thread
-                    .spawn_scoped(s, move || {
+                std::thread::Builder::new()
+                    .stack_size(16 << 20)
+                    .spawn(move || {
+                        // this thread's nice value (Linux keeps one a thread), inherited by the tools it starts; a
+                        // machine that refuses it runs the jobs at the usual priority
+                        // SAFETY: setpriority and gettid read and write no memory of this process
+                        unsafe {
+                            libc::setpriority(libc::PRIO_PROCESS, libc::gettid() as libc::id_t, 19);
+                        }
                         let t = std::time::Instant::now();
                         let say = |m: String| bar.set_message(format!("{m} [{:.0} s]", t.elapsed().as_secs_f64()));
                         let mut out = Vec::new();
                         loop {
                             let next = queue.lock().unwrap_or_else(|e| e.into_inner()).pop_front();
-                            let Some((k, job)) = next else { break };
-                            out.push((k, job(&say)));
+                            let Some((k, (name, job))) = next else { break };
+                            let t = std::time::Instant::now();
+                            let r = job(&say);
+                            if !crate::progress::drawn() {
+                                let what = match &r {
+                                    Ok(Cost::Placed(p)) => {
+                                        let parts: Vec<&str> = p.iter().map(|x| x.0.name).collect();
+                                        format!("placed on {}", parts.join(", "))
+                                    }
+                                    Ok(Cost::Cells(_)) => "yosys alone".into(),
+                                    Err(_) => "failed".into(),
+                                };
+                                eprintln!("synthesis, {name}: {what}, {:.1} s", t.elapsed().as_secs_f64());
+                            }
+                            out.push((k, r));
                         }
                         bar.finish_and_clear();
                         out
@@ -45,13 +77,24 @@ pub fn run_jobs(jobs: Vec<Job<'_>>) -> Result<Vec<Vec<(Part, Fit)>>, String> {
                     .expect("a synthesis thread")
             })
             .collect();
-        for h in handles {
+        Pool { queue, threads, n }
+    }
+
+    /// No more jobs taken: those under way finish, the rest are dropped (the work they were for failed).
+    pub fn cancel(&self) {
+        self.queue.lock().unwrap_or_else(|e| e.into_inner()).clear();
+    }
+
+    /// Every job's result, in job order.
+    pub fn join(self) -> Result<Vec<Cost>, String> {
+        let mut results: Vec<Option<Result<Cost, String>>> = (0..self.n).map(|_| None).collect();
+        for h in self.threads {
             for (k, r) in h.join().expect("a synthesis thread panicked") {
                 results[k] = Some(r);
             }
         }
-    });
-    results.into_iter().map(|r| r.expect("every job ran")).collect()
+        results.into_iter().map(|r| r.expect("every job ran")).collect()
+    }
 }
 
 /// A unit with a mode input, synthesised as a design that needs only one mode would hold it (the mode tied, the other

@@ -96,6 +96,14 @@ fn vectors_command_reproduces_the_committed_golden_file() {
     assert_eq!(out, golden);
 }
 
+/// The row of the demo's summary.md table whose first cells are `first` (a pipeline's label, then its unit), as cells.
+fn md_row<'a>(md: &'a str, unit: &str) -> Vec<&'a str> {
+    md.lines()
+        .find(|l| l.split(" | ").nth(1) == Some(unit))
+        .map(|l| l.trim_matches('|').split(" | ").map(str::trim).collect())
+        .unwrap_or_default()
+}
+
 #[test]
 fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
     let d =
@@ -107,38 +115,59 @@ fn demo_runs_on_a_machine_without_the_eda_tools_and_says_what_it_skipped() {
         .unwrap();
     let (out, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
     assert!(o.status.success(), "{out}\n{err}");
-    assert!(out.contains("Verilator path skipped") && out.contains("UP5K and ECP5 figures skipped"), "{out}");
-    // the palette rows: ⌈log2 s_N⌉ bits a texel beside the Cartesian map's 16 and the height map's 8
-    let bits = out.lines().find(|l| l.starts_with("bits per texel")).unwrap_or_default();
-    assert_eq!(bits.split_whitespace().rev().take(6).collect::<Vec<_>>(), ["12", "8", "8", "16", "16", "16"], "{out}");
-    assert!(out.contains("palette 256 shade vs the ideal under its one light"), "{out}");
+    assert!(out.contains("Verilator path skipped") && out.contains("synthesis figures skipped"), "{out}");
+    // one screen: at most 40 lines of at most 100 columns, the page's path last
+    assert!(out.lines().count() <= 40, "{out}");
+    assert!(out.lines().all(|l| l.chars().count() <= 100), "{out}");
+    assert!(out.trim_end().ends_with(&format!("the page: {}", d.join("index.html").display())), "{out}");
+    // standard error is no terminal here: a line a step, what, how many, how long
+    assert!(err.lines().any(|l| l.starts_with("cart_tex_bilinear: rust-hdl: ") && l.ends_with(" s")), "{err}");
+    // the full tables in summary.md: the palette rows' ⌈log2 s_N⌉ bits a texel beside the Cartesian map's 16 and the
+    // height map's 8
+    let md = std::fs::read_to_string(d.join("summary.md")).unwrap();
+    let bits: Vec<&str> = ["cart_tex_bilinear", "cart_tex_bilinear_hemi_oct", "polar_tex_bilinear", "height_pipeline"]
+        .into_iter()
+        .chain(["palette_pipeline", "palette_pipeline_12"])
+        .map(|u| md_row(&md, u).get(2).copied().unwrap_or("none"))
+        .collect();
+    assert_eq!(bits, ["16", "16", "16", "8", "8", "12"], "{md}");
+    assert!(md.contains("palette 256 shade vs the ideal under its one light"), "{md}");
+    let html = std::fs::read_to_string(d.join("index.html")).unwrap();
+    assert!(html.contains("Verilator path skipped") && !html.contains("http"), "the page reaches for the network");
     for f in [
-        "cart_tex_bilinear_model.png",
-        "cart_tex_bilinear_rust_hdl.png",
-        "polar_tex_bilinear_model.png",
-        "cart_tex_bilinear_hemi_oct_model.png",
-        "cart_tex_bilinear.vcd",
-        "polar_tex_bilinear.vcd",
-        "cart_tex_bilinear_hemi_oct.vcd",
+        "img/cart_tex_bilinear_model.png",
+        "img/cart_tex_bilinear_rust_hdl.png",
+        "img/polar_tex_bilinear_model.png",
+        "img/cart_tex_bilinear_hemi_oct_model.png",
+        "wave/cart_tex_bilinear.vcd",
+        "wave/cart_tex_bilinear.gtkw",
+        "wave/polar_tex_bilinear.vcd",
+        "wave/cart_tex_bilinear_hemi_oct.vcd",
         "verilog/cart_tex_bilinear.v",
-        "fig8a_blinn.png",
-        "fig8b_bspline.png",
-        "colour_reference.png",
-        "colour_bilinear.png",
-        "colour_bspline.png",
-        "palette_pipeline_model.png",
-        "palette_pipeline_rust_hdl.png",
-        "palette_pipeline_12_model.png",
-        "palette_pipeline.vcd",
-        "palette_pipeline_12.vcd",
+        "verilog/cart_tex_bilinear_tb.v",
+        "verilog/cart_tex_bilinear_axis_tb.v",
+        "img/fig8a_blinn.png",
+        "img/fig8b_bspline.png",
+        "img/colour_reference.png",
+        "img/colour_bilinear.png",
+        "img/colour_bspline.png",
+        "img/palette_pipeline_model.png",
+        "img/palette_pipeline_rust_hdl.png",
+        "img/palette_pipeline_12_model.png",
+        "wave/palette_pipeline.vcd",
+        "wave/palette_pipeline_12.vcd",
         "verilog/palette_pipeline_12.v",
-        "torus_model.png",
-        "cart_tex_bilinear_matte.vcd",
+        "img/torus_model.png",
+        "wave/cart_tex_bilinear_matte.vcd",
         "verilog/cart_tex_bilinear_matte.v",
     ] {
         assert!(d.join(f).is_file(), "{f} missing");
+        assert!(html.contains(&format!("\"{f}\"")), "the page does not show or link {f}");
     }
-    assert!(!d.join("cart_tex_bilinear_verilator.png").exists());
+    assert!(!d.join("img/cart_tex_bilinear_verilator.png").exists());
+    // a heat map carries its colour bar under the frame
+    let heat = image::open(d.join("img/torus_error_heat.png")).unwrap();
+    assert_eq!((heat.width(), heat.height()), (16, 16 + 19));
     let _ = std::fs::remove_dir_all(&d);
 }
 
@@ -308,15 +337,16 @@ fn a_users_height_map_goes_through_the_height_cartesian_polar_and_palette_paths(
     assert!(stdout.contains("read as its luma") && stdout.contains("5 × 3 resampled (bilinear) to 8 × 8"), "{stdout}");
     assert!(stdout.contains("map.png (8x8"), "{stdout}");
     // 64 texels: both palettes hold every distinct normal
-    assert!(stdout.contains("s_N = 256: ") && stdout.contains("0.00° mean / 0.00° max"), "{stdout}");
+    let md = std::fs::read_to_string(out.join("summary.md")).unwrap();
+    assert!(md.contains("s_N = 256: ") && md.contains("0.00° mean / 0.00° max"), "{md}");
     for f in [
-        "height_pipeline_model.png",
-        "height_pipeline_rust_hdl.png",
+        "img/height_pipeline_model.png",
+        "img/height_pipeline_rust_hdl.png",
         // 8 × 8, a side the texture unit's memory holds
-        "cart_tex_bilinear_model.png",
-        "polar_tex_bilinear_model.png",
-        "palette_pipeline_model.png",
-        "palette_pipeline_12_model.png",
+        "img/cart_tex_bilinear_model.png",
+        "img/polar_tex_bilinear_model.png",
+        "img/palette_pipeline_model.png",
+        "img/palette_pipeline_12_model.png",
     ] {
         assert!(out.join(f).is_file(), "{f} missing");
     }
@@ -916,4 +946,67 @@ fn minify_measures_every_filter_of_the_texture_unit_and_refuses_a_glossy_scene()
         assert!(err.lines().count() == 1 && err.contains(&format!("--lod-bias {bad}")), "{bad}: {err}");
         assert!(!none.exists());
     }
+}
+
+/// The demo's page in a real browser (headless Chromium, which the test command installs): every picture loaded, by
+/// the page's own check read back from the DOM Chromium dumps; every picture and link a file that exists; and a
+/// screenshot, `target/tmp/demo-page.png`, to look at.
+#[test]
+fn the_demo_page_loads_in_a_browser_with_every_picture_and_every_link_a_file() {
+    let browser = ["chromium", "chromium-browser", "google-chrome"]
+        .into_iter()
+        .find(|b| synth::tools::missing(&[b]).is_empty())
+        .expect("no Chromium on the PATH (`bash .ci/run` installs Debian's chromium)");
+    let d = scratch("demo-page");
+    let o = Command::new(env!("CARGO_BIN_EXE_bumprtl"))
+        .args(["demo", "--size", "32", "--out", d.to_str().unwrap()])
+        .env("PATH", "")
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let html = std::fs::read_to_string(d.join("index.html")).unwrap();
+    let mut n_img = 0;
+    for attr in ["src=\"", "href=\""] {
+        for (at, _) in html.match_indices(attr) {
+            let rest = &html[at + attr.len()..];
+            let link = &rest[..rest.find('"').unwrap()];
+            if link.starts_with('#') {
+                continue;
+            }
+            assert!(!link.contains(':'), "{link}: the page points off the machine");
+            let mut path = String::new();
+            let b = link.as_bytes();
+            let mut i = 0;
+            while i < b.len() {
+                if b[i] == b'%' {
+                    path.push(u8::from_str_radix(&link[i + 1..i + 3], 16).unwrap() as char);
+                    i += 3;
+                } else {
+                    path.push(b[i] as char);
+                    i += 1;
+                }
+            }
+            assert!(d.join(&path).is_file(), "{link} does not resolve to a file");
+            n_img += (attr == "src=\"") as usize;
+        }
+    }
+    assert!(n_img >= 40, "{n_img} pictures");
+    let url = format!("file://{}", d.join("index.html").display());
+    let chrome = |extra: &[&str]| {
+        let mut args = vec!["120", browser, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars"];
+        args.extend(extra);
+        args.push(&url);
+        Command::new("timeout").args(&args).output().unwrap()
+    };
+    let dom = chrome(&["--dump-dom"]);
+    let dom = String::from_utf8_lossy(&dom.stdout);
+    let want = format!("data-ok=\"yes\">pictures loaded: {n_img} of {n_img}<");
+    assert!(dom.contains(&want), "{}", dom.lines().find(|l| l.contains("selfcheck")).unwrap_or("no check in the DOM"));
+    let shot = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("demo-page.png");
+    let _ = std::fs::remove_file(&shot);
+    let out = chrome(&["--window-size=1300,2400", &format!("--screenshot={}", shot.display())]);
+    assert!(shot.is_file(), "no screenshot: {}", String::from_utf8_lossy(&out.stderr));
+    let img = image::open(&shot).unwrap();
+    assert_eq!((img.width(), img.height()), (1300, 2400));
+    let _ = std::fs::remove_dir_all(&d);
 }

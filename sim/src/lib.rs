@@ -4,6 +4,7 @@
 pub mod accuracy;
 pub mod axis_rules;
 pub mod fst;
+pub mod glyphs;
 pub mod gtkw;
 pub mod heightmap;
 pub mod minify;

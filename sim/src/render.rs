@@ -255,6 +255,59 @@ pub fn heat(e: f64, max: f64) -> [u8; 3] {
     [c(t), c(t - 1.0), c(t - 2.0)]
 }
 
+/// A heat map's colour bar as drawn under it: `bar_height(size)` rows below a `size`-wide picture, the gradient of
+/// `heat` from 0 at its left end to `max` at its right, "0" under the left end and `max` with its unit under the
+/// right.
+pub fn bar_height(size: usize) -> usize {
+    19 * bar_scale(size)
+}
+
+fn bar_scale(size: usize) -> usize {
+    (size / 128).clamp(1, 4)
+}
+
+/// The label of a heat map's top: `max` to two decimals and its unit ("LSB", "deg").
+pub fn bar_label(max: f64, unit: &str) -> String {
+    format!("{max:.2} {unit}")
+}
+
+/// A heat map of errors in [0, `max`] (`heat`) as PNG, whole or not at all, with its colour bar under the frame in
+/// the picture itself: `err(place)` is the error at each place of the `size` × `size` frame, `None` where the
+/// surface does not cover it (background); `unit` names what the bar counts ("LSB", "deg").
+pub fn write_heat_png(
+    path: &Path,
+    size: usize,
+    err: impl Fn(usize) -> Option<f64>,
+    max: f64,
+    unit: &str,
+) -> Result<(), String> {
+    let s = bar_scale(size);
+    let mut img = image::RgbImage::from_pixel(size as u32, (size + bar_height(size)) as u32, image::Rgb(BACKGROUND));
+    for k in 0..size * size {
+        img.put_pixel((k % size) as u32, (k / size) as u32, image::Rgb(err(k).map_or(BACKGROUND, |e| heat(e, max))));
+    }
+    let (x0, x1) = (2 * s, size - 2 * s);
+    for x in x0..x1 {
+        let c = heat((x - x0) as f64 / (x1 - x0 - 1).max(1) as f64 * max, max);
+        for y in size + 2 * s..size + 8 * s {
+            img.put_pixel(x as u32, y as u32, image::Rgb(c));
+        }
+    }
+    let (w, h) = (img.width() as usize, img.height() as usize);
+    let mut dot = |x: usize, y: usize| {
+        if x < w && y < h {
+            img.put_pixel(x as u32, y as u32, image::Rgb([230, 230, 230]));
+        }
+    };
+    let y = size + 10 * s;
+    crate::glyphs::draw("0", x0, y, s, &mut dot)?;
+    let top = bar_label(max, unit);
+    // the label's last glyph column ends at the bar's right end (a glyph's trailing space column left off)
+    let x = (x1 + s).saturating_sub(crate::glyphs::width(&top, s));
+    crate::glyphs::draw(&top, x, y, s, &mut dot)?;
+    save_png(path, &img)
+}
+
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
 pub fn colour_err(a: [u8; 3], ideal: [f64; 3]) -> f64 {
     (0..3).map(|c| (a[c] as f64 - ideal[c]).abs()).fold(0.0, f64::max)

@@ -1,0 +1,62 @@
+//! Progress for the steps a command takes: on a terminal (standard error) a bar, or a spinner where the step has no
+//! count; otherwise, in a CI log or through `| tee`, one line a step when it ends: what, how many, how long.
+
+use indicatif::{ProgressBar, ProgressStyle};
+use std::io::IsTerminal;
+use std::time::Instant;
+
+/// Whether progress is drawn (standard error is a terminal) rather than written a line a step.
+pub fn drawn() -> bool {
+    std::io::stderr().is_terminal()
+}
+
+/// One step under way.
+pub struct Step {
+    what: String,
+    start: Instant,
+    bar: ProgressBar,
+}
+
+impl Step {
+    /// A step of `len` items (a bar), or of unknown length (a spinner).
+    pub fn new(what: &str, len: Option<u64>) -> Step {
+        let bar = match len {
+            Some(n) => {
+                let b = ProgressBar::new(n);
+                b.set_style(
+                    ProgressStyle::with_template("{msg:<40} [{bar:30}] {pos}/{len} {eta}")
+                        .expect("a template")
+                        .progress_chars("=> "),
+                );
+                b
+            }
+            None => {
+                let b = ProgressBar::new_spinner();
+                b.enable_steady_tick(std::time::Duration::from_millis(200));
+                b
+            }
+        };
+        bar.set_message(what.to_string());
+        Step { what: what.to_string(), start: Instant::now(), bar }
+    }
+
+    pub fn tick(&self, k: u64) {
+        self.bar.set_position(k);
+    }
+
+    /// The step's end: the bar cleared, or its line written (`how_many`: "65,536 px", "2 parts").
+    pub fn done(self, how_many: &str) {
+        self.bar.finish_and_clear();
+        if !drawn() {
+            eprintln!("{}: {how_many}, {:.1} s", self.what, self.start.elapsed().as_secs_f64());
+        }
+    }
+}
+
+/// `f` run as one step: its count from what it returns.
+pub fn step<T>(what: &str, how_many: impl Fn(&T) -> String, f: impl FnOnce() -> T) -> T {
+    let s = Step::new(what, None);
+    let t = f();
+    s.done(&how_many(&t));
+    t
+}
