@@ -130,6 +130,7 @@ p.intro { max-width: 60em; }
 nav a { margin-right: 1em; }
 .figs { display: flex; flex-wrap: wrap; gap: 14px; }
 .scroll { overflow-x: auto; }
+.one figure, .one figure img { width: auto; max-width: 100%; }
 figure { margin: 0; width: 232px; }
 figure img { width: 232px; image-rendering: pixelated; background: #0c0c10; display: block; }
 figcaption { font-size: 0.85em; color: #444; margin-top: 0.3em; }
@@ -183,7 +184,12 @@ impl Page {
                     }
                     Block::Table(t) => h.push_str(&t.html()),
                     Block::Figures(figs) => {
-                        h.push_str("<div class=\"figs\">\n");
+                        // a figure alone (a plot) at its own size; several side by side
+                        h.push_str(if figs.len() == 1 {
+                            "<div class=\"figs one\">\n"
+                        } else {
+                            "<div class=\"figs\">\n"
+                        });
                         for f in figs {
                             let _ = write!(
                                 h,
@@ -253,6 +259,62 @@ impl Page {
         m
     }
 
+    /// A page read from Markdown as the commands write it (`# ` title, `## ` sections, pipe tables, `- ` items and
+    /// paragraphs), `first` put before its first section.
+    pub fn from_markdown(md: &str, first: Section) -> Page {
+        // what comes before the first `## ` goes into a section of its own, dropped if empty
+        let lead = Section { title: "Summary".into(), blocks: vec![] };
+        let mut page = Page { title: String::new(), intro: vec![], sections: vec![first, lead] };
+        let mut text: Vec<String> = vec![];
+        let mut table: Option<Table> = None;
+        let cells = |l: &str| -> Vec<String> {
+            l.trim().trim_matches('|').split(" | ").map(|c| c.trim().replace("\\|", "|")).collect()
+        };
+        let flush = |page: &mut Page, text: &mut Vec<String>, table: &mut Option<Table>| {
+            let blocks = &mut page.sections.last_mut().expect("two sections at least").blocks;
+            if !text.is_empty() {
+                blocks.push(Block::Text(text.join(" ")));
+                text.clear();
+            }
+            if let Some(t) = table.take() {
+                blocks.push(Block::Table(t));
+            }
+        };
+        for line in md.lines() {
+            let l = line.trim_end();
+            if let Some(t) = l.strip_prefix("# ") {
+                page.title = t.to_string();
+            } else if let Some(t) = l.strip_prefix("## ") {
+                flush(&mut page, &mut text, &mut table);
+                page.sections.push(Section { title: t.to_string(), blocks: vec![] });
+            } else if l.starts_with('|') {
+                if !text.is_empty() {
+                    let t = table.take();
+                    flush(&mut page, &mut text, &mut None);
+                    table = t;
+                }
+                match &mut table {
+                    None => {
+                        let header = cells(l);
+                        table = Some(Table { title: String::new(), header, rows: vec![], note: None });
+                    }
+                    Some(_) if l.contains("---") && l.chars().all(|c| "|-: ".contains(c)) => {}
+                    Some(t) => t.rows.push(cells(l)),
+                }
+            } else if l.trim().is_empty() {
+                flush(&mut page, &mut text, &mut table);
+            } else {
+                if table.is_some() {
+                    flush(&mut page, &mut text, &mut table);
+                }
+                text.push(l.trim_start_matches("- ").to_string());
+            }
+        }
+        flush(&mut page, &mut text, &mut table);
+        page.sections.retain(|s| !s.blocks.is_empty());
+        page
+    }
+
     /// Every file the page links or shows, relative to it.
     pub fn files(&self) -> Vec<&str> {
         let mut v = vec![];
@@ -286,12 +348,33 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_markdown_report_becomes_a_title_sections_tables_and_text() {
+        let md = "# R\n\nintro line\nsecond\n\n| a | b \\| c |\n| --- | --- |\n| x | 1 |\nafter\n\n## Two\n\n- item\n";
+        let first = Section { title: "Plot".into(), blocks: vec![Block::Text("p".into())] };
+        let p = Page::from_markdown(md, first);
+        assert_eq!(p.title, "R");
+        let titles: Vec<&str> = p.sections.iter().map(|s| s.title.as_str()).collect();
+        assert_eq!(titles, ["Plot", "Summary", "Two"]);
+        let b = &p.sections[1].blocks;
+        assert!(matches!(&b[0], Block::Text(t) if t == "intro line second"));
+        match &b[1] {
+            Block::Table(t) => {
+                assert_eq!(t.header, ["a", "b | c"]);
+                assert_eq!(t.rows, [["x", "1"]]);
+            }
+            _ => panic!("no table"),
+        }
+        assert!(matches!(&b[2], Block::Text(t) if t == "after"));
+        assert!(matches!(&p.sections[2].blocks[..], [Block::Text(t)] if t == "item"));
+    }
+
+    #[test]
     fn text_is_escaped_and_paths_are_encoded() {
         assert_eq!(escape("a<b & \"c\"'"), "a&lt;b &amp; &quot;c&quot;&#39;");
         assert_eq!(href("img/a b#c.png"), "img/a%20b%23c.png");
         let mut t = Table::new("x|y", &["a", "b"]);
         t.rows.push(vec!["1|2".into(), "<3>".into()]);
         assert!(t.markdown().contains("| 1\\|2 | <3> |"));
-        assert!(t.html().contains("<th>1|2</th><td>&lt;3&gt;</td>"));
+        assert!(t.html().contains("<th>1|2</th><td class=\"t\">&lt;3&gt;</td>"));
     }
 }

@@ -3,6 +3,7 @@
 //! for a window, traced to a VCD. The rtl paths must equal the model on every pixel they render; the command fails
 //! if they do not. The scene is read (or refused) before anything is written.
 
+use crate::page::{Block, Figure, Page, Section, Table};
 use sim::render::{self, Window};
 use std::path::Path;
 use std::time::Instant;
@@ -100,7 +101,13 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     png("shade", &|k| [to8(pipe.shade(&model.outs[k])); 3])?;
     let e = sim::pipeline::errors(pipe.as_ref(), scene, &prep, &model);
     let hmax = e.colour.max.max(1.0);
-    png("error_heat", &|k| render::heat(render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb), hmax))?;
+    render::write_heat_png(
+        &out.join(format!("{stem}_error_heat.png")),
+        size,
+        |at| by[at].map(|k| render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb)),
+        hmax,
+        "LSB",
+    )?;
 
     println!();
     println!("{n} pixels of the surface in the {size} × {size} frame");
@@ -139,7 +146,88 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     println!();
     let vl_png = if vl.is_some() { format!("{stem}_verilator.png, ") } else { String::new() };
     println!("wrote {}: {stem}_{{ideal,model,shade,error_heat}}.png, {vl_png}{stem}_window.vcd", out.display());
+    // the page: the pictures, the paths and the error, the files
+    let fig = |what: &str, caption: String| Figure { src: format!("{stem}_{what}.png"), caption, bar: None };
+    let mut figs = vec![fig("ideal", "the f64 ideal".into()), fig("model", "the bit-exact model".into())];
+    if let (Some(v), Some(m)) = (&vl, mism_vl) {
+        figs.push(fig(
+            "verilator",
+            format!("Verilator on the exported Verilog, {} threads ({m} pixels differ)", v.threads),
+        ));
+    }
+    figs.push(fig("shade", format!("the shade alone ({})", pipe.shade_name())));
+    figs.push(Figure {
+        src: format!("{stem}_error_heat.png"),
+        caption: "the model's colour error against the ideal, worst channel".into(),
+        bar: Some((hmax, "LSB")),
+    });
+    let mut paths = Table::new(
+        &format!("{n} pixels of the surface in the {size} × {size} frame"),
+        &["path", "pixels/s", "pixels that differ from the model"],
+    );
+    paths.rows.push(vec![
+        "f64 ideal (set-up included)".into(),
+        format!("{:.0}", n as f64 / ideal_s.max(1e-9)),
+        "-".into(),
+    ]);
+    paths.rows.push(vec![
+        render::on_threads("bit-exact model", threads),
+        format!("{:.0}", model.pixels_per_second()),
+        "-".into(),
+    ]);
+    if let Some(v) = &vl {
+        paths.rows.push(vec![
+            render::on_threads("Verilator, whole frame", v.threads),
+            format!("{:.0}", v.image.pixels_per_second()),
+            mism_vl.unwrap_or(0).to_string(),
+        ]);
+    }
+    paths.rows.push(vec![
+        format!("rust-hdl, window {}×{} at ({}, {}), traced", win.w, win.h, win.x, win.y),
+        format!("{:.0}", wpx.len() as f64 / hdl_s.max(1e-9)),
+        mism_hdl.to_string(),
+    ]);
+    let mut errors = Table::new("The model against the scene's ideal", &["what", "mean", "max", "max at"]);
+    let mut erow = |name: String, s: &vectors::stats::ErrorStats| {
+        errors.rows.push(vec![name, format!("{:.3}", s.mean()), format!("{:.3}", s.max), s.argmax.clone()])
+    };
+    erow(format!("shade, 8-bit LSB ({})", pipe.shade_name()), &e.shade);
+    erow("blended colour, 8-bit LSB".into(), &e.colour);
+    if let Some(s) = &e.normal {
+        erow("normal angle, degrees".into(), s);
+    }
+    if let Some(s) = &e.surface {
+        erow("shade vs the ideal under its one light".into(), s);
+    }
+    let page = Page {
+        title: format!("bumprtl render: {}", spec.name),
+        intro: vec![
+            format!(
+                "{} through {} ({}, latency {} clocks): {}.",
+                path.display(),
+                m.name,
+                pipe.label(),
+                rtl.latency(),
+                pipe.describe(scene)
+            ),
+            format!("Its units, in order: {}.", pipe.units().join(" → ")),
+        ],
+        sections: vec![
+            Section { title: "Pictures".into(), blocks: vec![Block::Figures(figs)] },
+            Section { title: "Paths".into(), blocks: vec![Block::Table(paths)] },
+            Section { title: "Error".into(), blocks: vec![Block::Table(errors)] },
+            Section {
+                title: "Waveform".into(),
+                blocks: vec![Block::Links(vec![
+                    (format!("{stem}_window.vcd"), format!("{stem}_window.vcd")),
+                    (format!("{stem}_window.gtkw (GTKWave)"), format!("{stem}_window.gtkw")),
+                ])],
+            },
+        ],
+    };
+    let (index, _) = page.write(out)?;
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
+    println!("the page: {}", index.display());
     let bad = mism_hdl + mism_vl.unwrap_or(0);
     if bad != 0 {
         return Err(format!(

@@ -595,6 +595,10 @@ fn render_runs_a_scene_file_on_every_path_and_the_rtl_equals_the_model() {
         assert!(d.join(f).is_file(), "{f}");
     }
     assert_eq!(d.join("directional_verilator.png").is_file(), w);
+    // the page shows the pictures (the heat map with its scale) and links the window's waveform
+    let html = std::fs::read_to_string(d.join("index.html")).unwrap();
+    assert!(html.contains("src=\"directional_error_heat.png\"") && html.contains("class=\"bar\""), "{html}");
+    assert!(html.contains("href=\"directional_window.gtkw\"") && d.join("summary.md").is_file());
     // the window's VCD holds its 30 pixels' clocks and the pipeline's signals
     let vcd = std::fs::read_to_string(d.join("directional_window.vcd")).unwrap();
     assert!(vcd.contains("$scope") && vcd.contains("valid_out"), "VCD");
@@ -863,6 +867,9 @@ fn a_report_plan_run_through_gnu_parallel_merges_into_the_report_run_in_one_proc
     let (code, out, err) = bumprtl(&args);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("quad.cart_surface_nearest_hemi_oct") && one.join("pareto.png").is_file(), "{out}");
+    // the same report as a page: the plot, then each point a row of its table
+    let html = std::fs::read_to_string(one.join("index.html")).unwrap();
+    assert!(html.contains("<img src=\"pareto.png\"") && html.contains("<th>quad.cart_surface_nearest_hemi_oct</th>"));
     // the plan: one command per point, the merge step, the Slurm array
     let plan = d.join("plan.txt");
     let mut args = vec!["report", "--out", many.to_str().unwrap(), "--plan", plan.to_str().unwrap()];

@@ -76,8 +76,18 @@ pub fn finish(rs: &[PointFigures], out: &Path, budgets: &[f64]) -> Result<(), St
     let md = markdown(rs, budgets);
     synth::export::write_atomic(&out.join("report.md"), md.as_bytes())?;
     plot(rs, &out.join("pareto.png"))?;
+    // the same as a page, the Pareto plot first
+    let plot = crate::page::Section {
+        title: "Error against cost".into(),
+        blocks: vec![crate::page::Block::Figures(vec![crate::page::Figure {
+            src: "pareto.png".into(),
+            caption: "each point's colour error against its cost; the Pareto front joined".into(),
+            bar: None,
+        }])],
+    };
+    let (index, _) = crate::page::Page::from_markdown(&md, plot).write(out)?;
     print!("{md}");
-    println!("\nwrote {}, {}", out.join("report.md").display(), out.join("pareto.png").display());
+    println!("\nwrote {}, {}, {}", out.join("report.md").display(), out.join("pareto.png").display(), index.display());
     Ok(())
 }
 
