@@ -6,7 +6,7 @@
 //! filters over a sweep of LOD biases. The scene is read (or refused) before anything is written.
 
 use sim::minify::{self, Line, MINIFIED};
-use sim::render::{heat, write_png, BACKGROUND};
+use sim::render::{write_png, BACKGROUND};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -144,13 +144,14 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize, bias: Option<f64>) -
     }
     write_png(&out.join("minify_ideal.png"), size, |k| ideal_at[k].unwrap_or(BACKGROUND))?;
     for l in &lines {
-        // the frame on the left, its error on the right
-        let mut img = image::RgbImage::new(2 * size as u32, size as u32);
+        // the frame on the left, its error on the right with its colour bar under it
+        let heat = sim::render::heat_image(size, |k| l.error[k], HEAT_MAX, "LSB")?;
+        let mut img = image::RgbImage::from_pixel(2 * size as u32, heat.height(), image::Rgb(BACKGROUND));
         for k in 0..size * size {
             let (x, y) = ((k % size) as u32, (k / size) as u32);
             img.put_pixel(x, y, image::Rgb(l.frame[k].unwrap_or(BACKGROUND)));
-            img.put_pixel(x + size as u32, y, image::Rgb(l.error[k].map_or(BACKGROUND, |e| heat(e, HEAT_MAX))));
         }
+        image::imageops::replace(&mut img, &heat, size as i64, 0);
         sim::render::save_png(&out.join(format!("minify_{}.png", l.filter.name())), &img)?;
     }
     let text = table(&spec.name, samples, scene.lod_bias, &ideal, &lines, &swept);
@@ -162,7 +163,7 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize, bias: Option<f64>) -
     print!("{text}");
     println!(
         "\nwrote {}: the ideal (minify_ideal.png), each filter's frame and its error, black 0 to white {HEAT_MAX} LSB \
-         (minify_<filter>.png)",
+         on the bar under it (minify_<filter>.png)",
         out.display()
     );
     Ok(())

@@ -281,6 +281,16 @@ pub fn write_heat_png(
     max: f64,
     unit: &str,
 ) -> Result<(), String> {
+    save_png(path, &heat_image(size, err, max, unit)?)
+}
+
+/// The picture `write_heat_png` writes: `size` wide, `size + bar_height(size)` high.
+pub fn heat_image(
+    size: usize,
+    err: impl Fn(usize) -> Option<f64>,
+    max: f64,
+    unit: &str,
+) -> Result<image::RgbImage, String> {
     let s = bar_scale(size);
     let mut img = image::RgbImage::from_pixel(size as u32, (size + bar_height(size)) as u32, image::Rgb(BACKGROUND));
     for k in 0..size * size {
@@ -305,7 +315,7 @@ pub fn write_heat_png(
     // the label's last glyph column ends at the bar's right end (a glyph's trailing space column left off)
     let x = (x1 + s).saturating_sub(crate::glyphs::width(&top, s));
     crate::glyphs::draw(&top, x, y, s, &mut dot)?;
-    save_png(path, &img)
+    Ok(img)
 }
 
 /// Worst channel error of a blended colour against the ideal, 8-bit LSB.
