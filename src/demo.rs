@@ -312,18 +312,19 @@ pub fn run(
         each("shade", format!("the shade alone ({})", r.pipe.shade_name()), &|k| {
             [to8(r.pipe.shade(&r.model.outs[k])); 3]
         })?;
-        let hmax = r.colour.max.max(1.0);
+        let err: Vec<f64> = (0..r.prep.ideal.len())
+            .map(|k| render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb))
+            .collect();
+        let hmax = render::heat_scale(err.iter().copied());
         let file = format!("{name}_error_heat.png");
-        render::write_heat_png(
-            &img.join(&file),
-            size,
-            |at| by[at].map(|k| render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb)),
-            hmax,
-            "LSB",
-        )?;
+        render::write_heat_png(&img.join(&file), size, |at| by[at].map(|k| err[k]), hmax, "LSB")?;
         figs.push(Figure {
             src: format!("img/{file}"),
-            caption: "the model's colour error against the ideal, worst channel".into(),
+            caption: format!(
+                "the model's colour error against the ideal, worst channel; white from {hmax:.0} LSB (99% of the \
+                 pixels are below), the largest {:.2} LSB",
+                r.colour.max
+            ),
             bar: Some((hmax, "LSB")),
         });
         n_png += figs.len();
@@ -343,11 +344,14 @@ pub fn run(
         });
     }
     let pol = &runs[2];
-    let smax = sc.surface.max.max(1.0);
+    let serr: Vec<f64> =
+        (0..pol.prep.ideal.len()).map(|k| (pol.pipe.shade(&pol.model.outs[k]) - sc.surface_ideal[k]).abs()).collect();
+    let smax = render::heat_scale(serr.iter().copied());
+    let pol_by = pol.prep.by_place();
     render::write_heat_png(
         &img.join("polar_surface_light_error_heat.png"),
         size,
-        |at| pol.prep.by_place()[at].map(|k| (pol.pipe.shade(&pol.model.outs[k]) - sc.surface_ideal[k]).abs()),
+        |at| pol_by[at].map(|k| serr[k]),
         smax,
         "LSB",
     )?;
@@ -536,9 +540,11 @@ pub fn run(
             Block::Figures(vec![
                 Figure {
                     src: "img/polar_surface_light_error_heat.png".into(),
-                    caption: "the polar shade against an ideal lit by the surface's one light: where the polar \
-                              form's own approximation shows"
-                        .into(),
+                    caption: format!(
+                        "the polar shade against an ideal lit by the surface's one light: where the polar form's own \
+                         approximation shows; white from {smax:.0} LSB, the largest {:.2} LSB",
+                        sc.surface.max
+                    ),
                     bar: Some((smax, "LSB")),
                 },
                 fig(

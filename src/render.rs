@@ -100,11 +100,12 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     }
     png("shade", &|k| [to8(pipe.shade(&model.outs[k])); 3])?;
     let e = sim::pipeline::errors(pipe.as_ref(), scene, &prep, &model);
-    let hmax = e.colour.max.max(1.0);
+    let err: Vec<f64> = (0..n).map(|k| render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb)).collect();
+    let hmax = render::heat_scale(err.iter().copied());
     render::write_heat_png(
         &out.join(format!("{stem}_error_heat.png")),
         size,
-        |at| by[at].map(|k| render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb)),
+        |at| by[at].map(|k| err[k]),
         hmax,
         "LSB",
     )?;
@@ -158,7 +159,11 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     figs.push(fig("shade", format!("the shade alone ({})", pipe.shade_name())));
     figs.push(Figure {
         src: format!("{stem}_error_heat.png"),
-        caption: "the model's colour error against the ideal, worst channel".into(),
+        caption: format!(
+            "the model's colour error against the ideal, worst channel; white from {hmax:.0} LSB (99% of the pixels \
+             are below), the largest {:.2} LSB",
+            e.colour.max
+        ),
         bar: Some((hmax, "LSB")),
     });
     let mut paths = Table::new(

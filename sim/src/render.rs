@@ -255,6 +255,17 @@ pub fn heat(e: f64, max: f64) -> [u8; 3] {
     [c(t), c(t - 1.0), c(t - 2.0)]
 }
 
+/// The end of a heat map's bar for these errors: their 99th percentile rounded up to a whole unit, at least 1, so a
+/// few outliers do not leave the rest of the map black; the errors above it are drawn white.
+pub fn heat_scale(errors: impl Iterator<Item = f64>) -> f64 {
+    let mut v: Vec<f64> = errors.collect();
+    if v.is_empty() {
+        return 1.0;
+    }
+    v.sort_by(f64::total_cmp);
+    v[((v.len() - 1) as f64 * 0.99).round() as usize].ceil().max(1.0)
+}
+
 /// A heat map's colour bar as drawn under it: `bar_height(size)` rows below a `size`-wide picture, the gradient of
 /// `heat` from 0 at its left end to `max` at its right, "0" under the left end and `max` with its unit under the
 /// right.
@@ -351,5 +362,23 @@ impl Window {
         inputs.extend(px.iter().map(|&k| p.inputs[p.prologue + k].clone()));
         let at = px.iter().map(|&k| p.frame_index(k)).collect();
         Prepared { size: p.size, inputs, prologue: p.prologue, ideal: px.iter().map(|&k| p.ideal[k]).collect(), at }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bar ends at the 99th percentile, rounded up, not at an outlier; never below 1.
+    #[test]
+    fn a_heat_scale_ends_at_the_99th_percentile_not_at_an_outlier() {
+        let mut e: Vec<f64> = (0..1000).map(|k| (k % 100) as f64 / 40.0).collect(); // 0 … 2.475
+        e.push(500.0);
+        assert_eq!(heat_scale(e.iter().copied()), 3.0);
+        assert_eq!(heat_scale([0.0, 0.2].into_iter()), 1.0);
+        assert_eq!(heat_scale(std::iter::empty()), 1.0);
+        assert_eq!(heat(3.0, 3.0), [255, 255, 255]);
+        assert_eq!(heat(500.0, 3.0), [255, 255, 255]);
+        assert_eq!(heat(0.0, 3.0), [0, 0, 0]);
     }
 }
