@@ -129,13 +129,27 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize, bias: Option<f64>) -
         scene.lod_bias = sim::scene_file::LodBias::try_from(b).map_err(|e| format!("--lod-bias {b}: {e}"))?.0;
     }
     let scene = &scene;
-    let ideal = minify::ideal_shaded(scene, samples, minify::Shading::of(&spec));
+    let ideal = crate::progress::step(
+        &format!("the supersampled ideal, {samples} × {samples} a pixel"),
+        |i: &minify::Ideal| format!("{} px", i.at.len()),
+        || minify::ideal_shaded(scene, samples, minify::Shading::of(&spec)),
+    );
     let named = |e: String| match path {
         Some(p) => format!("{}: {e}", p.display()),
         None => e,
     };
-    let lines = minify::measure(scene, &ideal).map_err(named)?;
-    let swept = minify::sweep(scene, &ideal).map_err(named)?;
+    let lines = crate::progress::step(
+        "each filter of the texture unit",
+        |l: &Result<Vec<_>, String>| format!("{} filters", l.as_ref().map_or(0, |l| l.len())),
+        || minify::measure(scene, &ideal),
+    )
+    .map_err(named)?;
+    let swept = crate::progress::step(
+        "the MIP filters over LOD biases",
+        |l: &Result<Vec<_>, String>| format!("{} rows", l.as_ref().map_or(0, |l| l.len())),
+        || minify::sweep(scene, &ideal),
+    )
+    .map_err(named)?;
     crate::output::writable_folder(out)?;
     let size = scene.size;
     let mut ideal_at = vec![None; size * size];

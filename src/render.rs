@@ -48,11 +48,13 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     println!("pipeline: {} ({}, latency {} clocks): {}", m.name, pipe.label(), rtl.latency(), pipe.describe(scene));
     println!("  units: {}", pipe.units().join(" → "));
 
+    let step = crate::progress::Step::new(&format!("{}: the ideal and the model", m.name), None);
     let t = Instant::now();
     let prep = pipe.prepare(scene);
     let ideal_s = t.elapsed().as_secs_f64();
     let threads = render::cores();
     let model = render::fastest(|| render::model_on(m, &prep, threads));
+    step.done(&format!("{} px, {} runs", prep.ideal.len(), render::RUNS));
     let n = prep.ideal.len();
     // the window: the one asked for, or 8 × 8 round the covered pixel nearest the frame's centre
     let win = window.unwrap_or_else(|| {
@@ -73,15 +75,20 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     }
     // Verilator, the whole frame
     let vl = if verilator && no_vl.is_empty() {
-        Some(rtl.verilator(m, &prep, &out.join("verilator").join(m.name), 2)?)
+        let step = crate::progress::Step::new(&format!("{}: Verilator, built and run", m.name), None);
+        let v = rtl.verilator(m, &prep, &out.join("verilator").join(m.name), 2)?;
+        step.done(&format!("{n} px, {} runs each way", render::RUNS));
+        Some(v)
     } else {
         None
     };
     // rust-hdl, the window, traced
     let vcd = out.join(format!("{stem}_window.vcd"));
+    let step = crate::progress::Step::new(&format!("{}: rust-hdl, the window traced", m.name), None);
     let t = Instant::now();
     let hdl = rtl.traced(m, &wprep, &vcd)?;
     let hdl_s = t.elapsed().as_secs_f64();
+    step.done(&format!("{} vectors", wprep.inputs.len()));
     let wpx = win.pixels(&prep);
     let mism_hdl = wpx.iter().zip(&hdl).filter(|(&k, o)| model.outs[k] != **o).count() + wpx.len().abs_diff(hdl.len());
     let mism_vl = vl.as_ref().map(|v| v.image.mismatches(&model) + v.single.mismatches(&model));

@@ -166,12 +166,21 @@ pub fn synth(
     let (part, choice) = match part {
         Some(p) => (p, String::new()),
         None => {
-            let (p, _, why) = rtl.choose(&d)?;
+            let (p, _, why) = crate::progress::step(
+                &format!("{name}: yosys on each part, smallest first, to the first it fits"),
+                |r: &Result<(synth::fpga::Part, _, _), String>| {
+                    r.as_ref().map_or("none".into(), |r| r.0.name.to_string())
+                },
+                || rtl.choose(&d),
+            )?;
             (p, why)
         }
     };
-    let r =
-        rtl.synth_and_place(&d, part, freq.unwrap_or(part.default_freq()), &choice, synth::fpga::Seeds::all(seeds))?;
+    let r = crate::progress::step(
+        &format!("{name} on the {}: yosys, then nextpnr at {seeds} seeds", part.name),
+        |_: &Result<_, String>| format!("{seeds} placements"),
+        || rtl.synth_and_place(&d, part, freq.unwrap_or(part.default_freq()), &choice, synth::fpga::Seeds::all(seeds)),
+    )?;
     crate::synth_figures::synth_row(&r);
     let family = r.part().family;
     let tied = |tag: &str, ties: &[(&str, u64)], keep: &[&str]| rtl.synth_tied(&d, family, tag, ties, keep);
