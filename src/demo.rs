@@ -337,7 +337,8 @@ pub fn run(
         page.sections.push(Section {
             title,
             blocks: vec![
-                Block::Text(capitalised(&r.pipe.describe(sc_))),
+                // as the pipeline says it (it may begin with a symbol, s_N, whose case is its meaning)
+                Block::Text(r.pipe.describe(sc_)),
                 Block::Text(format!("Its units, in order: {}.", r.pipe.units().join(" → "))),
                 Block::Figures(figs),
             ],
@@ -722,12 +723,6 @@ fn glance(all: &[&Run], hw: Option<&[Cost]>) -> Table {
     }
     t.note = Some(note);
     t
-}
-
-/// `text` with its first letter a capital.
-fn capitalised(text: &str) -> String {
-    let mut c = text.chars();
-    c.next().map(|f| f.to_uppercase().chain(c).collect()).unwrap_or_default()
 }
 
 /// `text` cut into lines of at most `width` characters, at spaces.
