@@ -321,11 +321,15 @@ pub fn heat_image(
         }
     };
     let y = size + 10 * s;
-    crate::glyphs::draw("0", x0, y, s, &mut dot)?;
     let top = bar_label(max, unit);
-    // the label's last glyph column ends at the bar's right end (a glyph's trailing space column left off)
-    let x = (x1 + s).saturating_sub(crate::glyphs::width(&top, s));
-    crate::glyphs::draw(&top, x, y, s, &mut dot)?;
+    // the labels where both fit under the bar apart (a frame a few dozen pixels wide has the bar alone; its page
+    // gives the ends beside it)
+    if crate::glyphs::width(&format!("0 {top}"), s) <= x1 - x0 + s {
+        crate::glyphs::draw("0", x0, y, s, &mut dot)?;
+        // the label's last glyph column ends at the bar's right end (a glyph's trailing space column left off)
+        let x = (x1 + s).saturating_sub(crate::glyphs::width(&top, s));
+        crate::glyphs::draw(&top, x, y, s, &mut dot)?;
+    }
     Ok(img)
 }
 
@@ -380,5 +384,19 @@ mod tests {
         assert_eq!(heat(3.0, 3.0), [255, 255, 255]);
         assert_eq!(heat(500.0, 3.0), [255, 255, 255]);
         assert_eq!(heat(0.0, 3.0), [0, 0, 0]);
+    }
+
+    /// The bar's labels are drawn where both fit under it apart, and left off a frame too narrow for them.
+    #[test]
+    fn a_heat_maps_bar_is_labelled_where_its_labels_fit() {
+        let labelled = |size: usize| {
+            let img = heat_image(size, |_| Some(0.0), 7.0, "LSB").unwrap();
+            assert_eq!(img.height() as usize, size + bar_height(size));
+            img.pixels().any(|p| p.0 == [230, 230, 230])
+        };
+        assert!(!labelled(16));
+        assert!(!labelled(32));
+        assert!(labelled(128));
+        assert!(labelled(256));
     }
 }
