@@ -61,8 +61,9 @@ pub fn run(
     let wall = Instant::now();
     let mut rs = vec![];
     for (k, p) in pts.iter().enumerate() {
-        eprintln!("[{}/{}] {}", k + 1, pts.len(), p.id);
+        let step = crate::progress::Step::new(&format!("[{}/{}] {}", k + 1, pts.len(), p.id), None);
         let r = run_point(p, out, place)?;
+        step.done("a point");
         synth::export::write_atomic(&dir.join(format!("{}.txt", p.id)), r.to_text().as_bytes())?;
         rs.push(r);
     }
