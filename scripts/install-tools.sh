@@ -34,6 +34,8 @@ fi
 missing=()
 for w in "${wanted[@]}"; do
   IFS=: read -r cmd pkg what <<<"$w"
+  # a browser the tests take under any of its names
+  [ "$cmd" = chromium ] && { command -v chromium-browser >/dev/null 2>&1 || command -v google-chrome >/dev/null 2>&1; } && continue
   if ! command -v "$cmd" >/dev/null 2>&1; then
     case " ${missing[*]:-} " in *" $pkg "*) ;; *) missing+=("$pkg"); echo "installing $pkg (Debian): $what" ;; esac
   fi
@@ -46,8 +48,12 @@ fi
 sudo=""
 [ "$(id -u)" -ne 0 ] && sudo="sudo"
 if [ "${#missing[@]}" -gt 0 ]; then
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+  # apt's own chatter only where it fails
+  if ! log=$($sudo apt-get update -qq 2>&1 && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" 2>&1); then
+    echo "$log" >&2
+    echo "could not install ${missing[*]} with apt-get (above); install them and run this again" >&2
+    exit 1
+  fi
 fi
 # the PyPI tools: nextpnr-ecp5 for the ECP5 figures, yosys and nextpnr-ice40 for `--toolchain pypi`, FuseSoC and
 # cocotb for the exported cores and tests

@@ -168,7 +168,8 @@ enum Cmd {
         out: PathBuf,
     },
     /// Render a scene file (scenes/*.toml) through the pipeline it names: the f64 ideal, the bit-exact model,
-    /// Verilator for the whole frame and rust-hdl for a window (traced to a VCD); fails if the rtl and the model differ
+    /// Verilator for the whole frame and rust-hdl for a window (traced to a VCD); a page of it all, OUT/<scene>.html
+    /// (its tables also in OUT/<scene>.md); fails if the rtl and the model differ
     Render {
         scene: PathBuf,
         #[arg(long, default_value = "out/render")]
@@ -199,7 +200,7 @@ enum Cmd {
     /// The design knobs swept over scenes: each point's error against the scene's ideal (colour, shade, normal
     /// angle; for the Cartesian pipelines the shade's error split into encoding, method and datapath) beside its
     /// cost (iCE40 cells, placement, latency) and the model's speed; a Markdown table (DIR/report.md), a Pareto
-    /// plot (DIR/pareto.png) and the cheapest configuration within each --budget. Every point is independent:
+    /// plot (DIR/pareto.png), both on a page (DIR/index.html) and the cheapest configuration within each --budget. Every point is independent:
     /// --plan writes one command per point and a merge step (GNU parallel, ssh, a Slurm array)
     Report {
         /// a scene to sweep over (repeatable): `demo`, `quad` (the embedded ones) or a scene file; default both
@@ -270,8 +271,9 @@ enum Cmd {
     /// The hard cases the patents and the paper warn about, unit by unit: what they ask, what the rtl does
     /// (rust-hdl, held to the model), pass or fail, as a Markdown table; fails if any row fails
     Hardcases,
-    /// The main job: the default scene (a torus) and every pipeline on a quad through the f64 ideal, the model,
-    /// rust-hdl and Verilator; the torus's pipeline placed on the ECP5 and every pipeline's cells, beside the rendering;
+    /// The main job: the default scene (a torus) and every pipeline on a quad through the f64 ideal, the model and
+    /// Verilator, four of the quad's through rust-hdl; the torus's pipeline placed on the ECP5 and every pipeline's
+    /// cells, beside the rendering;
     /// OUT/index.html shows it all (pictures in OUT/img, waveforms in OUT/wave, Verilog in OUT/verilog), OUT/summary.md
     /// has the tables
     Demo {

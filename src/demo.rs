@@ -406,7 +406,7 @@ pub fn run(
     }
     exports.done(&format!("{} VCD, {} Verilog files", wave_links.len() / 2, verilog_links.len()));
 
-    let hw = pool.map(|p| p.join()).transpose()?;
+    let hw = pool.map(|p| p.join());
     let source = match height_map {
         Some(p) => {
             format!("{} ({}x{}, white {:.2} texels above black)", p.display(), scene.tex, scene.tex, scene.relief)
@@ -416,10 +416,11 @@ pub fn run(
     let covered = on_torus.prep.ideal.len();
     page.intro = vec![
         format!(
-            "Every pipeline below is a synthesizable rust-hdl design. Each frame was computed four ways: in f64 (the \
-             ideal), by the bit-exact software model, by rust-hdl's simulator and by Verilator on the exported \
-             Verilog; the last three must agree on every pixel, and the error heat maps measure the model against \
-             the ideal. Frames are {size} × {size}."
+            "Every pipeline below is a synthesizable rust-hdl design. Each frame was computed in f64 (the ideal), by \
+             the bit-exact software model and by Verilator on the exported Verilog, and four of the quad's frames \
+             also by rust-hdl's simulator (the tests run every pipeline through it); every path must agree with the \
+             model on every pixel, and the error heat maps measure the model against the ideal. Frames are {size} × \
+             {size}."
         ),
         format!(
             "The torus ({covered} pixels) wears {source} repeated 6 × 2 round it, lit by a point light whose \
@@ -441,6 +442,13 @@ pub fn run(
         ));
     } else if let (true, Some(e)) = (synth, &no_ecp5) {
         skipped.push(format!("the placement on the ECP5 skipped (cells from yosys only): {e}"));
+    }
+    // a synthesis job that failed leaves its row without figures, and says why here
+    let names = std::iter::once(&on_torus).chain(&runs).map(|r| r.pipe.model().name);
+    for (name, c) in names.zip(hw.iter().flatten()) {
+        if let Cost::Failed(e) = c {
+            skipped.push(format!("synthesis of {name} failed: {e}"));
+        }
     }
 
     // the tables: speed, error, hardware, the model beside float software, the shortcomings and the variants
@@ -638,7 +646,9 @@ pub fn run(
     }
     println!();
     for s in &skipped {
-        println!("{s}");
+        for l in wrap(s, 100) {
+            println!("{l}");
+        }
     }
     println!("every table: {}", md.display());
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
@@ -661,10 +671,7 @@ pub fn run(
 fn cells_of(c: &Cost) -> Option<synth::fpga::Cells> {
     match c {
         Cost::Cells(c) => Some(*c),
-        Cost::Placed(p) => p.first().and_then(|(_, f)| match f {
-            synth::fpga::Fit::Placed(r) => Some(r.cells),
-            synth::fpga::Fit::DoesNotFit(_) => None,
-        }),
+        _ => placed_of(c).map(|r| r.cells),
     }
 }
 
@@ -675,7 +682,7 @@ fn placed_of(c: &Cost) -> Option<&synth::fpga::SynthReport> {
             synth::fpga::Fit::Placed(r) => Some(r),
             synth::fpga::Fit::DoesNotFit(_) => None,
         }),
-        Cost::Cells(_) => None,
+        Cost::Cells(_) | Cost::Failed(_) => None,
     }
 }
 
@@ -785,11 +792,7 @@ fn hardware_tables(names: &[&str], units: &[&str], hw: &[Cost]) -> Vec<Block> {
         );
         t.rows.push(vec![
             r.lc.map(|x| pct(x, p.lut4)).unwrap_or("-".into()),
-            match (&r.place_error, r.fmax_mhz) {
-                (Some(_), _) => r.unplaced_text(),
-                (None, Some(x)) => format!("{x:.1} MHz"),
-                _ => "-".into(),
-            },
+            r.fmax_mhz.filter(|_| r.place_error.is_none()).map_or_else(|| r.unplaced_text(), |x| format!("{x:.1} MHz")),
             r.placed_of(),
             r.latency.to_string(),
             r.critical.clone().unwrap_or_default(),

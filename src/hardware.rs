@@ -2,17 +2,19 @@
 //! pipeline's cells from yosys alone there; cached (the first run synthesises, later runs read the figures while the
 //! Verilog is unchanged).
 
-use indicatif::{MultiProgress, ProgressBar};
+use indicatif::ProgressBar;
 use synth::fpga::{Fit, Part};
 
 /// The demo's placements: one, at seed 1, on a cold cache (its first run must stay short), and the median of every
 /// other of seeds 1 … 5 the cache holds (`synth` and `report` place all five).
 pub const DEMO_SEEDS: synth::fpga::Seeds = synth::fpga::Seeds { n: 5, least: 1 };
 
-/// What one of the demo's synthesis jobs gives: a pipeline placed on parts, or its cells from yosys alone.
+/// What one of the demo's synthesis jobs gives: a pipeline placed on parts, its cells from yosys alone, or why it
+/// gave neither (the demo goes on without its figures).
 pub enum Cost {
     Placed(Vec<(Part, Fit)>),
     Cells(synth::fpga::Cells),
+    Failed(String),
 }
 
 /// A job for one of the demo's synthesis threads.
@@ -33,10 +35,9 @@ impl Pool {
     pub fn start(jobs: Vec<(String, Job<'static>)>) -> Pool {
         let n = jobs.len();
         let queue = std::sync::Arc::new(std::sync::Mutex::new(jobs.into_iter().enumerate().collect()));
-        let multi = MultiProgress::new();
         let threads = (0..2)
             .map(|_| {
-                let bar = multi.add(ProgressBar::new_spinner());
+                let bar = crate::progress::bars().add(ProgressBar::new_spinner());
                 bar.enable_steady_tick(std::time::Duration::from_millis(200));
                 let queue: std::sync::Arc<std::sync::Mutex<std::collections::VecDeque<_>>> =
                     std::sync::Arc::clone(&queue);
@@ -65,7 +66,7 @@ impl Pool {
                                         format!("placed on {}", parts.join(", "))
                                     }
                                     Ok(Cost::Cells(_)) => "yosys alone".into(),
-                                    Err(_) => "failed".into(),
+                                    Ok(Cost::Failed(e)) | Err(e) => format!("failed: {e}"),
                                 };
                                 eprintln!("synthesis, {name}: {what}, {:.1} s", t.elapsed().as_secs_f64());
                             }
@@ -85,15 +86,26 @@ impl Pool {
         self.queue.lock().unwrap_or_else(|e| e.into_inner()).clear();
     }
 
-    /// Every job's result, in job order.
-    pub fn join(self) -> Result<Vec<Cost>, String> {
-        let mut results: Vec<Option<Result<Cost, String>>> = (0..self.n).map(|_| None).collect();
-        for h in self.threads {
+    /// Every job's result, in job order: a job that failed, or was cancelled before it ran, as `Cost::Failed`.
+    pub fn join(mut self) -> Vec<Cost> {
+        let mut results: Vec<Cost> = (0..self.n).map(|_| Cost::Failed("not run (cancelled)".into())).collect();
+        for h in std::mem::take(&mut self.threads) {
             for (k, r) in h.join().expect("a synthesis thread panicked") {
-                results[k] = Some(r);
+                results[k] = r.unwrap_or_else(Cost::Failed);
             }
         }
-        results.into_iter().map(|r| r.expect("every job ran")).collect()
+        results
+    }
+}
+
+/// A pool dropped on an error path takes no more jobs and waits for those under way (their tools are not left
+/// running behind the program).
+impl Drop for Pool {
+    fn drop(&mut self) {
+        self.cancel();
+        for h in std::mem::take(&mut self.threads) {
+            let _ = h.join();
+        }
     }
 }
 

@@ -303,11 +303,16 @@ impl Page {
                 }
             } else if l.trim().is_empty() {
                 flush(&mut page, &mut text, &mut table);
+            } else if let Some(item) = l.strip_prefix("- ") {
+                // an item of a list: a paragraph of its own
+                flush(&mut page, &mut text, &mut table);
+                text.push(item.to_string());
+                flush(&mut page, &mut text, &mut table);
             } else {
                 if table.is_some() {
                     flush(&mut page, &mut text, &mut table);
                 }
-                text.push(l.trim_start_matches("- ").to_string());
+                text.push(l.to_string());
             }
         }
         flush(&mut page, &mut text, &mut table);
@@ -333,10 +338,15 @@ impl Page {
     /// `dir/index.html` and `dir/summary.md`, each whole or not at all; an error names a linked file that is not
     /// there (a page must not point at nothing).
     pub fn write(&self, dir: &Path) -> Result<(PathBuf, PathBuf), String> {
+        self.write_as(dir, "index.html", "summary.md")
+    }
+
+    /// `write`, under names of the caller's (a command whose files share a folder with another run's).
+    pub fn write_as(&self, dir: &Path, html: &str, md: &str) -> Result<(PathBuf, PathBuf), String> {
         if let Some(f) = self.files().into_iter().find(|f| !dir.join(f).is_file()) {
-            return Err(format!("{}: the page links {f}, which was not written", dir.join("index.html").display()));
+            return Err(format!("{}: the page links {f}, which was not written", dir.join(html).display()));
         }
-        let (html, md) = (dir.join("index.html"), dir.join("summary.md"));
+        let (html, md) = (dir.join(html), dir.join(md));
         synth::export::write_atomic(&html, self.html().as_bytes())?;
         synth::export::write_atomic(&md, self.markdown().as_bytes())?;
         Ok((html, md))

@@ -1,9 +1,16 @@
 //! Progress for the steps a command takes: on a terminal (standard error) a bar, or a spinner where the step has no
-//! count; otherwise, in a CI log or through `| tee`, one line a step when it ends: what, how many, how long.
+//! count; otherwise, in a CI log or through `| tee`, one line a step of a second or more when it ends: what, how
+//! many, how long.
 
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::IsTerminal;
 use std::time::Instant;
+
+/// Every bar and spinner of the process, drawn together (two drawn apart overwrite each other's lines).
+pub fn bars() -> &'static indicatif::MultiProgress {
+    static BARS: std::sync::OnceLock<indicatif::MultiProgress> = std::sync::OnceLock::new();
+    BARS.get_or_init(indicatif::MultiProgress::new)
+}
 
 /// Whether progress is drawn (standard error is a terminal) rather than written a line a step.
 pub fn drawn() -> bool {
@@ -36,6 +43,7 @@ impl Step {
                 b
             }
         };
+        let bar = bars().add(bar);
         bar.set_message(what.to_string());
         Step { what: what.to_string(), start: Instant::now(), bar }
     }
@@ -44,10 +52,11 @@ impl Step {
         self.bar.set_position(k);
     }
 
-    /// The step's end: the bar cleared, or its line written (`how_many`: "65,536 px", "2 parts").
+    /// The step's end: the bar cleared, or, for a step that took a second or more, its line written (`how_many`:
+    /// "65,536 px", "2 parts"). A quick step says nothing: a command refused after it still says one line.
     pub fn done(self, how_many: &str) {
         self.bar.finish_and_clear();
-        if !drawn() {
+        if !drawn() && self.start.elapsed().as_secs_f64() >= 1.0 {
             eprintln!("{}: {how_many}, {:.1} s", self.what, self.start.elapsed().as_secs_f64());
         }
     }

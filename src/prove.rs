@@ -90,7 +90,10 @@ pub fn axis(names: &[String], all: bool, dir: &Path, o: &Options, md: Option<&Pa
             };
             text.push_str(&format!("| {name} | {} | {word} | {:.1} | {trace} |\n", r.name, r.seconds));
         }
-        text.push_str(&format!("| {name} | (all, {} clocks) | | {:.1} | |\n", p.depth, p.seconds));
+        // the depth only where a bounded rule ran to it
+        let ran = p.rules.iter().any(|r| !r.unbounded() && !matches!(r.status, Status::NotTried(_)));
+        let depth = if ran { format!("{} clocks", p.depth) } else { "no bounded rule run".into() };
+        text.push_str(&format!("| {name} | (all, {depth}) | | {:.1} | |\n", p.seconds));
     }
     println!("{text}");
     if let Some(f) = md {

@@ -237,7 +237,8 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
             },
         ],
     };
-    let (index, _) = page.write(out)?;
+    // named for the scene, as its pictures are: several scenes can share a folder
+    let (index, _) = page.write_as(out, &format!("{stem}.html"), &format!("{stem}.md"))?;
     println!("wall time {:.1} s", wall.elapsed().as_secs_f64());
     println!("the page: {}", index.display());
     let bad = mism_hdl + mism_vl.unwrap_or(0);

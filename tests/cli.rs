@@ -96,7 +96,8 @@ fn vectors_command_reproduces_the_committed_golden_file() {
     assert_eq!(out, golden);
 }
 
-/// The row of the demo's summary.md table whose first cells are `first` (a pipeline's label, then its unit), as cells.
+/// The row of a table in the demo's summary.md whose second cell is `unit` (a pipeline's label, then its unit), as
+/// cells.
 fn md_row<'a>(md: &'a str, unit: &str) -> Vec<&'a str> {
     md.lines()
         .find(|l| l.split(" | ").nth(1) == Some(unit))
@@ -596,9 +597,9 @@ fn render_runs_a_scene_file_on_every_path_and_the_rtl_equals_the_model() {
     }
     assert_eq!(d.join("directional_verilator.png").is_file(), w);
     // the page shows the pictures (the heat map with its scale) and links the window's waveform
-    let html = std::fs::read_to_string(d.join("index.html")).unwrap();
+    let html = std::fs::read_to_string(d.join("directional.html")).unwrap();
     assert!(html.contains("src=\"directional_error_heat.png\"") && html.contains("class=\"bar\""), "{html}");
-    assert!(html.contains("href=\"directional_window.gtkw\"") && d.join("summary.md").is_file());
+    assert!(html.contains("href=\"directional_window.gtkw\"") && d.join("directional.md").is_file());
     // the window's VCD holds its 30 pixels' clocks and the pipeline's signals
     let vcd = std::fs::read_to_string(d.join("directional_window.vcd")).unwrap();
     assert!(vcd.contains("$scope") && vcd.contains("valid_out"), "VCD");
