@@ -312,21 +312,9 @@ pub fn run(
         each("shade", format!("the shade alone ({})", r.pipe.shade_name()), &|k| {
             [to8(r.pipe.shade(&r.model.outs[k])); 3]
         })?;
-        let err: Vec<f64> = (0..r.prep.ideal.len())
-            .map(|k| render::colour_err(r.pipe.colour(&r.model.outs[k]), r.prep.ideal[k].rgb))
-            .collect();
-        let hmax = render::heat_scale(err.iter().copied());
         let file = format!("{name}_error_heat.png");
-        render::write_heat_png(&img.join(&file), size, |at| by[at].map(|k| err[k]), hmax, "LSB")?;
-        figs.push(Figure {
-            src: format!("img/{file}"),
-            caption: format!(
-                "the model's colour error against the ideal, worst channel; white from {hmax:.0} LSB (99% of the \
-                 pixels are below), the largest {:.2} LSB",
-                r.colour.max
-            ),
-            bar: Some((hmax, "LSB")),
-        });
+        let src = format!("img/{file}");
+        figs.push(crate::render::colour_error_heat(r.pipe, &r.prep, &r.model, r.colour.max, &img, &file, src)?);
         n_png += figs.len();
         let m = r.pipe.model().name;
         let title = if name == "torus" {
@@ -491,12 +479,7 @@ pub fn run(
     }
     let mut errors =
         Table::new("Error of the bit-exact models against the scene's ideal", &["what", "mean", "max", "max at"]);
-    let row = |t: &mut Table, name: String, s: &ErrorStats| {
-        t.rows.push(match s.count {
-            0 => vec![name, "none".into(), "none".into(), String::new()],
-            _ => vec![name, format!("{:.3}", s.mean()), format!("{:.3}", s.max), s.argmax.clone()],
-        })
-    };
+    let row = |t: &mut Table, name: String, s: &ErrorStats| t.rows.push(crate::render::error_row(name, s));
     for (i, r) in all.iter().enumerate() {
         let l = if i == 0 { "torus".to_string() } else { r.pipe.label().to_string() };
         row(&mut errors, format!("{l} shade, 8-bit LSB ({})", r.pipe.shade_name()), &r.shade);

@@ -26,6 +26,40 @@ pub fn parse_window(s: &str) -> Result<Window, String> {
     Ok(Window { x, y, w, h })
 }
 
+/// A row of an error table: what, mean, max, where the max is ("none" where nothing was measured).
+pub fn error_row(name: String, s: &vectors::stats::ErrorStats) -> Vec<String> {
+    match s.count {
+        0 => vec![name, "none".into(), "none".into(), String::new()],
+        _ => vec![name, format!("{:.3}", s.mean()), format!("{:.3}", s.max), s.argmax.clone()],
+    }
+}
+
+/// The heat map of the model's colour error against the ideal (the worst channel), written to `dir/file` with its
+/// bar ending at the 99th percentile, and its figure for the page (`src` the file as the page links it).
+pub fn colour_error_heat(
+    pipe: &dyn sim::pipeline::Pipeline,
+    prep: &sim::prepared::Prepared,
+    model: &render::Image,
+    largest: f64,
+    dir: &Path,
+    file: &str,
+    src: String,
+) -> Result<Figure, String> {
+    let n = prep.ideal.len();
+    let err: Vec<f64> = (0..n).map(|k| render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb)).collect();
+    let hmax = render::heat_scale(err.iter().copied());
+    let by = prep.by_place();
+    render::write_heat_png(&dir.join(file), prep.size, |at| by[at].map(|k| err[k]), hmax, "LSB")?;
+    Ok(Figure {
+        src,
+        caption: format!(
+            "the model's colour error against the ideal, worst channel; white from {hmax:.0} LSB (99% of the pixels \
+             are below), the largest {largest:.2} LSB"
+        ),
+        bar: Some((hmax, "LSB")),
+    })
+}
+
 pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> Result<(), String> {
     let wall = Instant::now();
     let spec = sim::scene_file::load(path)?;
@@ -107,15 +141,8 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     }
     png("shade", &|k| [to8(pipe.shade(&model.outs[k])); 3])?;
     let e = sim::pipeline::errors(pipe.as_ref(), scene, &prep, &model);
-    let err: Vec<f64> = (0..n).map(|k| render::colour_err(pipe.colour(&model.outs[k]), prep.ideal[k].rgb)).collect();
-    let hmax = render::heat_scale(err.iter().copied());
-    render::write_heat_png(
-        &out.join(format!("{stem}_error_heat.png")),
-        size,
-        |at| by[at].map(|k| err[k]),
-        hmax,
-        "LSB",
-    )?;
+    let file = format!("{stem}_error_heat.png");
+    let heat = colour_error_heat(pipe.as_ref(), &prep, &model, e.colour.max, out, &file, file.clone())?;
 
     println!();
     println!("{n} pixels of the surface in the {size} × {size} frame");
@@ -164,15 +191,7 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         ));
     }
     figs.push(fig("shade", format!("the shade alone ({})", pipe.shade_name())));
-    figs.push(Figure {
-        src: format!("{stem}_error_heat.png"),
-        caption: format!(
-            "the model's colour error against the ideal, worst channel; white from {hmax:.0} LSB (99% of the pixels \
-             are below), the largest {:.2} LSB",
-            e.colour.max
-        ),
-        bar: Some((hmax, "LSB")),
-    });
+    figs.push(heat);
     let mut paths = Table::new(
         &format!("{n} pixels of the surface in the {size} × {size} frame"),
         &["path", "pixels/s", "pixels that differ from the model"],
@@ -200,9 +219,7 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
         mism_hdl.to_string(),
     ]);
     let mut errors = Table::new("The model against the scene's ideal", &["what", "mean", "max", "max at"]);
-    let mut erow = |name: String, s: &vectors::stats::ErrorStats| {
-        errors.rows.push(vec![name, format!("{:.3}", s.mean()), format!("{:.3}", s.max), s.argmax.clone()])
-    };
+    let mut erow = |name: String, s: &vectors::stats::ErrorStats| errors.rows.push(error_row(name, s));
     erow(format!("shade, 8-bit LSB ({})", pipe.shade_name()), &e.shade);
     erow("blended colour, 8-bit LSB".into(), &e.colour);
     if let Some(s) = &e.normal {
