@@ -505,7 +505,69 @@ struct Eval<'s, 'a> {
 
 impl Walker for Eval<'_, '_> {
     fn step(&mut self, s: &S) {
-        self.stmt(s)
+        match s {
+            S::Assignment(target, value) => {
+                let E::Signal(t) = target else { return };
+                let n = full_name(self.path, t, &self.loops);
+                if let Some(v) = self.expr(value) {
+                    // the exact value rides with the write: a later assignment on the same path replaces both. A
+                    // bitwise step (a sign extension `x | 0x100`, fields put side by side) is no arithmetic to
+                    // overflow: its patterns are the value, read in the target's format
+                    let bitwise =
+                        matches!(value, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
+                    let exact = if bitwise { None } else { self.exact(value) };
+                    let w = (v, exact, Some(std::rc::Rc::new((value.clone(), self.loops.clone()))));
+                    self.cur.insert(n, w);
+                }
+            }
+            S::SliceAssignment { base, .. } => {
+                if let E::Signal(t) = base {
+                    let n = full_name(self.path, t, &self.loops);
+                    let bits = self.st.widths.get(&n).copied().unwrap_or(1);
+                    self.cur.insert(n, (V::full(bits), None, None));
+                }
+            }
+            S::If(c) => {
+                let t = self.expr(&c.test);
+                let (go_then, go_else) = match t.map(|v| v.unsigned()) {
+                    Some(u) if u == [(1, 1)] => (true, false),
+                    Some(u) if u == [(0, 0)] => (false, true),
+                    Some(_) => (true, true),
+                    None => (false, false), // the test is not yet defined: nothing flows this sweep
+                };
+                let split = self.split(&c.test);
+                let (rt, re) = match &split {
+                    Some((n, t, e)) => (t.map(|v| (n.clone(), v)), e.map(|v| (n.clone(), v))),
+                    None => (None, None),
+                };
+                // a side the refinement shows empty is not taken
+                let go_then = go_then && !matches!(&split, Some((_, None, _)));
+                let go_else = go_else && !matches!(&split, Some((_, _, None)));
+                let base = self.cur.clone();
+                let mut outs = vec![];
+                if go_then {
+                    outs.push(self.branch(rt, &|e| e.block(&c.then), &base));
+                }
+                if go_else {
+                    let other = |e: &mut Self| match &c.otherwise {
+                        VerilogBlockOrConditional::Block(b) => e.block(b),
+                        VerilogBlockOrConditional::Conditional(s) => e.step(s),
+                        VerilogBlockOrConditional::None => {}
+                    };
+                    outs.push(self.branch(re, &other, &base));
+                }
+                self.merge(&base, outs);
+            }
+            S::Match(mt) => {
+                let base = self.cur.clone();
+                let outs: Vec<HashMap<String, Write>> =
+                    mt.cases.iter().map(|c| self.branch(None, &|e| e.block(&c.block), &base)).collect();
+                self.merge(&base, outs);
+            }
+            S::Loop(l) => self.unroll(l),
+            S::Macro(b) => self.block(b),
+            S::Comment(_) | S::Link(_) => {}
+        }
     }
     fn loops(&mut self) -> &mut Vec<(String, i128)> {
         &mut self.loops
@@ -770,72 +832,6 @@ impl Eval<'_, '_> {
         then(self);
         self.refine = saved;
         std::mem::replace(&mut self.cur, outer)
-    }
-
-    fn stmt(&mut self, s: &S) {
-        match s {
-            S::Assignment(target, value) => {
-                let E::Signal(t) = target else { return };
-                let n = full_name(self.path, t, &self.loops);
-                if let Some(v) = self.expr(value) {
-                    // the exact value rides with the write: a later assignment on the same path replaces both. A
-                    // bitwise step (a sign extension `x | 0x100`, fields put side by side) is no arithmetic to
-                    // overflow: its patterns are the value, read in the target's format
-                    let bitwise =
-                        matches!(value, E::Binary(_, VerilogOp::BitOr | VerilogOp::BitAnd | VerilogOp::BitXor, _));
-                    let exact = if bitwise { None } else { self.exact(value) };
-                    let w = (v, exact, Some(std::rc::Rc::new((value.clone(), self.loops.clone()))));
-                    self.cur.insert(n, w);
-                }
-            }
-            S::SliceAssignment { base, .. } => {
-                if let E::Signal(t) = base {
-                    let n = full_name(self.path, t, &self.loops);
-                    let bits = self.st.widths.get(&n).copied().unwrap_or(1);
-                    self.cur.insert(n, (V::full(bits), None, None));
-                }
-            }
-            S::If(c) => {
-                let t = self.expr(&c.test);
-                let (go_then, go_else) = match t.map(|v| v.unsigned()) {
-                    Some(u) if u == [(1, 1)] => (true, false),
-                    Some(u) if u == [(0, 0)] => (false, true),
-                    Some(_) => (true, true),
-                    None => (false, false), // the test is not yet defined: nothing flows this sweep
-                };
-                let split = self.split(&c.test);
-                let (rt, re) = match &split {
-                    Some((n, t, e)) => (t.map(|v| (n.clone(), v)), e.map(|v| (n.clone(), v))),
-                    None => (None, None),
-                };
-                // a side the refinement shows empty is not taken
-                let go_then = go_then && !matches!(&split, Some((_, None, _)));
-                let go_else = go_else && !matches!(&split, Some((_, _, None)));
-                let base = self.cur.clone();
-                let mut outs = vec![];
-                if go_then {
-                    outs.push(self.branch(rt, &|e| e.block(&c.then), &base));
-                }
-                if go_else {
-                    let other = |e: &mut Self| match &c.otherwise {
-                        VerilogBlockOrConditional::Block(b) => e.block(b),
-                        VerilogBlockOrConditional::Conditional(s) => e.stmt(s),
-                        VerilogBlockOrConditional::None => {}
-                    };
-                    outs.push(self.branch(re, &other, &base));
-                }
-                self.merge(&base, outs);
-            }
-            S::Match(mt) => {
-                let base = self.cur.clone();
-                let outs: Vec<HashMap<String, Write>> =
-                    mt.cases.iter().map(|c| self.branch(None, &|e| e.block(&c.block), &base)).collect();
-                self.merge(&base, outs);
-            }
-            S::Loop(l) => self.unroll(l),
-            S::Macro(b) => self.block(b),
-            S::Comment(_) | S::Link(_) => {}
-        }
     }
 
     /// The writes after the branches: a signal written on every branch takes their join; one written on some

@@ -243,7 +243,59 @@ struct Walk<'a> {
 
 impl Walker for Walk<'_> {
     fn step(&mut self, s: &S) {
-        self.stmt(s)
+        match s {
+            S::Assignment(E::Signal(t), value) => self.assign(t, value),
+            S::Assignment(..) => {}
+            S::SliceAssignment { base: E::Signal(t), .. } => {
+                let id = fix(t, &self.loops);
+                self.write(&id);
+                self.line(format!("bw_{id} = 0;"));
+            }
+            S::SliceAssignment { .. } => {}
+            S::If(c) => {
+                let late = self.late(&c.test);
+                self.unsafe_depth += late as usize;
+                self.line(format!("if ({}) begin", orig(&c.test, &self.loops)));
+                self.depth += 1;
+                self.block(&c.then);
+                self.depth -= 1;
+                match &c.otherwise {
+                    VerilogBlockOrConditional::Block(b) => {
+                        self.line("end else begin".into());
+                        self.depth += 1;
+                        self.block(b);
+                        self.depth -= 1;
+                        self.line("end".into());
+                    }
+                    VerilogBlockOrConditional::Conditional(s) => {
+                        self.line("end else begin".into());
+                        self.depth += 1;
+                        self.step(s);
+                        self.depth -= 1;
+                        self.line("end".into());
+                    }
+                    VerilogBlockOrConditional::None => self.line("end".into()),
+                }
+                self.unsafe_depth -= late as usize;
+            }
+            S::Match(mt) => {
+                let late = self.late(&mt.test);
+                self.unsafe_depth += late as usize;
+                self.line(format!("case ({})", orig(&mt.test, &self.loops)));
+                for c in &mt.cases {
+                    self.line(format!("{}: begin", fix(&c.condition, &self.loops)));
+                    self.depth += 1;
+                    self.block(&c.block);
+                    self.depth -= 1;
+                    self.line("end".into());
+                }
+                self.line("endcase".into());
+                self.unsafe_depth -= late as usize;
+            }
+            S::Loop(l) => self.unroll(l),
+            S::Macro(b) => self.block(b),
+            S::Comment(_) | S::Link(_) => {}
+        }
     }
     fn loops(&mut self) -> &mut Vec<(String, i128)> {
         &mut self.loops
@@ -495,62 +547,6 @@ impl Walk<'_> {
         match self.exact(value, w) {
             Some(t) => Ok(Some((t, w, lo, hi))),
             None => Err("a shift or slice by a variable amount".into()),
-        }
-    }
-
-    fn stmt(&mut self, s: &S) {
-        match s {
-            S::Assignment(E::Signal(t), value) => self.assign(t, value),
-            S::Assignment(..) => {}
-            S::SliceAssignment { base: E::Signal(t), .. } => {
-                let id = fix(t, &self.loops);
-                self.write(&id);
-                self.line(format!("bw_{id} = 0;"));
-            }
-            S::SliceAssignment { .. } => {}
-            S::If(c) => {
-                let late = self.late(&c.test);
-                self.unsafe_depth += late as usize;
-                self.line(format!("if ({}) begin", orig(&c.test, &self.loops)));
-                self.depth += 1;
-                self.block(&c.then);
-                self.depth -= 1;
-                match &c.otherwise {
-                    VerilogBlockOrConditional::Block(b) => {
-                        self.line("end else begin".into());
-                        self.depth += 1;
-                        self.block(b);
-                        self.depth -= 1;
-                        self.line("end".into());
-                    }
-                    VerilogBlockOrConditional::Conditional(s) => {
-                        self.line("end else begin".into());
-                        self.depth += 1;
-                        self.stmt(s);
-                        self.depth -= 1;
-                        self.line("end".into());
-                    }
-                    VerilogBlockOrConditional::None => self.line("end".into()),
-                }
-                self.unsafe_depth -= late as usize;
-            }
-            S::Match(mt) => {
-                let late = self.late(&mt.test);
-                self.unsafe_depth += late as usize;
-                self.line(format!("case ({})", orig(&mt.test, &self.loops)));
-                for c in &mt.cases {
-                    self.line(format!("{}: begin", fix(&c.condition, &self.loops)));
-                    self.depth += 1;
-                    self.block(&c.block);
-                    self.depth -= 1;
-                    self.line("end".into());
-                }
-                self.line("endcase".into());
-                self.unsafe_depth -= late as usize;
-            }
-            S::Loop(l) => self.unroll(l),
-            S::Macro(b) => self.block(b),
-            S::Comment(_) | S::Link(_) => {}
         }
     }
 }

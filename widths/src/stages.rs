@@ -83,7 +83,25 @@ struct Walk<'a> {
 
 impl Walker for Walk<'_> {
     fn step(&mut self, s: &S) {
-        self.stmt(s)
+        match s {
+            S::Assignment(t, v) => self.write(t, &[v]),
+            S::SliceAssignment { base, offset, replacement, .. } => self.write(base, &[offset, replacement, base]),
+            S::If(c) => {
+                let other = |w: &mut Self| match &c.otherwise {
+                    VerilogBlockOrConditional::Block(b) => w.block(b),
+                    VerilogBlockOrConditional::Conditional(s) => w.step(s),
+                    VerilogBlockOrConditional::None => {}
+                };
+                self.sides(&c.test, vec![&|w: &mut Self| w.block(&c.then), &other]);
+            }
+            S::Match(m) => {
+                let cases: Vec<_> = m.cases.iter().map(|c| move |w: &mut Self| w.block(&c.block)).collect();
+                self.sides(&m.test, cases.iter().map(|f| f as &dyn Fn(&mut Self)).collect());
+            }
+            S::Loop(l) => self.unroll(l),
+            S::Macro(b) => self.block(b),
+            S::Comment(_) | S::Link(_) => {}
+        }
     }
     fn loops(&mut self) -> &mut Vec<(String, i128)> {
         &mut self.loops
@@ -125,27 +143,6 @@ impl Walk<'_> {
         }
         self.cur = merged;
         self.tests.truncate(mark);
-    }
-    fn stmt(&mut self, s: &S) {
-        match s {
-            S::Assignment(t, v) => self.write(t, &[v]),
-            S::SliceAssignment { base, offset, replacement, .. } => self.write(base, &[offset, replacement, base]),
-            S::If(c) => {
-                let other = |w: &mut Self| match &c.otherwise {
-                    VerilogBlockOrConditional::Block(b) => w.block(b),
-                    VerilogBlockOrConditional::Conditional(s) => w.stmt(s),
-                    VerilogBlockOrConditional::None => {}
-                };
-                self.sides(&c.test, vec![&|w: &mut Self| w.block(&c.then), &other]);
-            }
-            S::Match(m) => {
-                let cases: Vec<_> = m.cases.iter().map(|c| move |w: &mut Self| w.block(&c.block)).collect();
-                self.sides(&m.test, cases.iter().map(|f| f as &dyn Fn(&mut Self)).collect());
-            }
-            S::Loop(l) => self.unroll(l),
-            S::Macro(b) => self.block(b),
-            S::Comment(_) | S::Link(_) => {}
-        }
     }
 }
 
