@@ -47,7 +47,7 @@ struct Run<'a> {
 fn peer_table(scene: &Scene) -> Table {
     let ways = crate::progress::step(
         "the model beside float software",
-        |w: &Vec<_>| format!("{} ways", w.len()),
+        |w: &Vec<_>| Some(format!("{} ways", w.len())),
         || sim::peer::compare(scene, SPLIT),
     );
     let mut t = Table::new(

@@ -131,7 +131,7 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize, bias: Option<f64>) -
     let scene = &scene;
     let ideal = crate::progress::step(
         &format!("the supersampled ideal, {samples} × {samples} a pixel"),
-        |i: &minify::Ideal| format!("{} px", i.at.len()),
+        |i: &minify::Ideal| Some(format!("{} px", i.at.len())),
         || minify::ideal_shaded(scene, samples, minify::Shading::of(&spec)),
     );
     let named = |e: String| match path {
@@ -140,13 +140,13 @@ pub fn run(path: Option<&Path>, out: &Path, samples: usize, bias: Option<f64>) -
     };
     let lines = crate::progress::step(
         "each filter of the texture unit",
-        |l: &Result<Vec<_>, String>| format!("{} filters", l.as_ref().map_or(0, |l| l.len())),
+        |l: &Result<Vec<_>, String>| l.as_ref().ok().map(|l| format!("{} filters", l.len())),
         || minify::measure(scene, &ideal),
     )
     .map_err(named)?;
     let swept = crate::progress::step(
         "the MIP filters over LOD biases",
-        |l: &Result<Vec<_>, String>| format!("{} rows", l.as_ref().map_or(0, |l| l.len())),
+        |l: &Result<Vec<_>, String>| l.as_ref().ok().map(|l| format!("{} rows", l.len())),
         || minify::sweep(scene, &ideal),
     )
     .map_err(named)?;

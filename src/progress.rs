@@ -52,6 +52,11 @@ impl Step {
         self.bar.set_position(k);
     }
 
+    /// A step that failed: the bar cleared and no line (the error is the command's one line).
+    pub fn failed(self) {
+        self.bar.finish_and_clear();
+    }
+
     /// The step's end: the bar cleared, or, for a step that took a second or more, its line written (`how_many`:
     /// "65,536 px", "2 parts"). A quick step says nothing: a command refused after it still says one line.
     pub fn done(self, how_many: &str) {
@@ -62,10 +67,13 @@ impl Step {
     }
 }
 
-/// `f` run as one step: its count from what it returns.
-pub fn step<T>(what: &str, how_many: impl Fn(&T) -> String, f: impl FnOnce() -> T) -> T {
+/// `f` run as one step: its count from what it returns, or, where `how_many` gives none (an error), no line.
+pub fn step<T>(what: &str, how_many: impl Fn(&T) -> Option<String>, f: impl FnOnce() -> T) -> T {
     let s = Step::new(what, None);
     let t = f();
-    s.done(&how_many(&t));
+    match how_many(&t) {
+        Some(n) => s.done(&n),
+        None => s.failed(),
+    }
     t
 }

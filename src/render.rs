@@ -86,9 +86,6 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     let t = Instant::now();
     let prep = pipe.prepare(scene);
     let ideal_s = t.elapsed().as_secs_f64();
-    let threads = render::cores();
-    let model = render::fastest(|| render::model_on(m, &prep, threads));
-    step.done(&format!("{} px, {} runs", prep.ideal.len(), render::RUNS));
     let n = prep.ideal.len();
     // the window: the one asked for, or 8 × 8 round the covered pixel nearest the frame's centre
     let win = window.unwrap_or_else(|| {
@@ -107,6 +104,9 @@ pub fn run(path: &Path, out: &Path, window: Option<Window>, verilator: bool) -> 
     if wprep.ideal.is_empty() {
         return Err(format!("--window {},{},{},{}: the surface covers no pixel of it", win.x, win.y, win.w, win.h));
     }
+    let threads = render::cores();
+    let model = render::fastest(|| render::model_on(m, &prep, threads));
+    step.done(&format!("{n} px, {} runs", render::RUNS));
     // Verilator, the whole frame
     let vl = if verilator && no_vl.is_empty() {
         let step = crate::progress::Step::new(&format!("{}: Verilator, built and run", m.name), None);

@@ -168,9 +168,7 @@ pub fn synth(
         None => {
             let (p, _, why) = crate::progress::step(
                 &format!("{name}: yosys on each part, smallest first, to the first it fits"),
-                |r: &Result<(synth::fpga::Part, _, _), String>| {
-                    r.as_ref().map_or("none".into(), |r| r.0.name.to_string())
-                },
+                |r: &Result<(synth::fpga::Part, _, _), String>| r.as_ref().ok().map(|r| r.0.name.to_string()),
                 || rtl.choose(&d),
             )?;
             (p, why)
@@ -178,7 +176,7 @@ pub fn synth(
     };
     let r = crate::progress::step(
         &format!("{name} on the {}: yosys, then nextpnr at {seeds} seeds", part.name),
-        |_: &Result<_, String>| format!("{seeds} placements"),
+        |r: &Result<_, String>| r.is_ok().then(|| format!("{seeds} placements")),
         || rtl.synth_and_place(&d, part, freq.unwrap_or(part.default_freq()), &choice, synth::fpga::Seeds::all(seeds)),
     )?;
     crate::synth_figures::synth_row(&r);
