@@ -9,13 +9,19 @@ fn stat_line(unit: &str, metric: &str, s: &ErrorStats) {
 
 pub fn accuracy(directions: usize, samples: usize) {
     println!("{:<20} {:<52} {:>9} {:>9}   max at", "unit", "error (exact against ideal)", "mean", "max");
-    for r in sim::accuracy::units(samples, 1) {
+    let count = |rows: &Vec<sim::accuracy::Row>| Some(format!("{} rows", rows.len()));
+    let units =
+        crate::progress::step("every unit's model against its ideal", count, || sim::accuracy::units(samples, 1));
+    for r in units {
         stat_line(&r.unit, &r.metric, &r.stats);
     }
     let seed = sim::accuracy::ENCODER_SEED;
-    for r in
-        sim::accuracy::encoders(directions, seed).into_iter().chain(sim::accuracy::polar_encoders(directions, seed))
-    {
+    let encoders = crate::progress::step(&format!("the encoders over {directions} directions"), count, || {
+        let mut rows = sim::accuracy::encoders(directions, seed);
+        rows.extend(sim::accuracy::polar_encoders(directions, seed));
+        rows
+    });
+    for r in encoders {
         stat_line(&r.unit, &r.metric, &r.stats);
     }
     println!(
@@ -30,7 +36,9 @@ pub fn accuracy(directions: usize, samples: usize) {
         "filter", "surface", "k", "float, true h", "float, codes", "exact, codes", "exact vs float"
     );
     use vectors::height::{filters, surfaces};
-    for f in filters::ALL {
+    let step = crate::progress::Step::new("height maps: each filter on each surface", Some(filters::ALL.len() as u64));
+    for (k, f) in filters::ALL.into_iter().enumerate() {
+        step.tick(k as u64);
         for surface in surfaces::all() {
             let r = surfaces::measure_filter(f, &surface, 4);
             let c = |s: &ErrorStats| format!("{:.3} / {:.3}", s.mean(), s.max);
@@ -46,6 +54,7 @@ pub fn accuracy(directions: usize, samples: usize) {
             );
         }
     }
+    step.done(&format!("{} filters", filters::ALL.len()));
     println!(
         "(mean / max; k = 16/m where the codes hold the heights ×m; trilinear reads MIP level 1 as stored, rounded)"
     );
@@ -87,15 +96,26 @@ pub fn accuracy(directions: usize, samples: usize) {
 pub fn lut_sizes(cost: bool, dir: &std::path::Path) -> Result<(), String> {
     let table = |name: &str, rows: Vec<vectors::sincos::SizeRow>| -> Result<(), String> {
         lut_header();
-        for r in rows {
+        let step =
+            cost.then(|| crate::progress::Step::new(&format!("yosys: {name} at each size"), Some(rows.len() as u64)));
+        let n = rows.len();
+        for (k, r) in rows.into_iter().enumerate() {
             let tb = r.entries.trailing_zeros();
-            let c = if !cost {
-                None
-            } else {
-                let b = crate::units::block(name, (tb, r.width))?;
-                Some(b.synth_unit(&dir.join(format!("{name}_t{}w{}", r.entries, r.width)), synth::fpga::Family::Ice40)?)
+            let c = match &step {
+                None => None,
+                Some(step) => {
+                    step.tick(k as u64);
+                    let b = crate::units::block(name, (tb, r.width))?;
+                    Some(b.synth_unit(
+                        &dir.join(format!("{name}_t{}w{}", r.entries, r.width)),
+                        synth::fpga::Family::Ice40,
+                    )?)
+                }
             };
             lut_row(&r, c.as_ref());
+        }
+        if let Some(step) = step {
+            step.done(&format!("{n} sizes"));
         }
         Ok(())
     };

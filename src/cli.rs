@@ -7,7 +7,9 @@ use std::path::PathBuf;
 #[command(
     name = "bumprtl",
     version,
-    about = "Bump-mapping shading hardware: model, rtl, vectors, waveforms, Verilog, synthesis"
+    about = "Bump-mapping shading hardware: model, rtl, vectors, waveforms, Verilog, synthesis",
+    after_help = "Progress goes to standard error: a bar on a terminal; otherwise one line for each step of a second or \
+                  more (what, how many, how long), or for every step with BUMPRTL_PROGRESS=every."
 )]
 struct Cli {
     #[command(subcommand)]

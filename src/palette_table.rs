@@ -94,23 +94,29 @@ pub fn command(no_synth: bool, dir: &std::path::Path, out: &std::path::Path) -> 
         let (ecp5, up5k) = (synth::fpga::ECP5_25F, synth::fpga::UP5K);
         let d = dir.join("table_builder").join(ecp5.name);
         let five = synth::fpga::Seeds::FIVE;
-        let one = synth::fpga::synth_and_place(
-            &synth::Unit::of::<rtl::table_builder::TableBuilder>(),
-            &d,
-            ecp5,
-            ecp5.default_freq(),
-            "",
-            five,
-        )?;
+        let placed_line = |r: &Result<synth::fpga::SynthReport, String>| r.as_ref().ok().map(placed);
+        let one = crate::progress::step(&format!("table_builder on the {}", ecp5.name), placed_line, || {
+            synth::fpga::synth_and_place(
+                &synth::Unit::of::<rtl::table_builder::TableBuilder>(),
+                &d,
+                ecp5,
+                ecp5.default_freq(),
+                "",
+                five,
+            )
+        })?;
         let d = dir.join("palette_pipeline_shared").join(up5k.name);
-        let shared = synth::fpga::synth_and_place(
-            &synth::Unit::of::<rtl::palette_pipeline_shared::PalettePipelineShared>(),
-            &d,
-            up5k,
-            up5k.default_freq(),
-            "",
-            five,
-        )?;
+        let shared =
+            crate::progress::step(&format!("palette_pipeline_shared on the {}", up5k.name), placed_line, || {
+                synth::fpga::synth_and_place(
+                    &synth::Unit::of::<rtl::palette_pipeline_shared::PalettePipelineShared>(),
+                    &d,
+                    up5k,
+                    up5k.default_freq(),
+                    "",
+                    five,
+                )
+            })?;
         Fmax {
             builder_mhz: one.fmax_mhz,
             shared_mhz: shared.fmax_mhz,
@@ -122,7 +128,11 @@ pub fn command(no_synth: bool, dir: &std::path::Path, out: &std::path::Path) -> 
 }
 
 pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
-    let normals = normal_map();
+    let normals = crate::progress::step(
+        "the 512 x 512 normal map (plane fit)",
+        |n: &Vec<[f64; 3]>| Some(format!("{} normals", n.len())),
+        normal_map,
+    );
     let view = [0.0, 1.0, 0.0];
     let light = unit([0.5, 0.8, 0.3]);
     let half = unit([0, 1, 2].map(|c| light[c] + view[c]));
@@ -143,13 +153,16 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
 
     // the quantizer at every size, timed
     let mut sweep = vec![];
-    for &s_n in &SWEEP {
+    let step = crate::progress::Step::new("the quantizer, 16 … 16,384 normals", Some(SWEEP.len() as u64));
+    for (k, &s_n) in SWEEP.iter().enumerate() {
+        step.tick(k as u64);
         let t = Instant::now();
         let q = quantize::quantize(&normals, s_n);
         let secs = t.elapsed().as_secs_f64();
         let angle = quantize::angular_error(&normals, &q.index, &q.palette);
         sweep.push((s_n, q, secs, angle));
     }
+    step.done(&format!("{} palette sizes", SWEEP.len()));
 
     println!(
         "Table 1 of Tarini et al. (2000) on this machine: a 512 x 512 normal map (the demo's heights, plane fit q = 8)"
@@ -184,7 +197,9 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
         "angle mean/max °",
         "image LSB mean/max"
     );
+    let step = crate::progress::Step::new("the per-frame tables, timed", Some(SIZES.len() as u64));
     for (k, &s_n) in SIZES.iter().enumerate() {
+        step.tick(k as u64);
         let (_, q, _, angle) = sweep.iter().find(|s| s.0 == s_n).expect("the sweep holds Table 1's sizes");
         let t = Instant::now();
         // the normaliser's outputs as a palette keeps them (Sq1.10 fits 16 bits), once per map
@@ -238,6 +253,7 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
         }
         println!("{:<20} {:>6} per map: the palette normalised in {:.3} ms", "", s_n, per_map * 1e3);
     }
+    step.done(&format!("{} palette sizes × {} lighting models", SIZES.len(), models.len()));
     println!("(image: every 7th texel, the largest channel difference; Lambert compares α alone)");
 
     println!(
@@ -264,11 +280,14 @@ pub fn run(fmax: Fmax, out: &std::path::Path) -> Result<(), String> {
             image::RgbImage::from_fn(MAP as u32, MAP as u32, |x, y| image::Rgb(rgb(y as usize * MAP + x as usize)));
         sim::render::save_png(&out.join(&name), &img).map(|_| name)
     };
+    let step = crate::progress::Step::new("Figure 3's pictures", Some(FIGURE_3 as u64 + 1));
     let mut written = vec![picture("figure3_unquantized.png".into(), &|k| shade(own(1, normals[k])))?];
     for (s_n, q, ..) in &sweep[..FIGURE_3] {
+        step.tick(written.len() as u64);
         let table: Vec<[i64; 4]> = q.palette.iter().map(|&n| own(1, n)).collect();
         written.push(picture(format!("figure3_{s_n}.png"), &|k| shade(table[q.index[k] as usize]))?);
     }
+    step.done(&format!("{} pictures", written.len()));
     println!("\nFigure 3 (Lambert + specular, equation (1)) in {}: {}", out.display(), written.join(", "));
     Ok(())
 }

@@ -134,8 +134,14 @@ pub fn run(
         String::from("| unit | claims | proven | refuted | not tried | runs | s |\n|---|---|---|---|---|---|---|\n");
     for u in units {
         let name = u.rtl.name();
-        eprintln!("prove {name} …");
-        let p = match sim::prove::prove(u, &dir.join(name), o) {
+        let p = crate::progress::step(
+            &format!("prove {name}"),
+            |p: &Result<Proved, String>| {
+                p.as_ref().ok().map(|p| format!("{} claims, {} solver runs", p.outcomes.len(), p.runs))
+            },
+            || sim::prove::prove(u, &dir.join(name), o),
+        );
+        let p = match p {
             Ok(p) => p,
             Err(e) if several => {
                 // the other units still run; the command fails at the end
@@ -168,7 +174,10 @@ pub fn run(
     }
     if equivalences {
         let limit = o.limit.unwrap_or(std::time::Duration::from_secs(600));
-        let found = sim::prove::run_claimed(dir, limit, &|s| eprintln!("{s}"))?;
+        let steps = crate::progress::Chain::default();
+        let found = sim::prove::run_claimed(dir, limit, &|s| steps.next(s, "decided"));
+        steps.end("decided", &found);
+        let found = found?;
         let mut t = String::from("| miter | solver | depth | runs | s | why / trace |\n|---|---|---|---|---|---|\n");
         for e in &found {
             let why = match &e.status {

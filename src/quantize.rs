@@ -49,10 +49,22 @@ pub fn run(a: &Args) -> Result<(), String> {
     };
     let normals_s = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let q = quantize::quantize(&normals, a.size);
+    let q = crate::progress::step(
+        &format!("{name}: {} normals quantized to {}", normals.len(), a.size),
+        |q: &quantize::Quantized| Some(format!("{} palette entries", q.palette.len())),
+        || quantize::quantize(&normals, a.size),
+    );
     let quant_s = t.elapsed().as_secs_f64();
     let t = Instant::now();
-    let index = if a.dither { quantize::dither(&normals, w, h, &q.palette) } else { q.index.clone() };
+    let index = if a.dither {
+        crate::progress::step(
+            &format!("{name}: dithered"),
+            |i: &Vec<u32>| Some(format!("{} texels", i.len())),
+            || quantize::dither(&normals, w, h, &q.palette),
+        )
+    } else {
+        q.index.clone()
+    };
     let dither_s = t.elapsed().as_secs_f64();
     let err = quantize::angular_error(&normals, &index, &q.palette);
     let t = Instant::now();

@@ -63,7 +63,11 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     if waivers {
         let files = [(format!("{name}.v"), name.clone()), (format!("{module}.v"), module.clone())];
         let files: Vec<(&str, &str)> = files.iter().map(|(f, m)| (f.as_str(), m.as_str())).collect();
-        let (p, design) = synth::lint::write_waivers(&out, &name, &files, &unit.waivers())?;
+        let (p, design) = crate::progress::step(
+            &format!("{name}: Verilator's warnings read, the waivers checked"),
+            |r: &Result<_, String>| r.is_ok().then(|| String::from("2 modules")),
+            || synth::lint::write_waivers(&out, &name, &files, &unit.waivers()),
+        )?;
         println!("{}", p.display());
         for d in design {
             println!("  not waived (the design's): {d}");
@@ -73,7 +77,11 @@ pub fn verilog(name: String, out: PathBuf) -> Result<(), String> {
     }
     // which part the unit fits is synthesised in a scratch folder beside the output, removed after
     let scratch = out.join(format!(".{name}-fit"));
-    let packaged = unit.axis.package(&out, waivers, &scratch);
+    let packaged = crate::progress::step(
+        &format!("{name}: the package, yosys on each part for the core's synth target"),
+        |r: &Result<_, String>| r.is_ok().then(|| String::from("a FuseSoC core and a cocotb test")),
+        || unit.axis.package(&out, waivers, &scratch),
+    );
     let _ = std::fs::remove_dir_all(&scratch);
     let (written, no_synth) = packaged?;
     for p in written {
@@ -100,7 +108,11 @@ pub fn wave(name: String, out: PathBuf, count: usize, fst: bool) -> Result<(), S
         let w = Box::new(std::io::BufWriter::new(std::io::stdout()));
         unit.rtl.trace(u, &inputs, w).map_err(|e| format!("cannot write the VCD to standard output: {e}"))?;
     } else {
-        unit.rtl.write_vcd(u, &inputs, &out)?;
+        crate::progress::step(
+            &format!("{name}: rust-hdl, every signal traced"),
+            |r: &Result<_, String>| r.is_ok().then(|| format!("{} vectors", inputs.len())),
+            || unit.rtl.write_vcd(u, &inputs, &out),
+        )?;
         println!("{} ({} vectors)", out.display(), inputs.len());
         if fst {
             let f = out.with_extension("fst");

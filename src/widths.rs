@@ -3,8 +3,8 @@
 //! 2^20, else its hard cases and `--count` random vectors): the bits that range needs, the spare bits at the top,
 //! and a flag where two or more of them go unused. See the `widths` crate.
 
+use crate::progress::Step;
 use ::widths::{bits_needed, bounds, mismatches, wraps::Waived};
-use indicatif::{ProgressBar, ProgressStyle};
 
 /// One signal's row.
 pub struct Row {
@@ -87,14 +87,14 @@ pub fn measure(unit: &sim::units::Unit, count: usize, seed: u64) -> Result<Measu
     } else {
         format!("{} hard cases and {count} random vectors (seed {seed})", inputs.len() - count)
     };
-    let bar = ProgressBar::new(inputs.len() as u64);
-    bar.set_style(
-        ProgressStyle::with_template("{msg:<24} [{bar:40}] {pos}/{len} vectors {eta}").unwrap().progress_chars("=> "),
+    let step = Step::new(&format!("rust-hdl: {}, every signal probed", m.name), Some(inputs.len() as u64));
+    let ranges = rtl.seen(m, &inputs, &|k| step.tick(k as u64));
+    step.done(&format!("{} vectors, {} clocks", inputs.len(), ranges.clocks));
+    let a = crate::progress::step(
+        &format!("{}: the formats read and the ranges proven", m.name),
+        |_| Some(String::from("the block's statements")),
+        || rtl.analyse(m),
     );
-    bar.set_message(format!("rust-hdl: {}", m.name));
-    let ranges = rtl.seen(m, &inputs, &|k| bar.set_position(k as u64));
-    bar.finish_and_clear();
-    let a = rtl.analyse(m);
     let (f, proven, sites) = (&a.formats, &a.proof.values, a.sites());
     let mut rows = vec![];
     for s in &ranges.signals {
@@ -178,9 +178,15 @@ pub fn run(
     let secs = t.elapsed().as_secs_f64();
     let proved = match solver {
         Some(o) => {
-            eprintln!("the solver on {} …", m.name);
             let dir = std::path::Path::new("target/prove").join(unit.rtl.name());
-            Some(sim::prove::prove(unit, &dir, o)?)
+            let p = crate::progress::step(
+                &format!("the solver on {}", m.name),
+                |p: &Result<sim::prove::Proved, String>| {
+                    p.as_ref().ok().map(|p| format!("{} claims", p.outcomes.len()))
+                },
+                || sim::prove::prove(unit, &dir, o),
+            );
+            Some(p?)
         }
         None => None,
     };
@@ -451,7 +457,11 @@ pub fn budget(unit: &str, budget: f64, part: synth::fpga::Part, dir: &std::path:
         ));
     }
     let t = std::time::Instant::now();
-    let points = sweep(unit, part.family, dir, &|name| eprintln!("yosys: {name} for {}", part.title))?;
+    let steps = crate::progress::Chain::default();
+    let points =
+        sweep(unit, part.family, dir, &|name| steps.next(&format!("yosys: {name} for {}", part.title), "costed"));
+    steps.end("costed", &points);
+    let points = points?;
     let (front, cheapest) = pareto(&points, budget);
     println!(
         "width sweep of `{unit}`: error against the ideal in {what} (mean / max), cost from yosys for {} ({:.0} s)",

@@ -1018,3 +1018,44 @@ fn the_demo_page_loads_in_a_browser_with_every_picture_and_every_link_a_file() {
     assert_eq!((img.width(), img.height()), (1300, 2400));
     let _ = std::fs::remove_dir_all(&d);
 }
+
+/// Off a terminal each step says one line when it ends (what, how many, how long): with BUMPRTL_PROGRESS=every for
+/// every step, however short, so the test needs no step to be slow; a step that fails says nothing, and the error
+/// stays the command's one line.
+#[test]
+fn off_a_terminal_each_step_is_a_line_and_a_failed_step_none() {
+    let run = |args: &[&str]| {
+        let o =
+            Command::new(env!("CARGO_BIN_EXE_bumprtl")).args(args).env("BUMPRTL_PROGRESS", "every").output().unwrap();
+        (o.status.code().unwrap_or(-1), String::from_utf8_lossy(&o.stderr).to_string())
+    };
+    let line = |l: &str| {
+        let (what, rest) = l.rsplit_once(": ").unwrap_or(("", ""));
+        let (how_many, secs) = rest.rsplit_once(", ").unwrap_or(("", ""));
+        !what.is_empty() && !how_many.is_empty() && secs.strip_suffix(" s").is_some_and(|s| s.parse::<f64>().is_ok())
+    };
+    let (code, err) = run(&["accuracy", "--directions", "1000", "--samples", "1000"]);
+    assert_eq!(code, 0, "{err}");
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 3, "{err}");
+    assert!(lines.iter().all(|l| line(l)), "{err}");
+    assert!(
+        lines[0].starts_with("every unit's model against its ideal: ") && lines[2].contains(": 8 filters, "),
+        "{err}"
+    );
+
+    let dir = std::env::temp_dir().join(format!("bumprtl-progress-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let vcd = dir.join("gloss.vcd");
+    let (code, err) = run(&["wave", "gloss", "--count", "10", "--out", vcd.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("gloss: rust-hdl, every signal traced: ") && line(err.trim_end()), "{err}");
+
+    // the trace's write fails inside the step: no step line, one error line
+    let (code, err) = run(&["wave", "gloss", "--out", dir.join("no/such/folder.vcd").to_str().unwrap()]);
+    assert_ne!(code, 0);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.starts_with("bumprtl: cannot write "), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
