@@ -1044,8 +1044,7 @@ fn off_a_terminal_each_step_is_a_line_and_a_failed_step_none() {
         "{err}"
     );
 
-    let dir = std::env::temp_dir().join(format!("bumprtl-progress-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = scratch("progress");
     let vcd = dir.join("gloss.vcd");
     let (code, err) = run(&["wave", "gloss", "--count", "10", "--out", vcd.to_str().unwrap()]);
     assert_eq!(code, 0, "{err}");
