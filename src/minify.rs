@@ -1,5 +1,6 @@
 //! `bumprtl minify [SCENE.toml] --out DIR`: the texture unit's filters (nearest, the nearest texel of the nearest
-//! MIP level, bilinear, trilinear; for a polar scene the polar pipelines' bilinear and trilinear, lit as they are)
+//! MIP level, bilinear, trilinear; for a polar scene the polar pipelines' bilinear and trilinear, lit as they are;
+//! for a palette scene the palette pipelines' nearest and nearest-MIP)
 //! on one scene, the demo's torus by default, against a supersampled f64 ideal (`sim::minify`): the colour error
 //! over every pixel and over the minified ones, as a table (DIR/minify.md, and printed), and as pictures: the
 //! ideal, and each filter's frame beside its error heat map on one scale (DIR/minify_<filter>.png); then the MIP
@@ -32,6 +33,13 @@ fn table(name: &str, n: usize, bias: f64, ideal: &minify::Ideal, lines: &[Line],
                  unit, which filter S and R as numbers; the ideal is lit as they are, max(0, (1 − h) + h·N·L)^p with \
                  h = {h} and p = {}.",
                 pw as f64 / 4.0
+            ),
+            minify::Shading::Palette { conc, s_n } => format!(
+                " Tarini et al.'s palette: the filters are the palette pipelines' on the texture unit, the nearest \
+                 texel of level 0 and of the nearest level of the index map's §5.2 chain (each texel the index \
+                 nearest the mean of the four normals below it), s_N = {s_n}, one light a frame (the quad \
+                 centre's); the ideal is lit as the Cartesian pipelines' at C = {conc}, under each pixel's own light, \
+                 so the error counts the palette, the one light and the sampling."
             ),
             minify::Shading::Gloss(_) => String::new(),
         }

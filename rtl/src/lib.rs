@@ -73,6 +73,7 @@ pub mod palette {
     pub mod palette_lookup;
     pub mod palette_pipeline;
     pub mod palette_pipeline_shared;
+    pub mod palette_tex;
     pub mod table_builder;
     pub mod table_builder_shared;
 }
@@ -96,7 +97,9 @@ pub use height::{
     blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent,
     tangent_to_normal, texture_filter,
 };
-pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder, table_builder_shared};
+pub use palette::{
+    palette_lookup, palette_pipeline, palette_pipeline_shared, palette_tex, table_builder, table_builder_shared,
+};
 pub use polar::{cos_sign, polar_pipeline, polar_shade, polar_tex, power, sincos, tables};
 pub use shared::{bilinear, blend, delayed_blend, div255, dot3, gloss, normalise};
 pub use stream::StreamUnit;

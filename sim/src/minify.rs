@@ -5,7 +5,9 @@
 //! each filter's pipeline gives (the bit-exact model, which the rtl equals), over every pixel and over the minified
 //! ones, where λ = log2 ρ of the pixel's own derivatives is above ½ (the nearest level is no longer level 0). The
 //! MIP filters read λ plus the scene's LOD bias; `sweep` measures them over a range of biases. A polar scene's
-//! ideal is lit as the polar pipeline's is (`Shading::Polar`), and its filters are the polar pipelines on the unit.
+//! ideal is lit as the polar pipeline's is (`Shading::Polar`), and its filters are the polar pipelines on the unit;
+//! a palette scene's, as the Cartesian one at its C, through the palette pipelines on the unit (nearest, and the
+//! nearest level of the index map's §5.2 chain).
 
 use crate::pipeline::{build, gloss_shade, Pipeline};
 use crate::pipelines::{self, Filter, Settings};
@@ -31,6 +33,11 @@ pub const FILTERS: [(Filter, &str); 4] = [
 pub const POLAR_FILTERS: [(Filter, &str); 2] =
     [(Filter::Bilinear, "polar_tex_bilinear"), (Filter::Trilinear, "polar_tex_trilinear")];
 
+/// The palette filters on the texture unit (an index is never blended: the nearest texel, of level 0 or of the
+/// nearest level, §5.2's), each with its pipeline.
+pub const PALETTE_FILTERS: [(Filter, &str); 2] =
+    [(Filter::Nearest, "palette_tex_nearest"), (Filter::NearestMip, "palette_tex_nearest_mip")];
+
 /// How the ideal lights a normal n under the pixel's light l: the shade α, 0 … 255.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shading {
@@ -38,6 +45,9 @@ pub enum Shading {
     Gloss(i64),
     /// the polar pipelines': max(0, (1 − h) + h·N·L)^p, p = pw / 4
     Polar { pw: i64, h: f64 },
+    /// the palette pipelines': the Cartesian ideal at C (the palette's normals, its one light a frame and its
+    /// point sampling are what its error counts), through pipelines that quantize to s_N normals
+    Palette { conc: i64, s_n: usize },
 }
 
 impl Shading {
@@ -51,13 +61,19 @@ impl Shading {
             {
                 Shading::Polar { pw: spec.settings.pw, h: spec.settings.h }
             }
+            pipelines::Family::Palette => Shading::Palette { conc: spec.scene.conc, s_n: palette_size(spec) },
+            pipelines::Family::CartTex { host, .. }
+                if pipelines::named(host).map(|h| h.family) == Some(pipelines::Family::Palette) =>
+            {
+                Shading::Palette { conc: spec.scene.conc, s_n: palette_size(spec) }
+            }
             _ => Shading::Gloss(spec.scene.conc),
         }
     }
 
     pub fn alpha(self, n: [f64; 3], l: [f64; 3]) -> f64 {
         match self {
-            Shading::Gloss(conc) => gloss_shade(conc, n, l),
+            Shading::Gloss(conc) | Shading::Palette { conc, .. } => gloss_shade(conc, n, l),
             Shading::Polar { pw, h } => crate::pipeline::polar_ideal(pw, h, n, l),
         }
     }
@@ -67,6 +83,7 @@ impl Shading {
         match self {
             Shading::Gloss(_) => &FILTERS,
             Shading::Polar { .. } => &POLAR_FILTERS,
+            Shading::Palette { .. } => &PALETTE_FILTERS,
         }
     }
 
@@ -75,8 +92,14 @@ impl Shading {
         match self {
             Shading::Gloss(_) => Settings::default(),
             Shading::Polar { pw, h } => Settings { pw, h, ..Settings::default() },
+            Shading::Palette { s_n, .. } => Settings { palette: Some(s_n), ..Settings::default() },
         }
     }
+}
+
+/// The scene's palette size s_N (256 where it names none: the texture unit's palette pipelines hold 8-bit indices).
+fn palette_size(spec: &crate::scene_file::SceneSpec) -> usize {
+    spec.settings.palette.unwrap_or(256)
 }
 
 /// The supersampled ideal of a frame, pixel by pixel in the pipelines' order.

@@ -65,6 +65,12 @@ pub trait Pipeline: Sync {
         p
     }
     /// Bits of texture memory per texel of the bump source.
+    /// The map as the texture unit's memory holds it, level 0 first, where the pipeline's texels are not normals
+    /// encoded one by one: the palette's indices and their §5.2 levels (each the index nearest the average of the
+    /// four normals below it), from the last `prepare`.
+    fn texel_levels(&self) -> Option<Vec<Vec<i64>>> {
+        None
+    }
     fn bits_per_texel(&self) -> u32 {
         16
     }
@@ -309,7 +315,10 @@ impl CartTex {
             Family::Cartesian(d) => Texels::Cartesian(d),
             Family::CartSurface(v) => Texels::Cartesian(v.decode),
             Family::Polar(scale) => Texels::Polar(scale),
-            _ => unreachable!("a texture-unit pipeline is built on a Cartesian or a polar host (the table's rows)"),
+            Family::Palette => Texels::Palette,
+            _ => unreachable!(
+                "a texture-unit pipeline is built on a Cartesian, polar or palette host (the table's rows)"
+            ),
         }
     }
 
@@ -322,6 +331,7 @@ impl CartTex {
                 let (s, r) = polar_encode::encode_normal(scale, n);
                 (s as u8, r as u8)
             }
+            Texels::Palette => unreachable!("a palette's texels are its host's indices (`texel_levels`)"),
         };
         lo as i64 | ((hi as i64) << 8)
     }
@@ -332,6 +342,8 @@ impl CartTex {
 enum Texels {
     Cartesian(Decode),
     Polar(Scale),
+    /// palette indices (the host's quantization: `Pipeline::texel_levels`)
+    Palette,
 }
 
 /// The map's MIP chain as unit normals, level 0 (side t) first, down to 1 × 1: each texel the normalised mean of
@@ -401,6 +413,12 @@ impl Pipeline for CartTex {
                     polar_light(scale, self.settings.pw, self.settings.h, scene)
                 );
             }
+            Texels::Palette => {
+                return format!(
+                    "the texture unit ({f}; the index map and its §5.2 MIP levels in its memory), palette indices: {}",
+                    self.host.describe(scene)
+                );
+            }
         };
         let light = match self.row.serves.per {
             pipelines::Per::Vertex => "lights interpolated per pixel",
@@ -426,15 +444,19 @@ impl Pipeline for CartTex {
         );
         let log_side = t.trailing_zeros() as i64;
         let from_host = |h: &[i64]| vectors::textured::from_host(self.host.model(), model.inputs, h);
-        // the prologue: every level of the chain, the smallest first, encoded as the host encodes its texels
-        let chain = mip_chain(&scene.normals(), t);
+        // the prologue: every level of the chain, the smallest first, encoded as the host encodes its texels (a
+        // palette host: its quantization's indices and their levels)
+        let chain: Vec<Vec<i64>> = match self.texels() {
+            Texels::Palette => self.host.texel_levels().expect("the palette host's prepare quantized the map"),
+            _ => mip_chain(&scene.normals(), t).iter().map(|l| l.iter().map(|&n| self.texel(n)).collect()).collect(),
+        };
         let blank = vec![0; model.inputs.len()];
         let mut inputs = vec![];
         for (k, level) in chain.iter().enumerate().rev() {
             let (m, side) = (log_side - k as i64, t >> k);
-            for (i, &n) in level.iter().enumerate() {
+            for (i, &texel) in level.iter().enumerate() {
                 let mut v = blank.clone();
-                front::put_write(&mut v, &at, m, (i % side) as i64, (i / side) as i64, self.texel(n));
+                front::put_write(&mut v, &at, m, (i % side) as i64, (i / side) as i64, texel);
                 inputs.push(v);
             }
         }
@@ -452,6 +474,8 @@ impl Pipeline for CartTex {
                 }
             }
         }
+        // the host's own prologue after the map (a palette host's table builds), its vectors' other ports as given
+        inputs.extend(host.inputs[..host.prologue].iter().map(|h| from_host(h)));
         let prologue = inputs.len();
         let mut loaded = match colour {
             Some(_) => front::Front::with_colour(self.filter.front()),
@@ -493,7 +517,8 @@ impl Pipeline for CartTex {
         let read: std::collections::HashSet<_> = p.pixels().iter().flat_map(|v| front.reads(v, &at)).collect();
         let keep: Vec<Vec<i64>> = p.inputs[..p.prologue]
             .iter()
-            .filter(|v| Front::writes(v, &at).is_some_and(|t| read.contains(&t)))
+            // (a vector that writes no texel is the host's: a palette's table build, kept)
+            .filter(|v| Front::writes(v, &at).is_none_or(|t| read.contains(&t)))
             .cloned()
             .collect();
         let n = keep.len();
@@ -792,6 +817,8 @@ pub struct Palette {
 /// to its palette normal (degrees), and the quantizer's time.
 pub struct PaletteBuilt {
     pub codes: Vec<[i64; 3]>,
+    /// the index map and its §5.2 MIP levels, level 0 first (`quantize::mip_chain`)
+    pub levels: Vec<Vec<u32>>,
     pub distinct: usize,
     pub error: vectors::stats::ErrorStats,
     pub quantize_s: f64,
@@ -868,7 +895,9 @@ impl Pipeline for Palette {
             p.ideal.push(Ideal { shade, rgb: scene.blend_ideal(shade), normal: nrm, light: ld });
         }
         if let Ok(mut b) = self.built.write() {
-            *b = Some(std::sync::Arc::new(PaletteBuilt { codes, distinct: q.distinct, error, quantize_s }));
+            let levels = vectors::palette::quantize::mip_chain(&q.index, t, t, &q.palette).into_iter().map(|l| l.0);
+            let levels = levels.collect();
+            *b = Some(std::sync::Arc::new(PaletteBuilt { codes, levels, distinct: q.distinct, error, quantize_s }));
         }
         p
     }
@@ -904,6 +933,9 @@ impl Pipeline for Palette {
     /// ⌈log2 s_N⌉
     fn bits_per_texel(&self) -> u32 {
         vectors::palette::quantize::index_bits(self.s_n)
+    }
+    fn texel_levels(&self) -> Option<Vec<Vec<i64>>> {
+        Some(self.built()?.levels.iter().map(|l| l.iter().map(|&i| i as i64).collect()).collect())
     }
 }
 

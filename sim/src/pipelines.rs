@@ -200,7 +200,10 @@ impl Row {
             Family::CartTex { host, .. } => {
                 // a polar host has no gloss unit and takes no C (its power unit is the specular term)
                 let polar = named(host).is_some_and(|h| matches!(h.family, Family::Polar(_)));
+                // a palette host's table holds one light a frame: a flat surface's, as the host-fed one
+                let palette = named(host).is_some_and(|h| h.family == Family::Palette);
                 (self.serves.gloss || scene.conc == 0 || polar)
+                    && !(palette && scene.curved.is_some())
                     && scene.tex.is_power_of_two()
                     && scene.tex <= 1 << vectors::tex_fetch::MAX_LOG_SIDE
                     && (!self.serves.colour || scene.colour_map.as_ref().is_some_and(|c| c.side == scene.tex))
@@ -283,7 +286,8 @@ const fn surf(name: &'static str, label: &'static str, v: Variant, units: &'stat
     Row { name, family: Family::CartSurface(v), label, units, serves: surface(v) }
 }
 
-/// A Cartesian pipeline on the texture unit: its host-fed row's choices, fetched by the unit with this filter.
+/// A pipeline on the texture unit (Cartesian, polar or palette): its host-fed row's choices, fetched by the unit
+/// with this filter.
 const fn tex(
     name: &'static str,
     label: &'static str,
@@ -952,6 +956,22 @@ pub static PIPELINES: &[Row] = &[
         units: &["normalise", "dot3", "gloss", "palette_lookup"],
         serves: one_light(Encoding::Palette, true, 12),
     },
+    tex(
+        "palette_tex_nearest",
+        "palette 256, texture unit, nearest",
+        "palette_pipeline",
+        one_light(Encoding::Palette, true, 8),
+        Filter::Nearest,
+        &["tex_addr", "tex_fetch", "normalise", "dot3", "gloss", "palette_lookup"],
+    ),
+    tex(
+        "palette_tex_nearest_mip",
+        "palette 256, texture unit, nearest MIP level",
+        "palette_pipeline",
+        one_light(Encoding::Palette, true, 8),
+        Filter::NearestMip,
+        &["lod", "tex_addr", "tex_fetch", "normalise", "dot3", "gloss", "palette_lookup"],
+    ),
     tex_colour(
         "cart_tex_trilinear_colour",
         "Cartesian, texture unit, trilinear, colour map",

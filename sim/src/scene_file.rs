@@ -25,9 +25,9 @@
 //! encoding = "seed"               # seed | hemi_oct | polar | polar_dc255 | heights | palette
 //! # palette = 256                 # palette: s_N, 1 to 4,096
 //! # filter = "bilinear"           # seed, hemi_oct: nearest | nearest_mip | bilinear | trilinear | trilinear_two_pass;
-//!                                 # polar: bilinear | trilinear
+//!                                 # polar: bilinear | trilinear; palette: nearest | nearest_mip (the unit's)
 //! # lod_bias = -1.0               # the MIP filters: levels added to λ, −8 to 8 − 1/256 in 1/256
-//! # fetch = "unit"                # seed, hemi_oct, polar: unit (the texture unit's memory) | host
+//! # fetch = "unit"                # seed, hemi_oct, polar, palette: unit (the texture unit's memory) | host
 //! # wrap = "repeat"               # repeat | clamp, or [u, v] one each; default: the surface's own (all but heights)
 //!
 //! [light]
@@ -623,13 +623,22 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
     let fetch = bump.fetch.as_ref().map(|f| *f.get_ref());
     let fetch_span = bump.fetch.as_ref().map(|f| f.span());
     let polar = matches!(encoding, Encoding::Polar | Encoding::PolarDc255);
-    if filter != Filter::Bilinear && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) && !polar {
+    let palette = encoding == Encoding::Palette;
+    // a palette's index is never filtered: it takes the nearest texel, of level 0 or of the nearest MIP level
+    let palette_filter = palette && matches!(filter, Filter::Nearest | Filter::NearestMip);
+    if filter != Filter::Bilinear
+        && !matches!(encoding, Encoding::Seed | Encoding::HemiOct)
+        && !polar
+        && !palette_filter
+    {
+        let what = if palette {
+            "the palette pipelines read an index, which cannot be blended: filter = \"nearest\" or \"nearest_mip\" (on the texture unit)"
+        } else {
+            "only the Cartesian and polar encodings (seed, hemi_oct, polar) have that filter"
+        };
         return Err(at.err(
             filter_span.clone().unwrap_or(bump_span.clone()),
-            format!(
-                "[bump] filter = \"{}\": only the Cartesian and polar encodings (seed, hemi_oct, polar) have that filter",
-                filter.name()
-            ),
+            format!("[bump] filter = \"{}\": {what}", filter.name()),
         ));
     }
     if let Some(b) = &bump.lod_bias {
@@ -653,10 +662,10 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
         }
         scene.wrap = Some(w.get_ref().0);
     }
-    if fetch.is_some() && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) && !polar {
+    if fetch.is_some() && !matches!(encoding, Encoding::Seed | Encoding::HemiOct) && !polar && !palette {
         return Err(at.err(
             fetch_span.clone().unwrap_or(bump_span.clone()),
-            "[bump] fetch: only the Cartesian and polar encodings (seed, hemi_oct, polar) have pipelines on the texture unit yet",
+            "[bump] fetch: only the Cartesian, polar and palette encodings (seed, hemi_oct, polar, palette) have pipelines on the texture unit yet",
         ));
     }
     // the choices that pick the pipeline, as the pipeline holds them (`Choices`)
@@ -768,7 +777,36 @@ fn resolve(f: SceneFile, at: &At, dir: &Path) -> Result<SceneSpec, String> {
             };
             let s_n = n.get_ref().0 as usize;
             settings.palette = Some(s_n);
-            crate::pipelines::one_light(encoding, true, crate::pipelines::palette_index_bits(s_n))
+            let host = crate::pipelines::one_light(encoding, true, crate::pipelines::palette_index_bits(s_n));
+            // on the texture unit where the scene asks for it (a filter of its, or fetch = "unit"): the index map
+            // and its §5.2 levels in its memory; else fed by the host, the nearest texel of level 0, as before
+            let on_unit = match (fetch, &bump.filter) {
+                (Some(Fetch::Host), Some(f)) if palette_filter => {
+                    return Err(at.err(f.span(), format!("[bump] filter = \"{}\": the host-fed palette pipelines take the nearest texel of level 0 themselves; the filters are the texture unit's (fetch = \"unit\")", filter.name())));
+                }
+                (Some(Fetch::Host), _) => false,
+                (Some(Fetch::Unit), _) => true,
+                (None, _) => palette_filter,
+            };
+            if !on_unit {
+                host
+            } else {
+                let span = || fetch_span.clone().or(filter_span.clone()).unwrap_or(bump_span.clone());
+                let side = scene.tex;
+                if s_n > 256 {
+                    return Err(at.err(span(), format!("the palette pipelines on the texture unit take 8-bit indices (palette up to 256, the texel's low byte); palette = {s_n} is fed by the host (leave out filter and fetch)")));
+                }
+                if !(side.is_power_of_two() && side <= 1 << vectors::tex_fetch::MAX_LOG_SIDE) {
+                    return Err(at.err(
+                        span(),
+                        format!(
+                            "the texture unit's pipelines hold maps of side 1, 2, 4 … 128; this map's side is {side}"
+                        ),
+                    ));
+                }
+                let filter = if filter == Filter::Bilinear { Filter::Nearest } else { filter };
+                Choices { filter, fetch: Fetch::Unit, ..host }
+            }
         }
     };
     let pipeline = crate::pipelines::choose(&choices)

@@ -158,6 +158,8 @@ pub static UNITS: &[Unit] = &[
     unit!(map: &vectors::cart_tex::trilinear_surface_hemi_oct_matte_colour::MODEL, rtl::cart_tex::CartTexTrilinearSurfaceHemiOctMatteColour),
     unit!(map: &vectors::polar_tex::bilinear::MODEL, rtl::polar_tex::PolarTexBilinear),
     unit!(map: &vectors::polar_tex::trilinear::MODEL, rtl::polar_tex::PolarTexTrilinear),
+    unit!(map: &vectors::palette_tex::nearest::MODEL, rtl::palette_tex::PaletteTexNearest),
+    unit!(map: &vectors::palette_tex::nearest_mip::MODEL, rtl::palette_tex::PaletteTexNearestMip),
 ];
 
 /// The units that are software only (no rtl block, no vectors): the encoders that write the bump maps. Their errors

@@ -77,3 +77,26 @@ fn a_polar_scene_measures_the_polar_pipelines_against_an_ideal_lit_as_they_are()
         assert_eq!(lines[0].frame[at], lines[1].frame[at], "pixel {at}: λ {:.3}", ideal.lambda[k]);
     }
 }
+
+/// A palette scene minified (scenes/palette_nearest_mip.toml: 128 texels into 64 pixels, λ = 1 everywhere)
+/// measures the palette pipelines on the unit, nearest and nearest-MIP, against the Cartesian ideal at its C; the
+/// MIP level, §5.2's index nearest the mean of four normals, gives less error than skipping every other texel of
+/// level 0, and the frames differ where the four texels under a level-1 texel hold different indices.
+#[test]
+fn a_palette_scene_minified_reads_its_index_maps_mip_level_and_errs_less_than_level_0() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/palette_nearest_mip.toml");
+    let spec = sim::scene_file::load(&path).unwrap();
+    let shading = minify::Shading::of(&spec);
+    assert_eq!(shading, minify::Shading::Palette { conc: 96, s_n: 256 });
+    let ideal = minify::ideal_shaded(&spec.scene, 4, shading);
+    assert!(ideal.lambda.iter().all(|&l| (l - 1.0).abs() < 1e-9), "the quad at half scale: λ = 1");
+    let lines = minify::measure(&spec.scene, &ideal).unwrap();
+    assert_eq!(
+        lines.iter().map(|l| l.pipeline).collect::<Vec<_>>(),
+        ["palette_tex_nearest", "palette_tex_nearest_mip"]
+    );
+    let (nearest, mip) = (minified(&lines, Filter::Nearest), minified(&lines, Filter::NearestMip));
+    assert!(mip < nearest, "nearest_mip {mip:.3} against nearest {nearest:.3}");
+    let differ = lines[0].frame.iter().zip(&lines[1].frame).filter(|(a, b)| a != b).count();
+    assert!(differ > 20, "{differ} pixels differ");
+}

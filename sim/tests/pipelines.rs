@@ -96,6 +96,20 @@ fn expected(
         let served = WITH_COLOUR.contains(&(encoding, per_surface, filter, gloss)) && fetch != Some("host");
         return served.then(|| format!("cart_tex_{filter}{surface}{hemi}{matte}_colour"));
     }
+    // palette indices: on the texture unit where the scene names one of its filters (an index is never blended:
+    // nearest, nearest_mip) or fetch = "unit" (then the nearest), 8-bit indices only; else fed by the host
+    if encoding == "palette" {
+        let small = palette.is_some_and(|n| n <= 256);
+        return match (filter, fetch) {
+            ("nearest" | "nearest_mip", Some("host")) => None,
+            ("nearest" | "nearest_mip", _) => small.then(|| format!("palette_tex_{filter}")),
+            ("bilinear", Some("unit")) => small.then(|| "palette_tex_nearest".to_string()),
+            // (filter = "bilinear", or none: the host-fed pipeline, as before the texture unit held indices)
+            ("bilinear", _) if palette.unwrap() <= 256 => Some("palette_pipeline".into()),
+            ("bilinear", _) => Some("palette_pipeline_12".into()),
+            _ => None,
+        };
+    }
     // polar texels (the seed's scale) on the texture unit unless fetch = "host" (the scenes' map, 16 texels, is one
     // the unit holds); the host-fed polar pipelines with fetch = "host", and the Dreamcast scale's whatever is said
     let polar = matches!(encoding, "polar" | "polar_dc255");
@@ -309,6 +323,30 @@ mod built {
             let differ = ou.outs.iter().zip(&oh.outs).filter(|(a, b)| a != b).count();
             assert_eq!((differ, ou.outs.len()), (0, oh.outs.len()), "{what}");
         }
+    }
+
+    /// The palette pipeline on the unit with the nearest texel of level 0 is the host-fed one: the index map in
+    /// the memory, read at each pixel's sample point, gives the host's nearest index, and the table builds of the
+    /// host's prologue come after the map's writes; frame and normals alike, pixel for pixel, on the quad.
+    #[test]
+    fn the_units_palette_frame_is_the_host_fed_frame() {
+        let unit = pipelines::named("palette_tex_nearest").unwrap();
+        let host = pipelines::named("palette_pipeline").unwrap();
+        let settings = Settings { palette: Some(200), ..Settings::default() };
+        let scene = Scene { size: 96, ..Scene::default() };
+        let (u, h) = (build(unit, &scene, &settings), build(host, &scene, &settings));
+        let (pu, ph) = (u.prepare(&scene), h.prepare(&scene));
+        let (ou, oh) = (sim::render::model(u.model(), &pu), sim::render::model(h.model(), &ph));
+        assert!(ou.outs.len() > 1000, "{} pixels", ou.outs.len());
+        let differ = ou.outs.iter().zip(&oh.outs).filter(|(a, b)| a != b).count();
+        assert_eq!((differ, ou.outs.len()), (0, oh.outs.len()));
+        let normals = |p: &dyn Pipeline, x: &sim::prepared::Prepared| -> Vec<_> {
+            x.pixels().iter().map(|v| p.normal(v).expect("a normal")).collect()
+        };
+        assert!(normals(u.as_ref(), &pu) == normals(h.as_ref(), &ph), "normals");
+        // and the model's frame is the Verilator frame's and rust-hdl's elsewhere (the three-way tests); here the
+        // prologue holds the map's levels (128 … 1) then 200 builds
+        assert_eq!(pu.prologue, (0..=7).map(|k| (128usize >> k).pow(2)).sum::<usize>() + 200);
     }
 
     #[test]

@@ -52,7 +52,7 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
         assert_eq!(got, p.file_stem().unwrap().to_str().unwrap(), "{}", p.display());
         named += 1;
     }
-    assert_eq!(named, 42);
+    assert_eq!(named, 43);
     // the quad every pipeline is compared on is the default scene; the demo's own is a torus, lit per vertex
     let quad = scene_file::load(&scenes_dir().join("quad.toml")).unwrap();
     let d = Scene::default();
@@ -89,6 +89,7 @@ fn every_example_scene_reads_and_the_demos_is_the_default_scene() {
     assert_eq!(kind("height.toml"), "height_pipeline");
     assert_eq!(kind("palette.toml"), "palette_pipeline");
     assert_eq!(scene_file::load(&scenes_dir().join("palette.toml")).unwrap().settings.palette, Some(256));
+    assert_eq!(kind("palette_nearest_mip.toml"), "palette_tex_nearest_mip");
     // the curved ones
     let torus = scene_file::load(&scenes_dir().join("torus.toml")).unwrap().scene;
     let c = torus.curved.expect("a torus");
@@ -254,6 +255,34 @@ fn one_light_per_surface_builds_the_surface_pipeline_with_only_the_units_the_mat
         scene_file::load(&scenes_dir().join("directional.toml")).unwrap().pipeline.name,
         "cart_tex_bilinear_surface_matte"
     );
+}
+
+#[test]
+fn a_palette_scene_is_on_the_texture_unit_where_it_names_a_filter_of_its_and_one_line_where_none_serves() {
+    let scene = |bump: &str| {
+        format!(
+            "size = 64\n[bump]\nsource = \"procedural\"\nencoding = \"palette\"\n{bump}[light]\nper = \"surface\"\n"
+        )
+    };
+    let kind = |t: String| parse(&t).unwrap_or_else(|e| panic!("{e}")).pipeline.name;
+    // fed by the host as before, unless the scene names the unit's filters or the unit
+    assert_eq!(kind(scene("palette = 256\n")), "palette_pipeline");
+    assert_eq!(kind(scene("palette = 256\nfilter = \"bilinear\"\n")), "palette_pipeline");
+    assert_eq!(kind(scene("palette = 256\nfetch = \"host\"\n")), "palette_pipeline");
+    assert_eq!(kind(scene("palette = 4096\n")), "palette_pipeline_12");
+    assert_eq!(kind(scene("palette = 256\nfilter = \"nearest\"\n")), "palette_tex_nearest");
+    assert_eq!(kind(scene("palette = 200\nfilter = \"nearest_mip\"\n")), "palette_tex_nearest_mip");
+    assert_eq!(kind(scene("palette = 256\nfetch = \"unit\"\n")), "palette_tex_nearest");
+    // an index is never blended; the unit's indices are the texel's low byte; the host has no filter
+    refused(&scene("palette = 256\nfilter = \"trilinear\"\n"), "s.toml:6:10:", &["cannot be blended", "nearest_mip"]);
+    refused(&scene("palette = 300\nfilter = \"nearest\"\n"), "s.toml:6:10:", &["8-bit indices", "300"]);
+    refused(
+        &scene("palette = 256\nfilter = \"nearest_mip\"\nfetch = \"host\"\n"),
+        "s.toml:6:10:",
+        &["host-fed palette", "fetch = \"unit\""],
+    );
+    refused(&scene("palette = 256\ntexels = 256\nfetch = \"unit\"\n"), "s.toml:7:9:", &["1, 2, 4 … 128", "256"]);
+    refused(&scene("palette = 256\nfilter = \"nearest\"\nlod_bias = -0.5\n"), "s.toml:7:", &["only a MIP filter"]);
 }
 
 const GOOD: &str = "size = 64\n[bump]\nsource = \"procedural\"\ntexels = 16\n[light]\nposition = [0.5, 0.5, 0.5]\n";

@@ -30,6 +30,7 @@ mod palette_lookup;
 mod palette_pipeline;
 mod palette_pipeline_12;
 mod palette_pipeline_shared;
+mod palette_tex;
 mod polar_pipeline;
 mod polar_shade;
 mod polar_shade_dc;

@@ -56,6 +56,7 @@ pub mod palette {
     pub mod palette_lookup;
     pub mod palette_pipeline;
     pub mod palette_pipeline_shared;
+    pub mod palette_tex;
     pub mod plane_fit;
     pub mod quantize;
     pub mod table_builder;
@@ -83,7 +84,7 @@ pub use height::{
     blend_adjust, blinn_pipeline, height_addr, height_fetch, height_normal, height_pipeline, replicate, tangent,
     texture_filter,
 };
-pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, table_builder};
+pub use palette::{palette_lookup, palette_pipeline, palette_pipeline_shared, palette_tex, table_builder};
 pub use polar::{cos_sign, polar_encode, polar_pipeline, polar_shade, polar_tex, power, sincos};
 pub use shared::{bilinear, blend, dot3, fixed, gloss, normal_map, normalise};
 pub use texture::{lod, tex_addr, tex_fetch, textured};

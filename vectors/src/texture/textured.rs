@@ -37,14 +37,20 @@ fn is_polar(host: &UnitModel) -> bool {
     host.name.starts_with("polar_pipeline")
 }
 
-/// Which byte of the texel a host port carries: 0 the low byte (TexelX, U or S), 1 the high byte (TexelZ, V or R);
-/// `None` for a port that carries none.
+/// Whether the host is the palette pipeline, whose texel's low byte is the index (its high byte unused).
+fn is_palette(host: &UnitModel) -> bool {
+    host.name == crate::palette_pipeline::MODEL.name
+}
+
+/// Which byte of the texel a host port carries: 0 the low byte (TexelX, U, S or a palette index), 1 the high byte
+/// (TexelZ, V or R); `None` for a port that carries none.
 fn texel_byte(host: &UnitModel, name: &str) -> Option<usize> {
     match name {
         "s" if is_polar(host) => Some(0),
         "r" if is_polar(host) => Some(1),
-        n if !is_polar(host) && is_texel(n) && n.ends_with("_x") => Some(0),
-        n if !is_polar(host) && is_texel(n) && n.ends_with("_z") => Some(1),
+        "idx" if is_palette(host) => Some(0),
+        n if !is_polar(host) && !is_palette(host) && is_texel(n) && n.ends_with("_x") => Some(0),
+        n if !is_polar(host) && !is_palette(host) && is_texel(n) && n.ends_with("_z") => Some(1),
         _ => None,
     }
 }
@@ -69,31 +75,59 @@ fn sources(host: &UnitModel, ports: &[Port]) -> Vec<Source> {
         .collect()
 }
 
-/// A textured pipeline as a machine: the front with its memory (empty from reset), and the host model it feeds.
+/// The host's state: none for the shading pipelines (each vector on its own), the two colour tables for the
+/// palette pipeline (its builder writes them, its pixels read them).
+#[derive(Clone)]
+enum HostState {
+    Stateless,
+    Palette(crate::palette_pipeline::Unit<8>),
+}
+
+/// A textured pipeline as a machine: the front with its memory (empty from reset), and the host model it feeds
+/// (with its own state from reset, where it has one).
 #[derive(Clone)]
 pub struct Textured {
     front: Front,
     at: At,
     src: Vec<Source>,
     host: &'static UnitModel,
+    state: HostState,
 }
 
 impl Textured {
     /// The pipeline on a front that reads its levels in `passes` clocks (1, or 2 for trilinear's two passes).
     pub fn new(filter: Filter, passes: usize, host: &'static UnitModel, ports: &[Port]) -> Textured {
         let front = if has_colour(ports) { Front::with_colour(filter) } else { Front::in_passes(filter, passes) };
-        Textured { front, at: At::of(ports, filter.mip()), src: sources(host, ports), host }
+        let state = if is_palette(host) {
+            HostState::Palette(Default::default())
+        } else {
+            assert!(host.stream.is_none(), "{}: a host with state other than the palette pipeline's", host.name);
+            HostState::Stateless
+        };
+        Textured { front, at: At::of(ports, filter.mip()), src: sources(host, ports), host, state }
     }
 }
 
 impl Machine for Textured {
     fn step(&mut self, v: &[i64]) -> Vec<i64> {
         let (t, c) = self.front.step_all(v, &self.at);
-        (self.host.exact)(&host_of(&self.src, v, t, c))
+        let h = host_of(&self.src, v, t, c);
+        match &mut self.state {
+            HostState::Stateless => (self.host.exact)(&h),
+            HostState::Palette(p) => p.step(&h),
+        }
     }
-    /// The front's step alone: the host's outputs are what nobody reads.
+    /// The front's step, and the host's where it has state: the outputs are what nobody reads.
     fn load(&mut self, v: &[i64]) {
-        self.front.step(v, &self.at);
+        match &mut self.state {
+            HostState::Stateless => {
+                self.front.step(v, &self.at);
+            }
+            HostState::Palette(p) => {
+                let (t, c) = self.front.step_all(v, &self.at);
+                p.load(&host_of(&self.src, v, t, c));
+            }
+        }
     }
 }
 
@@ -216,11 +250,11 @@ pub fn hard_cases(filter: Filter, host: &UnitModel, ports: &[Port], sweep: Sweep
             }
         }
     }
-    let byte = |k| host.inputs.iter().position(|p| texel_byte(host, p.name) == Some(k)).expect("a texel port");
-    let (tx, tz) = (byte(0), byte(1));
+    let byte = |k| host.inputs.iter().position(|p| texel_byte(host, p.name) == Some(k));
+    let (tx, tz) = (byte(0).expect("a texel port"), byte(1));
     let dst = ["dst_r", "dst_g", "dst_b"].map(|n| host.inputs.iter().position(|p| p.name == n));
     for h in &hosts {
-        out.push(write(0, 0, 0, h[tx] | (h[tz] << 8)));
+        out.push(write(0, 0, 0, h[tx] | tz.map_or(0, |z| h[z] << 8)));
         if let ([Some(r), Some(g), Some(b)], true) = (dst, at.wcolour.is_some()) {
             let mut v = base.clone();
             front::put_colour_write(&mut v, &at, 0, 0, 0, front::pack565([h[r], h[g], h[b]].map(|c| c as u8)));
