@@ -280,9 +280,17 @@ pub(crate) trait Walker {
             self.step(s);
         }
     }
+    /// The loop's body once for each index from its first bound up to its last, each bound a literal: a bound that
+    /// is not one would leave the body unwalked and its steps unproven, so it stops the walk (no rtl block has one;
+    /// the width tests walk every block).
     fn unroll(&mut self, l: &VerilogLoop) {
-        let from = literal(&l.from.to_string()).map_or(0, |x| x.0);
-        let to = literal(&l.to.to_string()).map_or(0, |x| x.0);
+        let bound = |e: &dyn std::fmt::Display, which: &str| {
+            let text = e.to_string();
+            literal(&text).map(|x| x.0).unwrap_or_else(|| {
+                panic!("a loop's {which} bound `{text}` is not a literal: the width walkers unroll literal bounds only")
+            })
+        };
+        let (from, to) = (bound(&l.from, "first"), bound(&l.to, "last"));
         for k in from..to {
             self.loops().push((l.index.clone(), k));
             self.block(&l.block);
@@ -1010,6 +1018,19 @@ pub fn prove(block: &dyn Block, inputs: &[(&str, i64, i64)], signed: &dyn Fn(&st
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A loop's bounds as rust-hdl writes them (`for i in 0..4` in a block) are literals the walkers read, wide or
+    /// narrow, so `Walker::unroll` walks the body once an index; what it cannot read stops it rather than skipping
+    /// the body.
+    #[test]
+    fn a_loops_bounds_as_rust_hdl_writes_them_are_read() {
+        for (x, want) in [(0u32, 0), (3, 3), (4, 4), (1000, 1000)] {
+            let l = rust_hdl::core::ast::VerilogLiteral::from(x);
+            assert_eq!(literal(&l.to_string()).map(|v| v.0), Some(want), "{l}");
+        }
+        assert_eq!(literal(&rust_hdl::core::ast::VerilogLiteral::from(true).to_string()), Some((1, 1)));
+        assert_eq!(literal("N"), None);
+    }
 
     #[test]
     fn intervals_of_patterns_read_both_ways() {
