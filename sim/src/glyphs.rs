@@ -73,7 +73,12 @@ mod tests {
             // at scale 2 each dot is 4 pixels
             assert_eq!(n % 4, 0);
         }
-        assert_eq!(width("3.00 LSB", 2), 96);
+        // eight 5 × 7 glyphs, each with a column of space after it, at scale 2; and every dot drawn lies inside
+        // that width and the 7 rows (14 at scale 2)
+        assert_eq!(width("3.00 LSB", 2), 8 * (5 + 1) * 2);
+        let (mut right, mut bottom) = (0, 0);
+        draw("3.00 LSB", 0, 0, 2, &mut |x, y| (right, bottom) = (right.max(x), bottom.max(y))).unwrap();
+        assert!(right < width("3.00 LSB", 2) && bottom < 14, "a dot at ({right}, {bottom})");
         assert!(draw("x", 0, 0, 1, &mut |_, _| {}).unwrap_err().contains("'x'"));
     }
 }

@@ -398,5 +398,14 @@ mod tests {
         assert!(!labelled(32));
         assert!(labelled(128));
         assert!(labelled(256));
+        // at 128 wide the bar runs from x = 2 to 125, rows 130 to 135, black at 0 through red at a third of the way
+        // to white at its end; the frame above it is coloured by the same scale (an error of 7 is white, 0 black)
+        let img = heat_image(128, |k| Some(if k < 128 { 7.0 } else { 0.0 }), 7.0, "LSB").unwrap();
+        let at = |x: u32, y: u32| img.get_pixel(x, y).0;
+        assert_eq!((at(5, 0), at(5, 1)), ([255, 255, 255], [0, 0, 0]));
+        assert_eq!((at(2, 130), at(125, 135)), ([0, 0, 0], [255, 255, 255]));
+        let red = at(43, 132);
+        assert!(red[0] >= 250 && red[1] <= 5 && red[2] == 0, "{red:?}");
+        assert_eq!((at(1, 132), at(126, 132)), (BACKGROUND, BACKGROUND), "the bar's margins");
     }
 }
